@@ -1,0 +1,397 @@
+"""Read and validate linkage scene files (TOML, standard library ``tomllib``).
+
+Scene files are data only: they are parsed, never executed. Every rule broken is
+reported with the file, the key and the rule, e.g.
+``four-bar.toml: members.3.length must be > 0, got -0.2``.
+The format is documented in ``docs/scene-format.md``.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from .schema import DRIVER, FRAME, Driver, Force, Member, Moment, Pair, Scene
+
+PRESETS = Path(__file__).parent / "presets"
+MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before parsing
+
+TOP_KEYS = {"id", "kind", "title", "source", "note", "gravity", "pairs", "frame", "driver",
+            "members", "assembly", "forces", "moments", "book"}
+MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
+PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "angle",
+             "slider_angle"}
+DRIVER_KEYS = {"member", "type", "at", "omega", "epsilon", "velocity", "acceleration"}
+FORCE_KEYS = {"member", "point", "magnitude", "angle", "follows_member"}
+MOMENT_KEYS = {"member", "value"}
+
+
+class SceneError(ValueError):
+    """A scene file breaks a rule; the message names the file, the key and the rule."""
+
+
+class _Reader:
+    """Typed access to the parsed TOML with messages that name the key."""
+
+    def __init__(self, source: str):
+        self.source = source
+
+    def fail(self, key: str, rule: str) -> SceneError:
+        return SceneError(f"{self.source}: {key} {rule}")
+
+    def check_keys(self, table: Any, allowed: set[str], key: str) -> dict:
+        if not isinstance(table, dict):
+            raise self.fail(key, f"must be a table, got {type(table).__name__}")
+        for name in table:
+            if name not in allowed:
+                near = difflib.get_close_matches(name, sorted(allowed), n=1)
+                hint = f" (did you mean {near[0]!r}?)" if near else ""
+                where = f"{key}.{name}" if key else name
+                raise self.fail(where, f"is not a known key{hint}")
+        return table
+
+    def number(self, table: dict, name: str, key: str, default: float | None = None,
+               positive: bool = False, non_negative: bool = False) -> float:
+        where = f"{key}.{name}" if key else name
+        if name not in table:
+            if default is None:
+                raise self.fail(where, "is missing")
+            return default
+        value = table[name]
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise self.fail(where, f"must be a number, got {value!r}")
+        if not math.isfinite(value):
+            raise self.fail(where, f"must be a finite number, got {value!r}")
+        if positive and value <= 0:
+            raise self.fail(where, f"must be > 0, got {value!r}")
+        if non_negative and value < 0:
+            raise self.fail(where, f"must be >= 0, got {value!r}")
+        return float(value)
+
+    def text(self, table: dict, name: str, key: str, default: str | None = None) -> str:
+        where = f"{key}.{name}" if key else name
+        value = table.get(name, default)
+        if value is None:
+            raise self.fail(where, "is missing")
+        if not isinstance(value, str):
+            raise self.fail(where, f"must be a string, got {value!r}")
+        return value
+
+    def integer(self, table: dict, name: str, key: str) -> int:
+        where = f"{key}.{name}" if key else name
+        value = table.get(name)
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise self.fail(where, f"must be a member number (integer), got {value!r}")
+        return value
+
+    def vector(self, value: Any, key: str) -> complex:
+        ok = (isinstance(value, list) and len(value) == 2
+              and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value))
+        if not ok:
+            raise self.fail(key, f"must be a pair of numbers [x, y], got {value!r}")
+        if not all(math.isfinite(v) for v in value):
+            raise self.fail(key, f"must be finite, got {value!r}")
+        return complex(value[0], value[1])
+
+
+def load_scene(path: str | Path) -> Scene:
+    """Load a scene from a TOML file."""
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise SceneError(f"{path}: cannot read file ({exc.strerror})") from None
+    return parse_scene(data, source=path.name, default_id=path.stem)
+
+
+def load_preset(preset_id: str) -> Scene:
+    """Load a preset by its id (``analitika-2.1``, ``zbirka-1.3``, …)."""
+    path = PRESETS / f"{preset_id}.toml"
+    if not path.is_file():
+        known = ", ".join(preset_ids())
+        raise SceneError(f"no preset named {preset_id!r}; known presets: {known}")
+    return load_scene(path)
+
+
+def preset_ids() -> list[str]:
+    return sorted(p.stem for p in PRESETS.glob("*.toml"))
+
+
+def load_any(name: str) -> Scene:
+    """A preset id or a path to a TOML file, as the command line accepts."""
+    if name.endswith(".toml") or "/" in name:
+        return load_scene(name)
+    return load_preset(name)
+
+
+def parse_scene(data: bytes | str, source: str = "<scene>", default_id: str = "scene") -> Scene:
+    """Parse and validate scene text (bytes from an upload or a file)."""
+    if isinstance(data, str):
+        data = data.encode("utf-8")
+    if len(data) > MAX_BYTES:
+        raise SceneError(f"{source}: file is {len(data):,} bytes; a scene must be under "
+                         f"{MAX_BYTES:,} bytes")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"{source}: not UTF-8 text (byte {exc.start})") from None
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"{source}: not valid TOML ({exc})") from None
+    except RecursionError:
+        raise SceneError(f"{source}: tables nested too deeply") from None
+    return _build(raw, _Reader(source), default_id)
+
+
+def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
+    r.check_keys(raw, TOP_KEYS, "")
+    kind = r.text(raw, "kind", "", default="linkage")
+    if kind != "linkage":
+        raise r.fail("kind", f"must be 'linkage' for a linkage scene, got {kind!r}")
+    frame = _frame(raw, r)
+    members = _members(raw, r)
+    pairs = _pairs(raw, r, frame, members)
+    driver = _driver(raw, r, members, pairs)
+    scene = Scene(
+        id=r.text(raw, "id", "", default=default_id),
+        title=r.text(raw, "title", "", default=default_id),
+        source=r.text(raw, "source", "", default=""),
+        note=r.text(raw, "note", "", default=""),
+        frame=frame,
+        members=members,
+        pairs=pairs,
+        driver=driver,
+        assembly=_assembly(raw, r, members),
+        forces=_forces(raw, r, members, frame),
+        moments=_moments(raw, r, members),
+        gravity=r.number(raw, "gravity", "", default=0.0, non_negative=True),
+        book=_book(raw, r),
+    )
+    _check_every_member_is_joined(scene, r)
+    return scene
+
+
+def _frame(raw: dict, r: _Reader) -> dict[str, complex]:
+    table = raw.get("frame")
+    if table is None:
+        raise r.fail("frame", "is missing (the fixed points of member 1)")
+    if not isinstance(table, dict) or not table:
+        raise r.fail("frame", "must be a table of fixed points, e.g. O = [0.0, 0.0]")
+    frame = {name: r.vector(v, f"frame.{name}") for name, v in table.items()}
+    names = list(frame)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if frame[a] == frame[b]:
+                raise r.fail(f"frame.{b}", f"coincides with frame.{a}; two pivots cannot "
+                                           "share a position (use one point)")
+    return frame
+
+
+def _members(raw: dict, r: _Reader) -> dict[int, Member]:
+    table = raw.get("members")
+    if not isinstance(table, dict) or not table:
+        raise r.fail("members", "is missing (the moving members 2, 3, …)")
+    members = {}
+    for key, spec in table.items():
+        where = f"members.{key}"
+        if not key.isdigit() or int(key) < 2:
+            raise r.fail(where, "must be numbered 2, 3, … (1 is the frame)")
+        spec = r.check_keys(spec, MEMBER_KEYS, where)
+        members[int(key)] = _member(int(key), spec, r, where)
+    if DRIVER not in members:
+        raise r.fail("members.2", "is missing: member 2 is the driving member")
+    return dict(sorted(members.items()))
+
+
+def _member(number: int, spec: dict, r: _Reader, where: str) -> Member:
+    axis = spec.get("points")
+    if (not isinstance(axis, list) or not 1 <= len(axis) <= 2
+            or not all(isinstance(p, str) and p for p in axis) or len(set(axis)) != len(axis)):
+        raise r.fail(f"{where}.points", f"must list one or two point letters, e.g. "
+                                        f"[\"A\", \"B\"], got {axis!r}")
+    points = {axis[0]: 0j}
+    if len(axis) == 2:
+        points[axis[1]] = complex(r.number(spec, "length", where, positive=True))
+    elif "length" in spec:
+        raise r.fail(f"{where}.length", "needs two points: a one-point member has no length")
+    extra = spec.get("extra", {})
+    if not isinstance(extra, dict):
+        raise r.fail(f"{where}.extra", "must be a table of points, e.g. { B = [0.45, 0.0] }")
+    for name, value in extra.items():
+        z = r.vector(value, f"{where}.extra.{name}")
+        if name in points:
+            raise r.fail(f"{where}.extra.{name}", "repeats a point of the member")
+        for other, w in points.items():
+            if z == w:
+                raise r.fail(f"{where}.extra.{name}", f"coincides with point {other}")
+        points[name] = z
+    centre = spec.get("centre")
+    return Member(
+        number=number,
+        points=points,
+        axis=tuple(axis),
+        mass=r.number(spec, "mass", where, default=0.0, non_negative=True),
+        centre=None if centre is None else r.vector(centre, f"{where}.centre"),
+        gyration=r.number(spec, "gyration", where, default=0.0, non_negative=True),
+        label=r.text(spec, "label", where, default=""),
+    )
+
+
+def _member_ref(value: Any, r: _Reader, where: str, members: dict[int, Member]) -> int:
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise r.fail(where, f"must be a member number, got {value!r}")
+    if value != 1 and value not in members:
+        raise r.fail(where, f"names member {value}, which is not defined")
+    return value
+
+
+def _point_ref(value: Any, member: int, r: _Reader, where: str, frame: dict,
+               members: dict[int, Member]) -> str:
+    own = frame if member == FRAME else members[member].points
+    if not isinstance(value, str) or value not in own:
+        raise r.fail(where, f"must be a point of member {member} "
+                            f"({', '.join(own)}), got {value!r}")
+    return value
+
+
+def _pairs(raw: dict, r: _Reader, frame: dict, members: dict[int, Member]) -> tuple[Pair, ...]:
+    specs = raw.get("pairs")
+    if not isinstance(specs, list) or not specs:
+        raise r.fail("pairs", "is missing: list the kinematic pairs, e.g. "
+                              "{ type = \"revolute\", members = [1, 2], point = \"O\" }")
+    pairs = []
+    for i, spec in enumerate(specs):
+        where = f"pairs[{i}]"
+        spec = r.check_keys(spec, PAIR_KEYS, where)
+        kind = spec.get("type")
+        if kind == "revolute":
+            ms = spec.get("members")
+            if not isinstance(ms, list) or len(ms) != 2:
+                raise r.fail(f"{where}.members", f"must be two member numbers, got {ms!r}")
+            a, b = (_member_ref(m, r, f"{where}.members", members) for m in ms)
+            if a == b:
+                raise r.fail(f"{where}.members", "must be two different members")
+            point = spec.get("point")
+            for m in (a, b):
+                _point_ref(point, m, r, f"{where}.point", frame, members)
+            pair = Pair("revolute", (a, b), point, name=r.text(spec, "name", where, default=f"{point}"))
+        elif kind == "prismatic":
+            guide = _member_ref(spec.get("guide"), r, f"{where}.guide", members)
+            slider = _member_ref(spec.get("slider"), r, f"{where}.slider", members)
+            if guide == slider:
+                raise r.fail(f"{where}.slider", "must differ from the guide member")
+            pair = Pair(
+                "prismatic", (guide, slider),
+                point=_point_ref(spec.get("point"), slider, r, f"{where}.point", frame, members),
+                through=_point_ref(spec.get("through"), guide, r, f"{where}.through", frame, members),
+                angle=math.radians(r.number(spec, "angle", where, default=0.0)),
+                slider_angle=math.radians(r.number(spec, "slider_angle", where, default=0.0)),
+                name=r.text(spec, "name", where, default=f"{guide}-{slider}"),
+            )
+        else:
+            raise r.fail(f"{where}.type", f"must be 'revolute' or 'prismatic', got {kind!r}")
+        pairs.append(pair)
+    names = [p.name for p in pairs]
+    for i, name in enumerate(names):
+        if name in names[:i]:
+            raise r.fail(f"pairs[{i}].name", f"repeats the pair name {name!r}; give one a name")
+    return tuple(pairs)
+
+
+def _driver(raw: dict, r: _Reader, members: dict[int, Member], pairs: tuple[Pair, ...]) -> Driver:
+    spec = r.check_keys(raw.get("driver"), DRIVER_KEYS, "driver") if "driver" in raw else None
+    if spec is None:
+        raise r.fail("driver", "is missing (member 2 rotating with omega, or linear with velocity)")
+    member = spec.get("member", DRIVER)
+    if member != DRIVER:
+        raise r.fail("driver.member", f"must be 2 (the course's driving member), got {member!r}")
+    kind = spec.get("type")
+    if kind == "rotating":
+        pair = next((p for p in pairs if p.kind == "revolute" and set(p.members) == {1, 2}), None)
+        if pair is None:
+            raise r.fail("driver.type", "is 'rotating' but no revolute pair joins members 1 and 2")
+        if members[DRIVER].points[pair.point] != 0:
+            raise r.fail("members.2.points", f"must start with the frame pivot {pair.point}, so "
+                                             "that φ₂ is the direction of the crank")
+        return Driver("rotating", DRIVER, pair.name,
+                      at=math.radians(r.number(spec, "at", "driver", default=0.0)),
+                      speed=r.number(spec, "omega", "driver"),
+                      accel=r.number(spec, "epsilon", "driver", default=0.0))
+    if kind == "linear":
+        pair = next((p for p in pairs if p.kind == "prismatic" and p.members == (1, 2)), None)
+        if pair is None:
+            raise r.fail("driver.type", "is 'linear' but no prismatic pair has guide = 1 and "
+                                        "slider = 2")
+        return Driver("linear", DRIVER, pair.name,
+                      at=r.number(spec, "at", "driver", default=0.0),
+                      speed=r.number(spec, "velocity", "driver"),
+                      accel=r.number(spec, "acceleration", "driver", default=0.0))
+    raise r.fail("driver.type", f"must be 'rotating' or 'linear', got {kind!r}")
+
+
+def _assembly(raw: dict, r: _Reader, members: dict[int, Member]) -> dict[tuple[int, int], int]:
+    table = raw.get("assembly", {})
+    if not isinstance(table, dict):
+        raise r.fail("assembly", "must be a table such as { \"3-4\" = 1 }")
+    out = {}
+    for key, value in table.items():
+        parts = key.split("-")
+        if len(parts) != 2 or not all(p.isdigit() and int(p) in members for p in parts):
+            raise r.fail(f"assembly.{key}", "must name a group by its two members, e.g. \"3-4\"")
+        if value not in (1, -1) or isinstance(value, bool):
+            raise r.fail(f"assembly.{key}", f"must be 1 or -1, got {value!r}")
+        out[tuple(sorted(int(p) for p in parts))] = value
+    return out
+
+
+def _forces(raw: dict, r: _Reader, members: dict[int, Member], frame: dict) -> tuple[Force, ...]:
+    specs = raw.get("forces", [])
+    if not isinstance(specs, list):
+        raise r.fail("forces", "must be an array of tables [[forces]]")
+    forces = []
+    for i, spec in enumerate(specs):
+        where = f"forces[{i}]"
+        spec = r.check_keys(spec, FORCE_KEYS, where)
+        member = _member_ref(spec.get("member"), r, f"{where}.member", members)
+        follows = spec.get("follows_member", False)
+        if not isinstance(follows, bool):
+            raise r.fail(f"{where}.follows_member", f"must be true or false, got {follows!r}")
+        forces.append(Force(member, _point_ref(spec.get("point"), member, r, f"{where}.point",
+                                               frame, members),
+                            r.number(spec, "magnitude", where),
+                            math.radians(r.number(spec, "angle", where, default=0.0)), follows))
+    return tuple(forces)
+
+
+def _moments(raw: dict, r: _Reader, members: dict[int, Member]) -> tuple[Moment, ...]:
+    specs = raw.get("moments", [])
+    if not isinstance(specs, list):
+        raise r.fail("moments", "must be an array of tables [[moments]]")
+    out = []
+    for i, spec in enumerate(specs):
+        where = f"moments[{i}]"
+        spec = r.check_keys(spec, MOMENT_KEYS, where)
+        out.append(Moment(_member_ref(spec.get("member"), r, f"{where}.member", members),
+                          r.number(spec, "value", where)))
+    return tuple(out)
+
+
+def _book(raw: dict, r: _Reader) -> dict[str, float]:
+    table = raw.get("book", {})
+    if not isinstance(table, dict):
+        raise r.fail("book", "must be a table of printed values, e.g. \"members.4.omega\" = 8.148")
+    return {k: r.number(table, k, "book") for k in table}
+
+
+def _check_every_member_is_joined(scene: Scene, r: _Reader) -> None:
+    for number in scene.members:
+        if not any(number in p.members for p in scene.pairs):
+            raise r.fail(f"members.{number}", "is not joined to anything by a pair")
+        if len(scene.members[number].axis) == 1 and not any(
+                p.kind == "prismatic" and number in p.members for p in scene.pairs):
+            raise r.fail(f"members.{number}.points", "has one point, so its orientation must "
+                                                     "come from a prismatic pair, and it has none")

@@ -1,0 +1,171 @@
+"""The scene schema: a planar linkage in the course's terms, as frozen dataclasses.
+
+Members are numbered as in the course (1 = frame, 2 = driving member), points are
+lettered. Every moving member has its own frame: origin at its first point, x-axis
+towards its second point (a one-point member, e.g. a slider block, takes its
+orientation from the prismatic pair it belongs to). Point coordinates are stored as
+complex numbers ``x + iy`` because the solver works with the complex-number method.
+SI units throughout; angles in radians (the TOML file uses degrees).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+from typing import Literal
+
+FRAME = 1
+DRIVER = 2
+
+
+@dataclass(frozen=True)
+class Member:
+    """A rigid member: its points in its own frame, plus optional mass properties."""
+
+    number: int
+    points: dict[str, complex]
+    axis: tuple[str, ...]  # the one or two points that define the member's frame
+    mass: float = 0.0  # kg
+    centre: complex | None = None  # centre of mass S in the member frame, m
+    gyration: float = 0.0  # radius of gyration ρ about S, m
+    label: str = ""
+
+    @property
+    def length(self) -> float | None:
+        """Distance between the two axis points (the link length), or None."""
+        if len(self.axis) < 2:
+            return None
+        return abs(self.points[self.axis[1]] - self.points[self.axis[0]])
+
+
+@dataclass(frozen=True)
+class Pair:
+    """A lower kinematic pair between two members.
+
+    Revolute: ``members`` share ``point``. Prismatic: ``members = (guide, slider)``;
+    the slider's ``point`` stays on a line fixed to the guide member, through the
+    guide's point ``through`` at angle ``angle`` in the guide's frame; ``slider_angle``
+    is the same line's direction in the slider's frame, so the slider's orientation
+    is locked: θ_slider = θ_guide + angle − slider_angle.
+    """
+
+    kind: Literal["revolute", "prismatic"]
+    members: tuple[int, int]
+    point: str
+    name: str
+    through: str | None = None
+    angle: float = 0.0
+    slider_angle: float = 0.0
+
+    @property
+    def letter(self) -> str:
+        return "R" if self.kind == "revolute" else "P"
+
+    @property
+    def lock(self) -> float:
+        """θ_slider − θ_guide for a prismatic pair."""
+        return self.angle - self.slider_angle
+
+    def other(self, member: int) -> int:
+        a, b = self.members
+        return b if member == a else a
+
+
+@dataclass(frozen=True)
+class Driver:
+    """The driving member 2: rotating about a frame pivot or sliding on a frame guide.
+
+    ``at`` is the scene's own instant: φ₂ in rad (rotating) or s in m (linear).
+    ``speed``/``accel`` are ω₂, ε₂ (rad/s, rad/s²) or v, a (m/s, m/s²).
+    """
+
+    kind: Literal["rotating", "linear"]
+    member: int
+    pair: str  # name of the pair that joins the driver to the frame
+    at: float
+    speed: float
+    accel: float = 0.0
+
+    @property
+    def unit(self) -> str:
+        return "deg" if self.kind == "rotating" else "m"
+
+
+@dataclass(frozen=True)
+class Force:
+    """An external force on a member, applied at one of its points."""
+
+    member: int
+    point: str
+    magnitude: float  # N
+    angle: float  # rad, direction
+    follows_member: bool = False  # direction measured in the member's frame
+
+
+@dataclass(frozen=True)
+class Moment:
+    member: int
+    value: float  # N·m, counter-clockwise positive
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A linkage scene: what a TOML file under ``mechanisms/presets`` describes."""
+
+    id: str
+    title: str
+    source: str
+    note: str
+    frame: dict[str, complex]  # fixed points, in the book's coordinates
+    members: dict[int, Member]
+    pairs: tuple[Pair, ...]
+    driver: Driver
+    assembly: dict[tuple[int, int], int] = field(default_factory=dict)
+    forces: tuple[Force, ...] = ()
+    moments: tuple[Moment, ...] = ()
+    gravity: float = 0.0  # m/s², acting along −y when > 0
+    book: dict[str, float] = field(default_factory=dict)  # the book's printed values
+
+    def pair(self, name: str) -> Pair:
+        for p in self.pairs:
+            if p.name == name:
+                return p
+        raise KeyError(name)
+
+    def points_of(self, member: int) -> dict[str, complex]:
+        return self.frame if member == FRAME else self.members[member].points
+
+    @property
+    def point_names(self) -> list[str]:
+        names = dict.fromkeys(self.frame)
+        for m in self.members.values():
+            names.update(dict.fromkeys(m.points))
+        return sorted(names)
+
+    @property
+    def lengths(self) -> dict[int, float]:
+        """Link lengths of the members that have two axis points."""
+        return {n: m.length for n, m in self.members.items() if m.length is not None}
+
+    def with_(self, *, lengths: dict[int, float] | None = None, speed: float | None = None,
+              accel: float | None = None, at: float | None = None) -> Scene:
+        """A copy with overridden link lengths, driver speed/acceleration or instant.
+
+        A new length scales every point of that member about its first axis point (the
+        origin of its frame), so extra points such as B on member 3 keep their place
+        relative to the link.
+        """
+        members = dict(self.members)
+        for number, new in (lengths or {}).items():
+            member = members[number]
+            factor = new / member.length
+            points = {k: z * factor for k, z in member.points.items()}
+            centre = None if member.centre is None else member.centre * factor
+            members[number] = dataclasses.replace(member, points=points, centre=centre)
+        driver = dataclasses.replace(
+            self.driver,
+            speed=self.driver.speed if speed is None else speed,
+            accel=self.driver.accel if accel is None else accel,
+            at=self.driver.at if at is None else at,
+        )
+        return dataclasses.replace(self, members=members, driver=driver)

@@ -1,0 +1,201 @@
+"""Kinematics of a linkage over an array of driver positions: the shared core of every page.
+
+``solve(scene, at)`` solves the driver and then the Assur groups in the order the
+structure gives, each over the whole array at once. It computes only what is asked:
+``order`` 0 = positions, 1 = + velocities, 2 = + accelerations, and with ``points``
+only the groups those points depend on.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from mechanisms.schema import DRIVER, FRAME, Scene
+
+from .loops import build_loop, solve_dyad
+from .state import Body
+from .structure import Structure, decompose
+
+NEAR_SINGULAR = 1e-3  # |sin| of the angle between a group's unknown directions
+SINGULAR = 1e-9
+
+
+@dataclass
+class PointMotion:
+    """A point over the cycle; x, y in m, velocities in m/s, accelerations in m/s²."""
+
+    z: np.ndarray
+    v: np.ndarray | None = None
+    a: np.ndarray | None = None
+
+    x = property(lambda self: self.z.real)
+    y = property(lambda self: self.z.imag)
+    vx = property(lambda self: self.v.real)
+    vy = property(lambda self: self.v.imag)
+    ax = property(lambda self: self.a.real)
+    ay = property(lambda self: self.a.imag)
+
+
+@dataclass
+class MemberMotion:
+    """A member's angle (rad, from +x, counter-clockwise), ω (rad/s) and ε (rad/s²)."""
+
+    angle: np.ndarray
+    omega: np.ndarray | None = None
+    epsilon: np.ndarray | None = None
+
+
+@dataclass
+class SliderMotion:
+    """A prismatic pair: the slider point's displacement s along the guide from the guide's
+    point ``through`` (m), its rate v (m/s) and a (m/s²), and the Coriolis acceleration
+    2·ω_guide × v_rel (complex, m/s²)."""
+
+    s: np.ndarray
+    v: np.ndarray | None = None
+    a: np.ndarray | None = None
+    coriolis: np.ndarray | None = None
+
+
+@dataclass
+class GroupIssue:
+    """Where a group fails to close or is near a dead centre, as driver ranges."""
+
+    group: str
+    kind: str
+    problem: str  # "open" or "near-singular"
+    ranges: list[tuple[float, float]]  # driver values (rad or m), inclusive
+    worst_condition: float = math.inf
+
+
+@dataclass
+class Motion:
+    scene: Scene
+    structure: Structure
+    at: np.ndarray  # driver coordinate: φ₂ in rad, or s in m
+    order: int
+    points: dict[str, PointMotion]
+    members: dict[int, MemberMotion]
+    sliders: dict[str, SliderMotion]
+    feasible: np.ndarray  # False where some solved group cannot close
+    transmission: dict[str, np.ndarray] = field(default_factory=dict)
+    issues: list[GroupIssue] = field(default_factory=list)
+
+    @property
+    def condition(self) -> np.ndarray:
+        """Worst condition number (1/|sin γ|) over the solved groups at each position."""
+        if not self.transmission:
+            return np.ones_like(self.at)
+        worst = np.min(np.vstack(list(self.transmission.values())), axis=0)
+        with np.errstate(divide="ignore"):
+            return 1.0 / worst
+
+
+def driver_body(scene: Scene, at: np.ndarray) -> Body:
+    d = scene.driver
+    pair = scene.pair(d.pair)
+    n = np.ones_like(at)
+    if d.kind == "rotating":
+        pivot = scene.frame[pair.point]
+        return Body(theta=at, rot=np.exp(1j * at), z0=pivot * n, omega=d.speed * n, v0=0j * n,
+                    epsilon=d.accel * n, a0=0j * n)
+    direction = cmath.exp(1j * pair.angle)
+    theta = pair.lock
+    rot = cmath.exp(1j * theta)
+    local = scene.members[DRIVER].points[pair.point]
+    origin = scene.frame[pair.through] + at * direction - local * rot
+    return Body(theta=theta * n, rot=rot * n, z0=origin, omega=0.0 * n, v0=d.speed * direction * n,
+                epsilon=0.0 * n, a0=d.accel * direction * n)
+
+
+def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = None,
+          structure: Structure | None = None) -> Motion:
+    """Solve the scene at driver value(s) ``at`` (rad or m; default: the scene's instant)."""
+    at = np.atleast_1d(np.asarray(scene.driver.at if at is None else at, dtype=float))
+    structure = structure or decompose(scene)
+    if points is None:
+        groups = structure.groups
+    else:
+        wanted = {m for m, mem in scene.members.items() if set(points) & set(mem.points)}
+        groups = structure.groups_for(wanted)
+    bodies: dict[int, Body] = {FRAME: Body.frame(), DRIVER: driver_body(scene, at)}
+    feasible = np.ones(at.shape, dtype=bool)
+    transmission, issues = {}, []
+    for group in groups:
+        solution = solve_dyad(build_loop(scene, group), bodies, order)
+        bodies.update(solution.bodies)
+        opened = ~solution.closed & feasible
+        if opened.any():
+            issues.append(GroupIssue(group.name, group.kind, "open", _ranges(at, opened)))
+        feasible &= solution.closed
+        if solution.transmission is not None:
+            t = np.where(feasible, solution.transmission, np.nan)
+            transmission[group.name] = t
+            weak = feasible & (t < NEAR_SINGULAR)
+            if weak.any():
+                issues.append(GroupIssue(group.name, group.kind, "near-singular",
+                                         _ranges(at, weak), float(1.0 / np.nanmin(t))))
+    return _collect(scene, structure, at, order, bodies, feasible, transmission, issues, points)
+
+
+def _collect(scene, structure, at, order, bodies, feasible, transmission, issues, wanted) -> Motion:
+    n = np.ones_like(at)
+    point_motion: dict[str, PointMotion] = {}
+    for number in [FRAME, *scene.members]:
+        if number not in bodies:
+            continue
+        b = bodies[number]
+        for name, local in scene.points_of(number).items():
+            if name in point_motion or (wanted is not None and name not in wanted):
+                continue
+            point_motion[name] = PointMotion(
+                z=b.position(local) * n,
+                v=b.velocity(local) * n if order >= 1 else None,
+                a=b.acceleration(local) * n if order >= 2 else None)
+    member_motion = {
+        m: MemberMotion(np.asarray(b.theta) * n,
+                        b.omega * n if order >= 1 else None,
+                        b.epsilon * n if order >= 2 else None)
+        for m, b in bodies.items() if m != FRAME}
+    sliders = {p.name: _slider(scene, p, bodies, order, n) for p in scene.pairs
+               if p.kind == "prismatic" and p.members[0] in bodies and p.members[1] in bodies}
+    return Motion(scene, structure, at, order, point_motion, member_motion, sliders, feasible,
+                  transmission, issues)
+
+
+def _slider(scene: Scene, pair, bodies: dict[int, Body], order: int, n) -> SliderMotion:
+    """Relative motion of a prismatic pair, read from the two members' motions."""
+    guide, slider = bodies[pair.members[0]], bodies[pair.members[1]]
+    scene_local_t = scene.points_of(pair.members[0])[pair.through]
+    scene_local_p = scene.points_of(pair.members[1])[pair.point]
+    direction = cmath.exp(1j * pair.angle) * guide.rot
+    z_slider = slider.position(scene_local_p)
+    s = (np.conj(direction) * (z_slider - guide.position(scene_local_t))).real * n
+    if order < 1:
+        return SliderMotion(s)
+    # the guide's coincident point (B₄ in the method of extension) sits under the slider
+    local_on_guide = (z_slider - guide.z0) / guide.rot
+    v_rel = slider.velocity(scene_local_p) - guide.velocity(local_on_guide)
+    v = (np.conj(direction) * v_rel).real * n
+    if order < 2:
+        return SliderMotion(s, v)
+    coriolis = 2j * guide.omega * v * direction * n
+    a_rel = slider.acceleration(scene_local_p) - guide.acceleration(local_on_guide) - coriolis
+    return SliderMotion(s, v, (np.conj(direction) * a_rel).real * n, coriolis)
+
+
+def _ranges(at: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
+    """Contiguous runs of ``mask`` as (first, last) driver values."""
+    idx = np.flatnonzero(mask)
+    if idx.size == 0:
+        return []
+    breaks = np.flatnonzero(np.diff(idx) > 1)
+    starts = np.r_[idx[0], idx[breaks + 1]]
+    ends = np.r_[idx[breaks], idx[-1]]
+    return [(float(at[a]), float(at[b])) for a, b in zip(starts, ends)]
+
+

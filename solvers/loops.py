@@ -1,0 +1,301 @@
+"""Class II Assur groups (dyads) as vector loops, solved the way the complex-number method does.
+
+A dyad (members j, k; pairs outer_j, inner, outer_k) is walked as a closed vector loop
+from a known point on the member it hangs on, through j and k, to a known point on the
+other member it hangs on. Each leg is a vector fixed in a member (turning with it) or a
+slide along a guide (length s, the pair's relative displacement). Every dyad kind then
+has exactly two unknowns among the angles and the slides:
+
+* RRR — two angles: circle–circle intersection;
+* RRP, RPR — one angle and one slide: a quadratic in the slide;
+* PRP, RPP — two slides: a 2×2 linear system.
+
+Differentiating the loop once and twice ("equations B and C" of the complex-number
+method) gives the same 2×2 matrix for the unknown rates (ω or ṡ) and for the unknown
+accelerations (ε or s̈); the Coriolis term 2·ṡ·ω appears by itself. Everything is
+vectorised over the cycle; no Python loop runs over positions.
+"""
+
+from __future__ import annotations
+
+import cmath
+from dataclasses import dataclass
+
+import numpy as np
+
+from mechanisms.schema import Pair, Scene
+
+from .state import Body
+from .structure import Group, StructureError
+
+
+@dataclass(frozen=True)
+class Leg:
+    """A loop vector ``local·e^{iθ_ref}`` (times the slide s if ``slide`` is set).
+
+    ``ref`` is the member whose angle turns the leg: a free dyad member (unknown angle)
+    or an already known member; offsets of locked angles are folded into ``local``.
+    """
+
+    ref: int
+    local: complex
+    slide: str | None = None
+
+
+@dataclass(frozen=True)
+class Visit:
+    """The loop reaches point ``local`` of dyad ``member``: this places the member."""
+
+    member: int
+    local: complex
+
+
+@dataclass(frozen=True)
+class DyadLoop:
+    group: Group
+    start: tuple[int, complex]  # (known member, point in its frame)
+    steps: tuple[Leg | Visit, ...]
+    end: tuple[int, complex]
+    angle_of: dict[int, tuple[int, float]]  # dyad member -> (ref member, angle offset)
+    free: tuple[int, ...]  # dyad members whose angle is unknown
+    slides: tuple[str, ...]  # prismatic pairs whose slide is unknown
+    branch: int
+
+    @property
+    def unknowns(self) -> tuple:
+        return self.free + self.slides
+
+    @property
+    def legs(self) -> list[Leg]:
+        return [st for st in self.steps if isinstance(st, Leg)]
+
+
+def build_loop(scene: Scene, group: Group) -> DyadLoop:
+    """Lay the vector loop of a class II group (independent of the cycle)."""
+    if group.cls != 2:
+        raise StructureError(f"class {group.cls} group {group.label()} ({group.kind}) is "
+                             "recognised but not yet supported by the kinematics core")
+    j, _ = group.members
+    outer_j = group.pairs[0]
+    body = outer_j.other(j)
+    at = scene.points_of(body)[_anchor(outer_j, body)]
+    start = (body, at)
+    raw: list = []
+    for pair in group.pairs:
+        more, body, at = _cross(scene, pair, body, at)
+        raw += more
+    free, angle_of = _angle_relations(group)
+    steps = []
+    for st in raw:
+        if isinstance(st, Visit):
+            if st.member in group.members:
+                steps.append(st)
+            continue
+        ref, off = angle_of.get(st.member, (st.member, 0.0))
+        steps.append(Leg(ref, st.local * cmath.exp(1j * off), st.slide))
+    slides = tuple(p.name for p in group.pairs if p.kind == "prismatic")
+    branch = scene.assembly.get(tuple(sorted(group.members)), 1)
+    return DyadLoop(group, start, tuple(steps), (body, at), angle_of, free, slides, branch)
+
+
+@dataclass(frozen=True)
+class _RawLeg:
+    member: int
+    local: complex
+    slide: str | None = None
+
+
+def _anchor(pair: Pair, member: int) -> str:
+    """The point of ``member`` at which ``pair`` acts."""
+    if pair.kind == "prismatic" and member == pair.members[0]:
+        return pair.through
+    return pair.point
+
+
+def _cross(scene: Scene, pair: Pair, member: int, at: complex) -> tuple[list, int, complex]:
+    """Legs that carry the loop from point ``at`` of ``member`` across ``pair``."""
+    nxt = pair.other(member)
+    here = scene.points_of(member)
+    if pair.kind == "revolute":
+        legs = [_RawLeg(member, here[pair.point] - at)]
+    elif member == pair.members[0]:  # guide → slider: along the guide by +s
+        legs = [_RawLeg(member, here[pair.through] - at),
+                _RawLeg(member, cmath.exp(1j * pair.angle), pair.name)]
+    else:  # slider → guide: back along the guide by −s
+        legs = [_RawLeg(member, here[pair.point] - at),
+                _RawLeg(nxt, -cmath.exp(1j * pair.angle), pair.name)]
+    arrive = scene.points_of(nxt)[_anchor(pair, nxt)]
+    return [g for g in legs if g.slide or g.local != 0] + [Visit(nxt, arrive)], nxt, arrive
+
+
+def _angle_relations(group: Group) -> tuple[tuple[int, ...], dict[int, tuple[int, float]]]:
+    """Which dyad members have unknown angles, and how the locked ones follow."""
+    j, k = group.members
+    outer_j, inner, outer_k = group.pairs
+
+    def lock(pair: Pair, member: int) -> float:
+        return pair.lock if member == pair.members[1] else -pair.lock
+
+    angle_of: dict[int, tuple[int, float]] = {}
+    for pair, m in ((outer_j, j), (outer_k, k)):
+        if pair.kind == "prismatic":
+            angle_of[m] = (pair.other(m), lock(pair, m))
+    if inner.kind == "prismatic":
+        for a, b in ((j, k), (k, j)):
+            if a in angle_of and b not in angle_of:
+                ref, off = angle_of[a]
+                angle_of[b] = (ref, off + lock(inner, b))
+        if j not in angle_of:
+            angle_of[k] = (j, lock(inner, k))
+    free = tuple(m for m in (j, k) if m not in angle_of)
+    for m in free:
+        angle_of[m] = (m, 0.0)
+    return free, angle_of
+
+
+def cross(a, b):
+    """z-component of the cross product of plane vectors given as complex numbers."""
+    return a.real * b.imag - a.imag * b.real
+
+
+@dataclass
+class DyadSolution:
+    bodies: dict[int, Body]
+    transmission: np.ndarray | None  # |sin| between the unknown directions; 0 = dead centre
+    closed: np.ndarray  # where the loop closes
+
+
+def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSolution:
+    """Positions (and velocities, accelerations up to ``order``) of one dyad over the cycle."""
+    b_start, c_start = known[loop.start[0]], loop.start[1]
+    b_end, c_end = known[loop.end[0]], loop.end[1]
+    legs = loop.legs
+
+    # positions: Σ_free A_m·e^{iθ_m} + Σ s·(direction) = D
+    d = b_end.position(c_end) - b_start.position(c_start)
+    coef = dict.fromkeys(loop.free, 0j)
+    slide_dir: dict[str, tuple[int | None, object]] = {}
+    for leg in legs:
+        free = leg.ref in coef
+        if leg.slide:
+            slide_dir[leg.slide] = (leg.ref, leg.local) if free else (None, leg.local * known[leg.ref].rot)
+        elif free:
+            coef[leg.ref] += leg.local
+        else:
+            d = d - leg.local * known[leg.ref].rot
+    theta, s = _close(loop, coef, slide_dir, d)
+    closed = np.all([np.isfinite(x) for x in (*theta.values(), *s.values())], axis=0)
+
+    refs = {m: Body(theta=t, rot=np.exp(1j * t), z0=0j) for m, t in theta.items()}
+    ref_of = {**known, **refs}
+    units = [leg.local * ref_of[leg.ref].rot for leg in legs]
+    values = [u * s[leg.slide] if leg.slide else u for leg, u in zip(legs, units)]
+    bodies = {m: _follow(ref_of[ref], off) for m, (ref, off) in loop.angle_of.items()}
+    _place(loop, bodies, b_start.position(c_start), values, "z0")
+    if order < 1:
+        return DyadSolution(bodies, None, closed)
+
+    # velocities — equation B: the unknown rates multiply two fixed columns
+    columns = [sum((1j * v for leg, v in zip(legs, values) if leg.ref == m), 0j) for m in loop.free]
+    columns += [next(u for leg, u in zip(legs, units) if leg.slide == name) for name in loop.slides]
+    c1, c2 = columns
+    det = cross(c1, c2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        transmission = np.abs(det) / (np.abs(c1) * np.abs(c2))
+    rhs = b_end.velocity(c_end) - b_start.velocity(c_start)
+    for leg, v in zip(legs, values):
+        if leg.ref not in coef:
+            rhs = rhs - 1j * known[leg.ref].omega * v
+    rate = _solve2(loop, c1, c2, det, rhs)
+    for m in loop.free:
+        refs[m].omega = rate[m]
+    sdot = {name: rate[name] for name in loop.slides}
+    dvalues = [1j * ref_of[leg.ref].omega * v + (sdot[leg.slide] * u if leg.slide else 0)
+               for leg, u, v in zip(legs, units, values)]
+    for m, (ref, _) in loop.angle_of.items():
+        bodies[m].omega = ref_of[ref].omega
+    _place(loop, bodies, b_start.velocity(c_start), dvalues, "v0")
+    if order < 2:
+        return DyadSolution(bodies, transmission, closed)
+
+    # accelerations — equation C, with the Coriolis term 2·ṡ·ω for every slide
+    rhs = b_end.acceleration(c_end) - b_start.acceleration(c_start)
+    for leg, u, v in zip(legs, units, values):
+        w = ref_of[leg.ref].omega
+        rhs = rhs + (w * w) * v
+        if leg.slide:
+            rhs = rhs - 2j * sdot[leg.slide] * w * u
+        if leg.ref not in coef:
+            rhs = rhs - 1j * known[leg.ref].epsilon * v
+    acc = _solve2(loop, c1, c2, det, rhs)
+    for m in loop.free:
+        refs[m].epsilon = acc[m]
+    ddvalues = []
+    for leg, u, v in zip(legs, units, values):
+        r = ref_of[leg.ref]
+        a = (1j * r.epsilon - r.omega * r.omega) * v
+        if leg.slide:
+            a = a + (acc[leg.slide] + 2j * sdot[leg.slide] * r.omega) * u
+        ddvalues.append(a)
+    for m, (ref, _) in loop.angle_of.items():
+        bodies[m].epsilon = ref_of[ref].epsilon
+    _place(loop, bodies, b_start.acceleration(c_start), ddvalues, "a0")
+    return DyadSolution(bodies, transmission, closed)
+
+
+def _solve2(loop: DyadLoop, c1, c2, det, rhs) -> dict:
+    """Cramer's rule for x₁·c₁ + x₂·c₂ = rhs (complex columns = two real equations)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return dict(zip(loop.unknowns, (cross(rhs, c2) / det, cross(c1, rhs) / det)))
+
+
+def _follow(ref: Body, offset: float) -> Body:
+    """A member whose angle is ``ref``'s angle plus a constant offset."""
+    return Body(theta=ref.theta + offset, rot=ref.rot * cmath.exp(1j * offset), z0=0j)
+
+
+def _place(loop: DyadLoop, bodies: dict[int, Body], start, increments: list, field: str) -> None:
+    """Walk the loop, summing leg values, and set each member's origin where it is visited."""
+    total, k, placed = start, 0, set()
+    for st in loop.steps:
+        if isinstance(st, Leg):
+            total = total + increments[k]
+            k += 1
+        elif st.member not in placed:
+            placed.add(st.member)
+            b = bodies[st.member]
+            lr = st.local * b.rot
+            if field == "z0":
+                b.z0 = total - lr
+            elif field == "v0":
+                b.v0 = total - 1j * b.omega * lr
+            else:
+                b.a0 = total - (1j * b.epsilon - b.omega * b.omega) * lr
+
+
+def _close(loop: DyadLoop, coef: dict, slide_dir: dict, d) -> tuple[dict, dict]:
+    """Closed-form position of the loop; NaN where it cannot close."""
+    sign = loop.branch
+    with np.errstate(invalid="ignore", divide="ignore"):
+        if len(loop.free) == 2:  # RRR: |A₁|, |A₂| and the distance |D| make a triangle
+            (m1, a1), (m2, a2) = coef.items()
+            r1, r2, dist = abs(a1), abs(a2), np.abs(d)
+            x = (r1 * r1 - r2 * r2 + dist * dist) / (2 * dist)
+            h = np.sqrt(r1 * r1 - x * x)
+            u1 = d / dist * (x + 1j * sign * h)
+            return {m1: np.angle(u1 / a1), m2: np.angle((d - u1) / a2)}, {}
+        if len(loop.free) == 1:
+            (m, a), = coef.items()
+            (name, (ref, direction)), = slide_dir.items()
+            if ref is None:  # RRP: e^{iθ}·A + s·E = D, E known
+                p = (d * np.conj(direction)).real
+                s = p + sign * np.sqrt(p * p - np.abs(d) ** 2 + abs(a) ** 2)
+                return {m: np.angle((d - s * direction) / a)}, {name: s}
+            # RPR: e^{iθ}·(A + s·B) = D
+            p = (a * np.conj(direction)).real
+            s = -p + sign * np.sqrt(p * p - abs(a) ** 2 + np.abs(d) ** 2)
+            return {m: np.angle(d / (a + s * direction))}, {name: s}
+        (n1, (_, e1)), (n2, (_, e2)) = slide_dir.items()  # PRP, RPP: s₁·E₁ + s₂·E₂ = D
+        det = cross(e1, e2)
+        det = np.where(np.abs(det) < 1e-12, np.nan, det)
+        return {}, {n1: cross(d, e2) / det, n2: cross(e1, d) / det}

@@ -1,0 +1,172 @@
+"""Structural analysis: degrees of freedom and decomposition into the driver and Assur groups.
+
+The course builds a mechanism from the frame and the driving member by adding Assur
+groups (structural groups with zero mobility). Solving follows the same order, so the
+decomposition found here is also the solving order of the kinematics core.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from itertools import combinations
+
+from mechanisms.schema import DRIVER, FRAME, Pair, Scene
+
+DYAD_KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
+ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV"}
+
+
+class StructureError(ValueError):
+    """The scene's structure cannot be solved; the message says why."""
+
+
+@dataclass(frozen=True)
+class Group:
+    """An Assur group: its members and pairs in solving (loop) order.
+
+    For a class II dyad ``members = (j, k)`` and ``pairs = (outer_j, inner, outer_k)``,
+    oriented so that ``kind`` reads as the course names it (RRR, RRP, RPR, PRP, RPP).
+    """
+
+    members: tuple[int, ...]
+    pairs: tuple[Pair, ...]
+    kind: str
+    cls: int
+    order: int
+
+    @property
+    def name(self) -> str:
+        return "-".join(str(m) for m in sorted(self.members))
+
+    @property
+    def attached_to(self) -> set[int]:
+        """The already-known members this group hangs on."""
+        own = set(self.members)
+        return {m for p in self.pairs for m in p.members if m not in own}
+
+    def label(self) -> str:
+        return f"{ROMAN[self.cls]}({','.join(str(m) for m in self.members)})"
+
+
+@dataclass(frozen=True)
+class Structure:
+    moving_members: int
+    lower_pairs: int
+    higher_pairs: int
+    dof: int
+    driver: Pair
+    groups: tuple[Group, ...]
+
+    @property
+    def formula(self) -> str:
+        """The structural formula, e.g. ``I(1,2) → II(3,4) → II(5,6)``."""
+        return " → ".join([f"I({FRAME},{DRIVER})"] + [g.label() for g in self.groups])
+
+    def groups_for(self, members: set[int]) -> tuple[Group, ...]:
+        """The groups (in solving order) needed to know the given members."""
+        needed: set[str] = set()
+        wanted = set(members)
+        for group in reversed(self.groups):
+            if wanted & set(group.members):
+                needed.add(group.name)
+                wanted |= group.attached_to
+        return tuple(g for g in self.groups if g.name in needed)
+
+
+def degrees_of_freedom(scene: Scene) -> int:
+    """W = 3n − 2p₅ − p₄ (n moving members, p₅ lower pairs, p₄ higher pairs)."""
+    return 3 * len(scene.members) - 2 * len(scene.pairs)
+
+
+def decompose(scene: Scene) -> Structure:
+    """Find the driver and the Assur groups in solving order, or explain why not."""
+    dof = degrees_of_freedom(scene)
+    driver = scene.pair(scene.driver.pair)
+    if dof != 1:
+        raise StructureError(_dof_message(scene, dof))
+    known = {FRAME, DRIVER}
+    extra = [p for p in scene.pairs if set(p.members) <= known and p is not driver]
+    if extra:
+        raise StructureError(f"the driving member 2 is joined to the frame twice "
+                             f"(pairs {driver.name} and {extra[0].name}), so it cannot move")
+    remaining = set(scene.members) - known
+    groups = []
+    while remaining:
+        group = _find_dyad(scene, known, remaining) or _find_triad(scene, known, remaining)
+        if group is None:
+            raise StructureError(_stuck_message(scene, known, remaining))
+        groups.append(group)
+        known |= set(group.members)
+        remaining -= set(group.members)
+    return Structure(len(scene.members), len(scene.pairs), 0, dof, driver, tuple(groups))
+
+
+def _pairs_between(scene: Scene, a: set[int], b: set[int]) -> list[Pair]:
+    return [p for p in scene.pairs
+            if (p.members[0] in a and p.members[1] in b) or (p.members[1] in a and p.members[0] in b)]
+
+
+def _find_dyad(scene: Scene, known: set[int], remaining: set[int]) -> Group | None:
+    for j, k in combinations(sorted(remaining), 2):
+        inner = _pairs_between(scene, {j}, {k})
+        outer_j = _pairs_between(scene, {j}, known)
+        outer_k = _pairs_between(scene, {k}, known)
+        if len(inner) == len(outer_j) == len(outer_k) == 1:
+            pairs = (outer_j[0], inner[0], outer_k[0])
+            kind = "".join(p.letter for p in pairs)
+            if kind not in DYAD_KINDS:
+                j, k, pairs, kind = k, j, pairs[::-1], kind[::-1]
+            if kind not in DYAD_KINDS:
+                raise StructureError(f"members {j} and {k} are joined only by prismatic pairs "
+                                     f"({kind}); such a dyad cannot fix their orientation")
+            return Group((j, k), pairs, kind, cls=2, order=2)
+    return None
+
+
+def _find_triad(scene: Scene, known: set[int], remaining: set[int]) -> Group | None:
+    """A class III group: a ternary member joined to three binary members (6 pairs)."""
+    for quad in combinations(sorted(remaining), 4):
+        members = set(quad)
+        pairs = _pairs_between(scene, members, members | known)
+        if len(pairs) != 6:
+            continue
+        inner = _pairs_between(scene, members, members)
+        degree = {m: sum(m in p.members for p in inner) for m in quad}
+        centre = max(quad, key=degree.get)
+        if degree[centre] == 3 and all(d == 1 for m, d in degree.items() if m != centre):
+            kind = "".join(p.letter for p in pairs)
+            order = len(pairs) - len(inner)
+            return Group((centre, *sorted(members - {centre})), tuple(pairs), kind, 3, order)
+    return None
+
+
+def _dof_message(scene: Scene, dof: int) -> str:
+    n, p = len(scene.members), len(scene.pairs)
+    head = f"W = 3·{n} − 2·{p} = {dof}, but the scene has one driver (member 2)"
+    if dof > 1:
+        return (f"{head}: {dof - 1} motion(s) are not driven, so some members can move "
+                f"freely. {_loose(scene)}")
+    return (f"{head}: the members are over-constrained ({1 - dof} pair(s) too many), so the "
+            f"mechanism cannot move. {_loose(scene)}")
+
+
+def _loose(scene: Scene) -> str:
+    counts = {m: sum(m in p.members for p in scene.pairs) for m in scene.members}
+    single = [str(m) for m, c in counts.items() if c < 2 and m != DRIVER]
+    if single:
+        return f"Member(s) {', '.join(single)} are joined by a single pair."
+    return "Pairs per member: " + ", ".join(f"{m}: {c}" for m, c in counts.items()) + "."
+
+
+def _stuck_message(scene: Scene, known: set[int], remaining: set[int]) -> str:
+    details = []
+    for m in sorted(remaining):
+        to_known = len(_pairs_between(scene, {m}, known))
+        to_rest = len(_pairs_between(scene, {m}, remaining - {m}))
+        details.append(f"member {m}: {to_known} pair(s) to solved members, {to_rest} to unsolved")
+    quads = len(remaining) >= 4
+    hint = (" They may form an Assur group of class higher than III, which is not supported."
+            if quads else "")
+    return (f"after {', '.join(map(str, sorted(known)))} the members "
+            f"{', '.join(map(str, sorted(remaining)))} do not form a class II or III Assur "
+            f"group ({'; '.join(details)}).{hint}")
