@@ -278,7 +278,9 @@ def _pairs(raw: dict, r: _Reader, frame: dict, members: dict[int, Member]) -> tu
             point = spec.get("point")
             for m in (a, b):
                 _point_ref(point, m, r, f"{where}.point", frame, members)
-            pair = Pair("revolute", (a, b), point, name=r.text(spec, "name", where, default=f"{point}"))
+            taken = {q.name for q in pairs}
+            auto = point if point not in taken else f"{point}:{a}-{b}"
+            pair = Pair("revolute", (a, b), point, name=r.text(spec, "name", where, default=auto))
         elif kind == "prismatic":
             guide = _member_ref(spec.get("guide"), r, f"{where}.guide", members)
             slider = _member_ref(spec.get("slider"), r, f"{where}.slider", members)

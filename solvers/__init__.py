@@ -1,0 +1,13 @@
+"""Mehanizmi's solvers: pure numpy, no drawing. See docs/api.md.
+
+    from mechanisms import load_preset
+    from solvers import solve
+    motion = solve(load_preset("analitika-2.1"), numpy.radians([55.0]))
+    motion.members[4].omega   # ω₄ in rad/s
+"""
+
+from .kinematics import GroupIssue, MemberMotion, Motion, PointMotion, SliderMotion, solve
+from .structure import Group, Structure, StructureError, decompose, degrees_of_freedom
+
+__all__ = ["Group", "GroupIssue", "MemberMotion", "Motion", "PointMotion", "SliderMotion",
+           "Structure", "StructureError", "decompose", "degrees_of_freedom", "solve"]

@@ -122,6 +122,11 @@ def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = N
     else:
         wanted = {m for m, mem in scene.members.items() if set(points) & set(mem.points)}
         groups = structure.groups_for(wanted)
+    with np.errstate(invalid="ignore", divide="ignore"):  # open positions are NaN, and masked
+        return _solve_groups(scene, structure, groups, at, order, points)
+
+
+def _solve_groups(scene, structure, groups, at, order, points) -> Motion:
     bodies: dict[int, Body] = {FRAME: Body.frame(), DRIVER: driver_body(scene, at)}
     feasible = np.ones(at.shape, dtype=bool)
     transmission, issues = {}, []

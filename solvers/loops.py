@@ -166,7 +166,11 @@ class DyadSolution:
 
 
 def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSolution:
-    """Positions (and velocities, accelerations up to ``order``) of one dyad over the cycle."""
+    """Positions (and velocities, accelerations up to ``order``) of one dyad over the cycle.
+
+    Where the loop cannot close the results are NaN and ``closed`` is False; call under
+    ``np.errstate(invalid="ignore", divide="ignore")`` as ``kinematics.solve`` does.
+    """
     b_start, c_start = known[loop.start[0]], loop.start[1]
     b_end, c_end = known[loop.end[0]], loop.end[1]
     legs = loop.legs
@@ -200,8 +204,7 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
     columns += [next(u for leg, u in zip(legs, units) if leg.slide == name) for name in loop.slides]
     c1, c2 = columns
     det = cross(c1, c2)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        transmission = np.abs(det) / (np.abs(c1) * np.abs(c2))
+    transmission = np.abs(det) / (np.abs(c1) * np.abs(c2))
     rhs = b_end.velocity(c_end) - b_start.velocity(c_start)
     for leg, v in zip(legs, values):
         if leg.ref not in coef:
@@ -245,8 +248,7 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
 
 def _solve2(loop: DyadLoop, c1, c2, det, rhs) -> dict:
     """Cramer's rule for x₁·c₁ + x₂·c₂ = rhs (complex columns = two real equations)."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return dict(zip(loop.unknowns, (cross(rhs, c2) / det, cross(c1, rhs) / det)))
+    return dict(zip(loop.unknowns, (cross(rhs, c2) / det, cross(c1, rhs) / det)))
 
 
 def _follow(ref: Body, offset: float) -> Body:
@@ -276,26 +278,30 @@ def _place(loop: DyadLoop, bodies: dict[int, Body], start, increments: list, fie
 def _close(loop: DyadLoop, coef: dict, slide_dir: dict, d) -> tuple[dict, dict]:
     """Closed-form position of the loop; NaN where it cannot close."""
     sign = loop.branch
-    with np.errstate(invalid="ignore", divide="ignore"):
-        if len(loop.free) == 2:  # RRR: |A₁|, |A₂| and the distance |D| make a triangle
-            (m1, a1), (m2, a2) = coef.items()
-            r1, r2, dist = abs(a1), abs(a2), np.abs(d)
-            x = (r1 * r1 - r2 * r2 + dist * dist) / (2 * dist)
-            h = np.sqrt(r1 * r1 - x * x)
-            u1 = d / dist * (x + 1j * sign * h)
-            return {m1: np.angle(u1 / a1), m2: np.angle((d - u1) / a2)}, {}
-        if len(loop.free) == 1:
-            (m, a), = coef.items()
-            (name, (ref, direction)), = slide_dir.items()
-            if ref is None:  # RRP: e^{iθ}·A + s·E = D, E known
-                p = (d * np.conj(direction)).real
-                s = p + sign * np.sqrt(p * p - np.abs(d) ** 2 + abs(a) ** 2)
-                return {m: np.angle((d - s * direction) / a)}, {name: s}
-            # RPR: e^{iθ}·(A + s·B) = D
-            p = (a * np.conj(direction)).real
-            s = -p + sign * np.sqrt(p * p - abs(a) ** 2 + np.abs(d) ** 2)
-            return {m: np.angle(d / (a + s * direction))}, {name: s}
-        (n1, (_, e1)), (n2, (_, e2)) = slide_dir.items()  # PRP, RPP: s₁·E₁ + s₂·E₂ = D
-        det = cross(e1, e2)
-        det = np.where(np.abs(det) < 1e-12, np.nan, det)
-        return {}, {n1: cross(d, e2) / det, n2: cross(e1, d) / det}
+    if len(loop.free) == 2:  # RRR: |A₁|, |A₂| and the distance |D| make a triangle
+        (m1, a1), (m2, a2) = coef.items()
+        r1, r2, dist = abs(a1), abs(a2), np.abs(d)
+        x = (r1 * r1 - r2 * r2 + dist * dist) / (2 * dist)
+        h = _root(r1 * r1 - x * x, r1 * r1)
+        u1 = d / dist * (x + 1j * sign * h)
+        return {m1: np.angle(u1 / a1), m2: np.angle((d - u1) / a2)}, {}
+    if len(loop.free) == 1:
+        (m, a), = coef.items()
+        (name, (ref, direction)), = slide_dir.items()
+        if ref is None:  # RRP: e^{iθ}·A + s·E = D, E known
+            p = (d * np.conj(direction)).real
+            s = p + sign * _root(p * p - np.abs(d) ** 2 + abs(a) ** 2, abs(a) ** 2)
+            return {m: np.angle((d - s * direction) / a)}, {name: s}
+        # RPR: e^{iθ}·(A + s·B) = D
+        p = (a * np.conj(direction)).real
+        s = -p + sign * _root(p * p - abs(a) ** 2 + np.abs(d) ** 2, np.abs(d) ** 2)
+        return {m: np.angle(d / (a + s * direction))}, {name: s}
+    (n1, (_, e1)), (n2, (_, e2)) = slide_dir.items()  # PRP, RPP: s₁·E₁ + s₂·E₂ = D
+    det = cross(e1, e2)
+    det = np.where(np.abs(det) < 1e-12, np.nan, det)
+    return {}, {n1: cross(d, e2) / det, n2: cross(e1, d) / det}
+
+
+def _root(disc, scale):
+    """√disc, taking a round-off negative at an exact limit position as zero (not open)."""
+    return np.sqrt(np.where((disc < 0) & (disc > -1e-12 * scale), 0.0, disc))

@@ -45,7 +45,7 @@ class Group:
         return {m for p in self.pairs for m in p.members if m not in own}
 
     def label(self) -> str:
-        return f"{ROMAN[self.cls]}({','.join(str(m) for m in self.members)})"
+        return f"{ROMAN[self.cls]}({','.join(str(m) for m in sorted(self.members))})"
 
 
 @dataclass(frozen=True)

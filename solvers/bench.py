@@ -1,0 +1,110 @@
+"""Benchmark: the kinematics core against a plain closed-form numpy four-bar.
+
+The baseline below is written independently of the solver (textbook formulas in real
+arithmetic), so it measures both speed and accuracy. It applies to scenes whose first
+Assur group is an RRR dyad hung on the crank and the frame — a four-bar.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from mechanisms.schema import DRIVER, FRAME, Scene
+
+from .kinematics import solve
+from .structure import decompose
+
+
+def fourbar_closed_form(o, d, r2, r3, r4, phi2, omega2, eps2, sign):
+    """φ₃, φ₄, ω₃, ω₄, ε₃, ε₄ of the loop O→A→C = O→D→C, C on the side ``sign``."""
+    ax, ay = o[0] + r2 * np.cos(phi2), o[1] + r2 * np.sin(phi2)
+    dx, dy = d[0] - ax, d[1] - ay
+    dist = np.hypot(dx, dy)
+    x = (r3 * r3 - r4 * r4 + dist * dist) / (2 * dist)
+    h = np.sqrt(r3 * r3 - x * x)
+    cx = ax + (x * dx - sign * h * dy) / dist
+    cy = ay + (x * dy + sign * h * dx) / dist
+    phi3 = np.arctan2(cy - ay, cx - ax)
+    phi4 = np.arctan2(cy - d[1], cx - d[0])
+    s2, c2, s3, c3, s4, c4 = (np.sin(phi2), np.cos(phi2), np.sin(phi3), np.cos(phi3),
+                              np.sin(phi4), np.cos(phi4))
+    # [[−r3·s3, r4·s4], [r3·c3, −r4·c4]]·(ω3, ω4) = (r2·ω2·s2, −r2·ω2·c2)
+    det = r3 * r4 * (s3 * c4 - c3 * s4)
+    bx, by = r2 * omega2 * s2, -r2 * omega2 * c2
+    w3 = (bx * (-r4 * c4) - (r4 * s4) * by) / det
+    w4 = ((-r3 * s3) * by - bx * (r3 * c3)) / det
+    # the same matrix for ε3, ε4
+    bx = r2 * eps2 * s2 + r2 * omega2**2 * c2 + r3 * w3**2 * c3 - r4 * w4**2 * c4
+    by = -r2 * eps2 * c2 + r2 * omega2**2 * s2 + r3 * w3**2 * s3 - r4 * w4**2 * s4
+    e3 = (bx * (-r4 * c4) - (r4 * s4) * by) / det
+    e4 = ((-r3 * s3) * by - bx * (r3 * c3)) / det
+    return phi3, phi4, w3, w4, e3, e4
+
+
+def _fourbar_of(scene: Scene):
+    """The four-bar data of the scene's first group, or None when it is not a four-bar."""
+    group = decompose(scene).groups[0]
+    if group.kind != "RRR" or group.attached_to != {FRAME, DRIVER}:
+        return None
+    crank = scene.members[DRIVER]
+    j, k = group.members
+    if group.pairs[0].other(j) != DRIVER:
+        j, k = k, j
+    pin = scene.pair(scene.driver.pair).point
+    a_name = next(p.point for p in scene.pairs if set(p.members) == {DRIVER, j})
+    joint = next(p.point for p in scene.pairs if set(p.members) == {j, k})
+    d_name = next(p.point for p in scene.pairs if set(p.members) == {k, FRAME})
+    coupler, rocker = scene.members[j], scene.members[k]
+    return dict(o=(scene.frame[pin].real, scene.frame[pin].imag),
+                d=(scene.frame[d_name].real, scene.frame[d_name].imag),
+                r2=abs(crank.points[a_name]), r3=abs(coupler.points[joint] - coupler.points[a_name]),
+                r4=abs(rocker.points[joint] - rocker.points[d_name]), members=(j, k),
+                point=joint)
+
+
+def _median_time(fn, repeat: int) -> float:
+    fn()
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return float(np.median(times))
+
+
+def run_bench(scene: Scene, steps: int, repeat: int) -> str:
+    phi = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
+    structure = decompose(scene)
+    lines = [f"benchmark: {scene.id}, N = {steps} positions, median of {repeat} runs"]
+    fb = _fourbar_of(scene)
+    wanted = [fb["point"]] if fb else None
+    t_pos = _median_time(lambda: solve(scene, phi, order=0, points=wanted, structure=structure), repeat)
+    t_all = _median_time(lambda: solve(scene, phi, order=2, points=wanted, structure=structure), repeat)
+    lines.append(f"  mehanizmi, positions only          {t_pos * 1e3:8.3f} ms")
+    lines.append(f"  mehanizmi, pos + vel + acc         {t_all * 1e3:8.3f} ms")
+    if fb is None:
+        lines.append("  (no closed-form baseline: the first group is not a four-bar on the crank)")
+        return "\n".join(lines)
+    motion = solve(scene, phi, order=2, points=wanted, structure=structure)
+    j, k = fb["members"]
+    sign = 1.0
+    args = (fb["o"], fb["d"], fb["r2"], fb["r3"], fb["r4"], phi, scene.driver.speed,
+            scene.driver.accel)
+    ref = fourbar_closed_form(*args, sign)
+    if np.nanmax(np.abs(np.angle(np.exp(1j * (ref[0] - motion.members[j].angle))))) > 1e-6:
+        sign = -1.0
+        ref = fourbar_closed_form(*args, sign)
+    t_base = _median_time(lambda: fourbar_closed_form(*args, sign), repeat)
+    ours = (motion.members[j].angle, motion.members[k].angle, motion.members[j].omega,
+            motion.members[k].omega, motion.members[j].epsilon, motion.members[k].epsilon)
+    ok = np.isfinite(ref[0]) & motion.feasible
+    err_angle = max(np.max(np.abs(np.angle(np.exp(1j * (a - b)))[ok])) for a, b in zip(ref[:2], ours[:2]))
+    err_rate = max(np.max(np.abs(a - b)[ok] / np.max(np.abs(a[ok]))) for a, b in zip(ref[2:], ours[2:]))
+    lines.append(f"  closed-form numpy baseline         {t_base * 1e3:8.3f} ms  (pos + vel + acc)")
+    lines.append(f"  ratio mehanizmi / baseline         {t_all / t_base:8.2f}×   (target ≤ 1.5×)")
+    lines.append(f"  max error vs baseline: angles {err_angle:.2e} rad, ω and ε {err_rate:.2e} "
+                 f"(relative to their peak); {int(ok.sum())} of {steps} positions feasible")
+    return "\n".join(lines)

@@ -1,0 +1,170 @@
+"""Command line: ``python -m solvers list | solve | structure | bench`` (see docs/cli.md).
+
+Exit codes: 0 done; 2 the scene or the command is wrong; 3 the mechanism cannot be in
+the asked position (the message says why and where it can be).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+
+import numpy as np
+
+from mechanisms import SceneError, Scene, load_any, load_preset, preset_ids
+
+from .diagnostics import explain_open, explain_singular
+from .kinematics import SINGULAR, Motion, solve
+from .structure import StructureError, decompose
+
+
+class Unsolvable(Exception):
+    """The mechanism cannot be in the requested position."""
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        return args.run(args)
+    except (SceneError, StructureError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except Unsolvable as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 3
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="python -m solvers",
+                                     description="Mehanizmi solvers from the command line.")
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("list", help="list the presets with their titles")
+    p.set_defaults(run=_list)
+    p = sub.add_parser("solve", help="positions, velocities and accelerations at one instant")
+    p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")
+    p.add_argument("--at", type=float, help="driver coordinate: φ₂ in degrees for a rotating "
+                                             "driver, s in metres for a linear one")
+    p.add_argument("--json", action="store_true", help="print JSON (SI units)")
+    p.set_defaults(run=_solve)
+    p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
+    p.add_argument("scene")
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(run=_structure)
+    p = sub.add_parser("bench", help="time the solver against a closed-form numpy baseline")
+    p.add_argument("scene")
+    p.add_argument("--steps", type=int, default=3600, help="positions per cycle")
+    p.add_argument("--repeat", type=int, default=200, help="timed repetitions (median is shown)")
+    p.set_defaults(run=_bench)
+    return parser
+
+
+def _list(args) -> int:
+    for pid in preset_ids():
+        scene = load_preset(pid)
+        print(f"{pid:28s} {scene.title}")
+    return 0
+
+
+def _driver_value(scene: Scene, at: float | None) -> float:
+    if at is None:
+        return scene.driver.at
+    return math.radians(at) if scene.driver.kind == "rotating" else at
+
+
+def solve_instant(scene: Scene, at: float | None) -> Motion:
+    """Solve one instant, or raise ``Unsolvable`` with the reason."""
+    value = _driver_value(scene, at)
+    structure = decompose(scene)
+    motion = solve(scene, value, structure=structure)
+    for issue in motion.issues:
+        if issue.problem == "open":
+            raise Unsolvable(explain_open(scene, value, issue, structure))
+    for name, t in motion.transmission.items():
+        if t[0] < SINGULAR:
+            raise Unsolvable(explain_singular(scene, value, name, 1.0 / max(t[0], 1e-300)))
+    return motion
+
+
+def motion_json(motion: Motion) -> dict:
+    """The instant's results in the documented JSON layout (first position of ``motion``)."""
+    scene = motion.scene
+    at = motion.at[0]
+    return {
+        "scene": scene.id,
+        "at": math.degrees(at) if scene.driver.kind == "rotating" else at,
+        "points": {name: {"x": p.x[0], "y": p.y[0], "vx": p.vx[0], "vy": p.vy[0],
+                          "ax": p.ax[0], "ay": p.ay[0]}
+                   for name, p in sorted(motion.points.items())},
+        "members": {str(n): {"angle_deg": math.degrees(m.angle[0]) % 360.0,
+                             "omega": m.omega[0], "epsilon": m.epsilon[0]}
+                    for n, m in sorted(motion.members.items())},
+        "sliders": {name: {"s": s.s[0], "v": s.v[0], "a": s.a[0],
+                           "coriolis": [s.coriolis[0].real, s.coriolis[0].imag]}
+                    for name, s in motion.sliders.items()},
+    }
+
+
+def _solve(args) -> int:
+    scene = load_any(args.scene)
+    motion = solve_instant(scene, args.at)
+    for issue in motion.issues:
+        print(f"warning: {explain_singular(scene, motion.at[0], issue.group, issue.worst_condition)}",
+              file=sys.stderr)
+    data = _clean(motion_json(motion))
+    if args.json:
+        print(json.dumps(data, indent=1, ensure_ascii=False))
+        return 0
+    unit = "°" if scene.driver.kind == "rotating" else " m"
+    print(f"{scene.id} — {scene.title}\nat {data['at']:.6g}{unit}\n")
+    print(f"{'point':6s}{'x m':>11s}{'y m':>11s}{'vx m/s':>11s}{'vy m/s':>11s}"
+          f"{'ax m/s²':>11s}{'ay m/s²':>11s}")
+    for name, p in data["points"].items():
+        print(f"{name:6s}" + "".join(f"{p[k]:11.4f}" for k in ("x", "y", "vx", "vy", "ax", "ay")))
+    print(f"\n{'member':8s}{'angle °':>11s}{'ω rad/s':>11s}{'ε rad/s²':>11s}")
+    for n, m in data["members"].items():
+        print(f"{n:8s}{m['angle_deg']:11.3f}{m['omega']:11.4f}{m['epsilon']:11.3f}")
+    if data["sliders"]:
+        print(f"\n{'slider':10s}{'s m':>11s}{'v m/s':>11s}{'a m/s²':>11s}{'Coriolis m/s²':>24s}")
+        for name, s in data["sliders"].items():
+            cor = f"({s['coriolis'][0]:.3f}, {s['coriolis'][1]:.3f})"
+            print(f"{name:10s}{s['s']:11.4f}{s['v']:11.4f}{s['a']:11.3f}{cor:>24s}")
+    return 0
+
+
+def _clean(value):
+    """Plain floats for JSON; -0.0 printed as 0.0."""
+    if isinstance(value, dict):
+        return {k: _clean(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_clean(v) for v in value]
+    if isinstance(value, (float, np.floating)):
+        return float(value) + 0.0
+    return value
+
+
+def _structure(args) -> int:
+    scene = load_any(args.scene)
+    st = decompose(scene)
+    data = {"dof": st.dof, "members": st.moving_members, "lower_pairs": st.lower_pairs,
+            "higher_pairs": st.higher_pairs,
+            "groups": [{"members": sorted(g.members), "class": g.cls, "kind": g.kind,
+                        "order": g.order} for g in st.groups],
+            "formula": st.formula}
+    if args.json:
+        print(json.dumps(data, indent=1, ensure_ascii=False))
+    else:
+        print(f"n = {st.moving_members} moving members, p₅ = {st.lower_pairs}, "
+              f"p₄ = {st.higher_pairs}, W = 3n − 2p₅ − p₄ = {st.dof}")
+        print(f"structural formula: {st.formula}")
+        for g in st.groups:
+            print(f"  class {g.cls} group of members {sorted(g.members)}: {g.kind}, order {g.order}")
+    return 0
+
+
+def _bench(args) -> int:
+    from .bench import run_bench
+
+    print(run_bench(load_any(args.scene), args.steps, args.repeat))
+    return 0

@@ -1,0 +1,81 @@
+"""Plain-language explanations of where and why a linkage cannot move or is near a dead centre."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from mechanisms.schema import Scene
+
+from .kinematics import GroupIssue, solve
+from .structure import Structure, decompose
+
+WHY_OPEN = {
+    "RRR": "the two links cannot reach each other: the distance between the group's outer "
+           "joints is larger than the sum, or smaller than the difference, of their lengths",
+    "RRP": "the link cannot reach the slider's guide line",
+    "RPR": "the guide line cannot pass through the joint it must slide over",
+    "PRP": "the two guides are parallel, so the common joint has no intersection to sit on",
+    "RPP": "the two guides are parallel, so the slider has no intersection to sit on",
+}
+
+
+def format_driver(scene: Scene, value: float) -> str:
+    if scene.driver.kind == "rotating":
+        return f"φ₂ = {math.degrees(value):.1f}°"
+    return f"s = {value:.4g} m"
+
+
+def format_range(scene: Scene, lo: float, hi: float) -> str:
+    if scene.driver.kind == "rotating":
+        return f"φ₂ ∈ [{math.degrees(lo):.1f}°, {math.degrees(hi):.1f}°]"
+    return f"s ∈ [{lo:.4g} m, {hi:.4g} m]"
+
+
+def sweep_values(scene: Scene, steps: int = 3600) -> np.ndarray:
+    """Driver values for a survey: a full turn, or ± the sum of link lengths for a slider."""
+    if scene.driver.kind == "rotating":
+        return np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
+    reach = sum(scene.lengths.values()) + max(abs(z) for z in scene.frame.values())
+    return np.linspace(scene.driver.at - reach, scene.driver.at + reach, steps)
+
+
+def dead_zones(scene: Scene, structure: Structure | None = None,
+               steps: int = 3600) -> list[GroupIssue]:
+    """Where each group cannot close over a full survey of the driver (positions only)."""
+    motion = solve(scene, sweep_values(scene, steps), order=0, structure=structure)
+    return [issue for issue in motion.issues if issue.problem == "open"]
+
+
+def explain_open(scene: Scene, at: float, issue: GroupIssue,
+                 structure: Structure | None = None) -> str:
+    """Why the group fails at ``at``, and the driver ranges where the mechanism cannot go."""
+    structure = structure or decompose(scene)
+    zones = [z for z in dead_zones(scene, structure) if z.group == issue.group]
+    where = "; ".join(format_range(scene, lo, hi) for z in zones for lo, hi in _wrap(scene, z.ranges))
+    text = (f"group II({issue.group}) {issue.kind} cannot close at {format_driver(scene, at)}: "
+            f"{WHY_OPEN.get(issue.kind, 'its loop does not close')}.")
+    if where:
+        rotating = scene.driver.kind == "rotating"
+        what = "over the whole cycle the crank cannot pass" if rotating else "the slider cannot reach"
+        survey = " (surveyed in 0.1° steps)" if rotating else ""
+        text += f" Roughly, {what} {where}{survey}."
+    return text
+
+
+def _wrap(scene: Scene, ranges: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """Join a range that runs over 360° with the one that starts at 0°."""
+    if scene.driver.kind != "rotating" or len(ranges) < 2:
+        return ranges
+    step = 2 * math.pi / 3600
+    (a0, b0), (a1, b1) = ranges[0], ranges[-1]
+    if a0 < step / 2 and b1 > 2 * math.pi - 1.5 * step:
+        return [(a1 - 2 * math.pi, b0)] + ranges[1:-1]
+    return ranges
+
+
+def explain_singular(scene: Scene, at: float, group: str, condition: float) -> str:
+    return (f"group II({group}) is at or near a dead centre at {format_driver(scene, at)} "
+            f"(condition number {condition:.3g}): velocities and accelerations grow without "
+            "bound there")
