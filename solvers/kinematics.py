@@ -17,7 +17,7 @@ import numpy as np
 from mechanisms.schema import DRIVER, FRAME, Scene
 
 from .loops import build_loop, solve_dyad
-from .state import Body
+from .state import Body, unit
 from .structure import Structure, decompose
 
 NEAR_SINGULAR = 1e-3  # |sin| of the angle between a group's unknown directions
@@ -100,16 +100,14 @@ def driver_body(scene: Scene, at: np.ndarray) -> Body:
     pair = scene.pair(d.pair)
     n = np.ones_like(at)
     if d.kind == "rotating":
-        pivot = scene.frame[pair.point]
-        return Body(theta=at, rot=np.exp(1j * at), z0=pivot * n, omega=d.speed * n, v0=0j * n,
-                    epsilon=d.accel * n, a0=0j * n)
+        return Body(rot=unit(at), z=scene.frame[pair.point], ref=0j, omega=d.speed, v=0j,
+                    epsilon=d.accel, a=0j, angle=at)
     direction = cmath.exp(1j * pair.angle)
     theta = pair.lock
     rot = cmath.exp(1j * theta)
     local = scene.members[DRIVER].points[pair.point]
-    origin = scene.frame[pair.through] + at * direction - local * rot
-    return Body(theta=theta * n, rot=rot * n, z0=origin, omega=0.0 * n, v0=d.speed * direction * n,
-                epsilon=0.0 * n, a0=d.accel * direction * n)
+    return Body(rot=rot, z=scene.frame[pair.through] + at * direction, ref=local, omega=0.0,
+                v=d.speed * direction, epsilon=0.0, a=d.accel * direction, angle=theta)
 
 
 def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = None,
@@ -183,7 +181,7 @@ def _slider(scene: Scene, pair, bodies: dict[int, Body], order: int, n) -> Slide
     if order < 1:
         return SliderMotion(s)
     # the guide's coincident point (B₄ in the method of extension) sits under the slider
-    local_on_guide = (z_slider - guide.z0) / guide.rot
+    local_on_guide = guide.ref + (z_slider - guide.z) / guide.rot
     v_rel = slider.velocity(scene_local_p) - guide.velocity(local_on_guide)
     v = (np.conj(direction) * v_rel).real * n
     if order < 2:

@@ -25,7 +25,7 @@ import numpy as np
 
 from mechanisms.schema import Pair, Scene
 
-from .state import Body
+from .state import Body, cplx
 from .structure import Group, StructureError
 
 
@@ -187,20 +187,19 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
             coef[leg.ref] += leg.local
         else:
             d = d - leg.local * known[leg.ref].rot
-    theta, s = _close(loop, coef, slide_dir, d)
-    closed = np.all([np.isfinite(x) for x in (*theta.values(), *s.values())], axis=0)
+    rots, s, closed = _close(loop, coef, slide_dir, d)
 
-    refs = {m: Body(theta=t, rot=np.exp(1j * t), z0=0j) for m, t in theta.items()}
+    refs = {m: Body(rot=r) for m, r in rots.items()}
     ref_of = {**known, **refs}
     units = [leg.local * ref_of[leg.ref].rot for leg in legs]
     values = [u * s[leg.slide] if leg.slide else u for leg, u in zip(legs, units)]
     bodies = {m: _follow(ref_of[ref], off) for m, (ref, off) in loop.angle_of.items()}
-    _place(loop, bodies, b_start.position(c_start), values, "z0")
+    _place(loop, bodies, b_start.position(c_start), values, "z")
     if order < 1:
         return DyadSolution(bodies, None, closed)
 
     # velocities — equation B: the unknown rates multiply two fixed columns
-    columns = [sum((1j * v for leg, v in zip(legs, values) if leg.ref == m), 0j) for m in loop.free]
+    columns = [_sum(1j * v for leg, v in zip(legs, values) if leg.ref == m) for m in loop.free]
     columns += [next(u for leg, u in zip(legs, units) if leg.slide == name) for name in loop.slides]
     c1, c2 = columns
     det = cross(c1, c2)
@@ -213,51 +212,61 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
     for m in loop.free:
         refs[m].omega = rate[m]
     sdot = {name: rate[name] for name in loop.slides}
-    dvalues = [1j * ref_of[leg.ref].omega * v + (sdot[leg.slide] * u if leg.slide else 0)
-               for leg, u, v in zip(legs, units, values)]
+    turn = [1j * ref_of[leg.ref].omega * v for leg, v in zip(legs, values)]
+    dvalues = [t + sdot[leg.slide] * u if leg.slide else t for leg, u, t in zip(legs, units, turn)]
     for m, (ref, _) in loop.angle_of.items():
         bodies[m].omega = ref_of[ref].omega
-    _place(loop, bodies, b_start.velocity(c_start), dvalues, "v0")
+    _place(loop, bodies, b_start.velocity(c_start), dvalues, "v")
     if order < 2:
         return DyadSolution(bodies, transmission, closed)
 
     # accelerations — equation C, with the Coriolis term 2·ṡ·ω for every slide
     rhs = b_end.acceleration(c_end) - b_start.acceleration(c_start)
-    for leg, u, v in zip(legs, units, values):
+    for leg, u, v, t in zip(legs, units, values, turn):
         w = ref_of[leg.ref].omega
-        rhs = rhs + (w * w) * v
+        known_part = 1j * w * t  # −ω²·L
         if leg.slide:
-            rhs = rhs - 2j * sdot[leg.slide] * w * u
+            known_part = known_part + 2 * sdot[leg.slide] * (1j * w * u)
         if leg.ref not in coef:
-            rhs = rhs - 1j * known[leg.ref].epsilon * v
+            known_part = known_part + 1j * known[leg.ref].epsilon * v
+        rhs = rhs - known_part
     acc = _solve2(loop, c1, c2, det, rhs)
     for m in loop.free:
         refs[m].epsilon = acc[m]
     ddvalues = []
-    for leg, u, v in zip(legs, units, values):
+    for leg, u, v, t in zip(legs, units, values, turn):
         r = ref_of[leg.ref]
-        a = (1j * r.epsilon - r.omega * r.omega) * v
+        a = 1j * r.epsilon * v + 1j * r.omega * t
         if leg.slide:
             a = a + (acc[leg.slide] + 2j * sdot[leg.slide] * r.omega) * u
         ddvalues.append(a)
     for m, (ref, _) in loop.angle_of.items():
         bodies[m].epsilon = ref_of[ref].epsilon
-    _place(loop, bodies, b_start.acceleration(c_start), ddvalues, "a0")
+    _place(loop, bodies, b_start.acceleration(c_start), ddvalues, "a")
     return DyadSolution(bodies, transmission, closed)
+
+
+def _sum(terms):
+    total = 0j
+    for t in terms:
+        total = total + t
+    return total
 
 
 def _solve2(loop: DyadLoop, c1, c2, det, rhs) -> dict:
     """Cramer's rule for x₁·c₁ + x₂·c₂ = rhs (complex columns = two real equations)."""
-    return dict(zip(loop.unknowns, (cross(rhs, c2) / det, cross(c1, rhs) / det)))
+    inv = 1.0 / det
+    return dict(zip(loop.unknowns, (cross(rhs, c2) * inv, cross(c1, rhs) * inv)))
 
 
 def _follow(ref: Body, offset: float) -> Body:
     """A member whose angle is ``ref``'s angle plus a constant offset."""
-    return Body(theta=ref.theta + offset, rot=ref.rot * cmath.exp(1j * offset), z0=0j)
+    return Body(rot=ref.rot * cmath.exp(1j * offset) if offset else ref.rot)
 
 
 def _place(loop: DyadLoop, bodies: dict[int, Body], start, increments: list, field: str) -> None:
-    """Walk the loop, summing leg values, and set each member's origin where it is visited."""
+    """Walk the loop summing leg values (or their rates); the point where a member is first
+    visited becomes its reference point, with that position, velocity or acceleration."""
     total, k, placed = start, 0, set()
     for st in loop.steps:
         if isinstance(st, Leg):
@@ -265,41 +274,41 @@ def _place(loop: DyadLoop, bodies: dict[int, Body], start, increments: list, fie
             k += 1
         elif st.member not in placed:
             placed.add(st.member)
-            b = bodies[st.member]
-            lr = st.local * b.rot
-            if field == "z0":
-                b.z0 = total - lr
-            elif field == "v0":
-                b.v0 = total - 1j * b.omega * lr
-            else:
-                b.a0 = total - (1j * b.epsilon - b.omega * b.omega) * lr
+            bodies[st.member].ref = st.local
+            setattr(bodies[st.member], field, total)
 
 
-def _close(loop: DyadLoop, coef: dict, slide_dir: dict, d) -> tuple[dict, dict]:
-    """Closed-form position of the loop; NaN where it cannot close."""
+def _close(loop: DyadLoop, coef: dict, slide_dir: dict, d) -> tuple[dict, dict, np.ndarray]:
+    """Closed-form position of the loop: e^{iθ} of the free members, the slides, and
+    where the loop closes (elsewhere the values are NaN)."""
     sign = loop.branch
     if len(loop.free) == 2:  # RRR: |A₁|, |A₂| and the distance |D| make a triangle
         (m1, a1), (m2, a2) = coef.items()
-        r1, r2, dist = abs(a1), abs(a2), np.abs(d)
-        x = (r1 * r1 - r2 * r2 + dist * dist) / (2 * dist)
-        h = _root(r1 * r1 - x * x, r1 * r1)
-        u1 = d / dist * (x + 1j * sign * h)
-        return {m1: np.angle(u1 / a1), m2: np.angle((d - u1) / a2)}, {}
+        r1, r2 = abs(a1), abs(a2)
+        dx, dy = d.real, d.imag
+        dist2 = dx * dx + dy * dy
+        inv = 1.0 / np.sqrt(dist2)
+        x = (r1 * r1 - r2 * r2 + dist2) * (0.5 * inv)
+        h = _root(r1 * r1 - x * x, r1 * r1) * sign
+        ex, ey = dx * inv, dy * inv
+        u1 = cplx(ex * x - ey * h, ey * x + ex * h)  # d/|d|·(x + i·h)
+        return {m1: u1 * (1 / a1), m2: (d - u1) * (1 / a2)}, {}, np.isfinite(h)
     if len(loop.free) == 1:
         (m, a), = coef.items()
         (name, (ref, direction)), = slide_dir.items()
         if ref is None:  # RRP: e^{iθ}·A + s·E = D, E known
             p = (d * np.conj(direction)).real
             s = p + sign * _root(p * p - np.abs(d) ** 2 + abs(a) ** 2, abs(a) ** 2)
-            return {m: np.angle((d - s * direction) / a)}, {name: s}
+            return {m: (d - s * direction) * (1 / a)}, {name: s}, np.isfinite(s)
         # RPR: e^{iθ}·(A + s·B) = D
         p = (a * np.conj(direction)).real
         s = -p + sign * _root(p * p - abs(a) ** 2 + np.abs(d) ** 2, np.abs(d) ** 2)
-        return {m: np.angle(d / (a + s * direction))}, {name: s}
+        return {m: d / (a + s * direction)}, {name: s}, np.isfinite(s)
     (n1, (_, e1)), (n2, (_, e2)) = slide_dir.items()  # PRP, RPP: s₁·E₁ + s₂·E₂ = D
     det = cross(e1, e2)
     det = np.where(np.abs(det) < 1e-12, np.nan, det)
-    return {}, {n1: cross(d, e2) / det, n2: cross(e1, d) / det}
+    s1 = cross(d, e2) / det
+    return {}, {n1: s1, n2: cross(e1, d) / det}, np.isfinite(s1)
 
 
 def _root(disc, scale):
