@@ -51,17 +51,21 @@ class Body:
             self.angle = np.angle(self.rot)
         return self.angle
 
+    def _at_ref(self, local) -> bool:
+        return np.isscalar(local) and local == self.ref
+
     def arm(self, local: complex):
         """(c − ref)·rot: the world vector from the reference point to point ``c``."""
         return (local - self.ref) * self.rot
 
+    # ``local`` may also be an array: a coincident point that moves along the member
     def position(self, local: complex):
-        return self.z if local == self.ref else self.z + self.arm(local)
+        return self.z if self._at_ref(local) else self.z + self.arm(local)
 
     def velocity(self, local: complex):
-        return self.v if local == self.ref else self.v + 1j * self.omega * self.arm(local)
+        return self.v if self._at_ref(local) else self.v + 1j * self.omega * self.arm(local)
 
     def acceleration(self, local: complex):
-        if local == self.ref:
+        if self._at_ref(local):
             return self.a
         return self.a + (1j * self.epsilon - self.omega * self.omega) * self.arm(local)

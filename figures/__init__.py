@@ -1,0 +1,1 @@
+"""Plotly figure builders: pure functions from solver results to figures (no solving here)."""
