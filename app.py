@@ -18,7 +18,7 @@ def home() -> None:
                 st.caption("Coming soon.")
 
 
-st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide")
-pages = [st.Page(home, title="Home", icon="🏠", default=True)]
+st.set_page_config(page_title="Mehanizmi", page_icon=":material/settings:", layout="wide")
+pages = [st.Page(home, title="Home", icon=":material/home:", default=True)]
 pages += [st.Page(c.file, title=c.title, icon=c.icon) for c in CHAPTERS]
 st.navigation(pages).run()

@@ -17,9 +17,9 @@ def member_colour(number: int) -> str:
 def plane_layout(fig: go.Figure, title: str, height: int = 560) -> go.Figure:
     """Equal scaling on x and y (a linkage must not look sheared), metres on both axes."""
     fig.update_layout(
-        title=title, height=height, margin=dict(l=10, r=10, t=50, b=10),
+        title=title, height=height, margin=dict(l=10, r=10, t=50, b=80),
         plot_bgcolor="white", showlegend=True,
-        legend=dict(orientation="h", yanchor="bottom", y=1.0, xanchor="right", x=1.0),
+        legend=dict(orientation="h", yanchor="top", y=-0.12, xanchor="left", x=0.0),
     )
     fig.update_xaxes(title_text="x [m]", showgrid=True, gridcolor="#eeeeee", zeroline=False)
     fig.update_yaxes(title_text="y [m]", showgrid=True, gridcolor="#eeeeee", zeroline=False,

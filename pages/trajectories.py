@@ -8,7 +8,7 @@ from pages.shared import cycle, driver_slider, preset
 from solvers import solve
 from solvers.diagnostics import explain_open
 
-st.title("〰️ 1 · Trajectories")
+st.title(":material/timeline: 1 · Trajectories")
 left, right = st.columns([1, 3])
 with left:
     preset_id = st.selectbox("Scene", preset_ids(), key="scene",

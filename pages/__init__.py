@@ -1,0 +1,16 @@
+"""The chapter pages, routed by ``st.navigation`` in app.py.
+
+Streamlit still treats a folder named ``pages/`` beside the main script as a legacy
+multipage app until the first script run calls ``st.navigation``. When a user's very first
+visit opens a chapter URL directly, that run would show the legacy page list (every module
+in this folder). So the first import in the process switches the legacy mode off and reruns
+once, and the rerun goes through app.py's navigation like every later one.
+"""
+
+import streamlit as st
+from streamlit.runtime.pages_manager import PagesManager
+from streamlit.runtime.scriptrunner import get_script_run_ctx
+
+if PagesManager.uses_pages_directory and get_script_run_ctx() is not None:
+    PagesManager.uses_pages_directory = False
+    st.rerun()

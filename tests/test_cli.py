@@ -1,0 +1,82 @@
+"""The command line as a user runs it: ``python -m solvers …`` in a fresh process."""
+
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from .test_reference_tasks import fourbar_2_1
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def run(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "solvers", *args], cwd=ROOT,
+                          capture_output=True, text=True, timeout=60)
+
+
+def test_solve_json_has_exactly_the_documented_layout_and_exact_values():
+    out = run("solve", "analitika-2.1", "--json")
+    assert out.returncode == 0, out.stderr
+    data = json.loads(out.stdout)
+    assert list(data) == ["scene", "at", "points", "members", "sliders"]
+    assert data["scene"] == "analitika-2.1" and data["at"] == 55.0
+    assert set(data["points"]) == {"O", "A", "B", "C", "D", "E", "M"}
+    assert set(data["points"]["M"]) == {"x", "y", "vx", "vy", "ax", "ay"}
+    assert set(data["members"]["4"]) == {"angle_deg", "omega", "epsilon"}
+    assert set(data["sliders"]["5-6"]) == {"s", "v", "a", "coriolis"}
+    ref = fourbar_2_1(math.radians(55))
+    assert data["members"]["4"]["omega"] == pytest.approx(ref["w4"], rel=1e-10)
+    assert data["members"]["3"]["angle_deg"] == pytest.approx(math.degrees(ref["phi3"]) % 360, abs=1e-9)
+
+
+def test_solve_task_2_2_at_the_books_instant():
+    out = run("solve", "analitika-2.2", "--json")
+    data = json.loads(out.stdout)
+    assert data["at"] == 0.17
+    assert data["points"]["A"]["vy"] == pytest.approx(3.0)
+    assert data["sliders"]["1-2"]["v"] == pytest.approx(3.0)
+    assert data["members"]["3"]["angle_deg"] == pytest.approx(349.6, abs=0.1)  # not the book's 195.22
+
+
+def test_a_position_the_crank_cannot_reach_fails_with_the_reason():
+    out = run("solve", "analitika-2.1", "--at", "140")
+    assert out.returncode == 3
+    assert out.stdout == ""
+    assert "cannot close at φ₂ = 140.0°" in out.stderr and "cannot pass" in out.stderr
+    assert "Traceback" not in out.stderr
+
+
+def test_bad_scene_file_and_unknown_preset_exit_2_without_traceback(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[frame]\nO = [0, 0]\n[members.3]\npoints = ["A", "B"]\nlength = -0.2\n')
+    out = run("solve", str(bad))
+    assert out.returncode == 2 and "bad.toml: members.3.length must be > 0, got -0.2" in out.stderr
+    missing = run("solve", "no-such-preset")
+    assert missing.returncode == 2 and "known presets" in missing.stderr
+    assert "Traceback" not in out.stderr + missing.stderr
+
+
+def test_list_and_structure():
+    out = run("list")
+    assert "analitika-2.1" in out.stdout and "Four-bar" in out.stdout
+    data = json.loads(run("structure", "analitika-2.2", "--json").stdout)
+    assert data["dof"] == 1 and data["formula"] == "I(1,2) → II(3,4) → II(5,6)"
+    assert [g["kind"] for g in data["groups"]] == ["RPR", "RRP"]
+
+
+def test_text_output_has_units():
+    out = run("solve", "slider-crank", "--at", "90")
+    assert out.returncode == 0
+    assert "vx m/s" in out.stdout and "ε rad/s²" in out.stdout
+
+
+def test_bench_prints_the_ratio_and_the_error():
+    out = run("bench", "four-bar-crank-rocker", "--steps", "360", "--repeat", "5")
+    assert out.returncode == 0, out.stderr
+    assert "ratio mehanizmi / baseline" in out.stdout
+    error = float(out.stdout.split("angles ")[1].split(" rad")[0])
+    assert error < 1e-12
