@@ -9,6 +9,7 @@ only the groups those points depend on.
 from __future__ import annotations
 
 import cmath
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -42,11 +43,16 @@ class PointMotion:
 
 @dataclass
 class MemberMotion:
-    """A member's angle (rad, from +x, counter-clockwise), ω (rad/s) and ε (rad/s²)."""
+    """A member's rotation e^{iθ}, angle θ (rad, from +x, counter-clockwise; computed when
+    first read), ω (rad/s) and ε (rad/s²)."""
 
-    angle: np.ndarray
+    rot: np.ndarray
     omega: np.ndarray | None = None
     epsilon: np.ndarray | None = None
+
+    @functools.cached_property
+    def angle(self) -> np.ndarray:
+        return np.angle(self.rot)
 
 
 @dataclass
@@ -146,7 +152,9 @@ def _solve_groups(scene, structure, groups, at, order, points) -> Motion:
 
 
 def _collect(scene, structure, at, order, bodies, feasible, transmission, issues, wanted) -> Motion:
-    n = np.ones_like(at)
+    def n(value):  # constants (the frame, a constant ω₂) as read-only arrays over the cycle
+        return value if np.shape(value) == at.shape else np.broadcast_to(value, at.shape)
+
     point_motion: dict[str, PointMotion] = {}
     for number in [FRAME, *scene.members]:
         if number not in bodies:
@@ -156,14 +164,14 @@ def _collect(scene, structure, at, order, bodies, feasible, transmission, issues
             if name in point_motion or (wanted is not None and name not in wanted):
                 continue
             point_motion[name] = PointMotion(
-                z=b.position(local) * n,
-                v=b.velocity(local) * n if order >= 1 else None,
-                a=b.acceleration(local) * n if order >= 2 else None)
+                z=n(b.position(local)),
+                v=n(b.velocity(local)) if order >= 1 else None,
+                a=n(b.acceleration(local)) if order >= 2 else None)
     member_motion = {
-        m: MemberMotion(np.asarray(b.theta) * n,
-                        b.omega * n if order >= 1 else None,
-                        b.epsilon * n if order >= 2 else None)
+        m: MemberMotion(n(b.rot), n(b.omega) if order >= 1 else None,
+                        n(b.epsilon) if order >= 2 else None)
         for m, b in bodies.items() if m != FRAME}
+    member_motion[DRIVER].angle = n(bodies[DRIVER].theta)  # φ₂ exactly as given
     sliders = {p.name: _slider(scene, p, bodies, order, n) for p in scene.pairs
                if p.kind == "prismatic" and p.members[0] in bodies and p.members[1] in bodies}
     return Motion(scene, structure, at, order, point_motion, member_motion, sliders, feasible,
@@ -177,18 +185,18 @@ def _slider(scene: Scene, pair, bodies: dict[int, Body], order: int, n) -> Slide
     scene_local_p = scene.points_of(pair.members[1])[pair.point]
     direction = cmath.exp(1j * pair.angle) * guide.rot
     z_slider = slider.position(scene_local_p)
-    s = (np.conj(direction) * (z_slider - guide.position(scene_local_t))).real * n
+    s = n((np.conj(direction) * (z_slider - guide.position(scene_local_t))).real)
     if order < 1:
         return SliderMotion(s)
     # the guide's coincident point (B₄ in the method of extension) sits under the slider
     local_on_guide = guide.ref + (z_slider - guide.z) / guide.rot
     v_rel = slider.velocity(scene_local_p) - guide.velocity(local_on_guide)
-    v = (np.conj(direction) * v_rel).real * n
+    v = n((np.conj(direction) * v_rel).real)
     if order < 2:
         return SliderMotion(s, v)
-    coriolis = 2j * guide.omega * v * direction * n
+    coriolis = n(2j * guide.omega * v * direction)
     a_rel = slider.acceleration(scene_local_p) - guide.acceleration(local_on_guide) - coriolis
-    return SliderMotion(s, v, (np.conj(direction) * a_rel).real * n, coriolis)
+    return SliderMotion(s, v, n((np.conj(direction) * a_rel).real), coriolis)
 
 
 def _ranges(at: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
@@ -197,8 +205,8 @@ def _ranges(at: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
     if idx.size == 0:
         return []
     breaks = np.flatnonzero(np.diff(idx) > 1)
-    starts = np.r_[idx[0], idx[breaks + 1]]
-    ends = np.r_[idx[breaks], idx[-1]]
+    starts = [idx[0], *idx[breaks + 1]]
+    ends = [*idx[breaks], idx[-1]]
     return [(float(at[a]), float(at[b])) for a, b in zip(starts, ends)]
 
 
