@@ -1,18 +1,45 @@
-"""Kinematics benchmark: the solver against a closed-form numpy four-bar, N = 12 … 3600.
+"""Kinematics benchmark: the solver against a closed-form numpy four-bar at 12 … 3600 positions.
 
-Run: .venv/bin/python bench/kinematics.py   (prints time, ratio and error per resolution)
+    .venv/bin/python bench/kinematics.py           # print the table
+    .venv/bin/python bench/kinematics.py --write   # and regenerate docs/performance.md
 """
 
+import platform
 import sys
+from datetime import date
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
 
 from mechanisms import load_preset  # noqa: E402
-from solvers.bench import run_bench  # noqa: E402
+from solvers.bench import measure  # noqa: E402
+
+SCENES = ("four-bar-crank-rocker", "analitika-2.1", "analitika-2.2")
+STEPS = (12, 72, 360, 3600)
+
+
+def table() -> str:
+    rows = ["| scene | positions | positions only, ms | pos + vel + acc, ms | closed form, ms | ratio | max angle error, rad | max ω, ε error (rel.) |",
+            "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for preset in SCENES:
+        for steps in STEPS:
+            r = measure(load_preset(preset), steps, repeat=300)
+            base = "—" if r.baseline_ms is None else f"{r.baseline_ms:.3f}"
+            ratio = "—" if r.ratio is None else f"{r.ratio:.2f}×"
+            err_a = "—" if r.angle_error is None else f"{r.angle_error:.1e}"
+            err_r = "—" if r.rate_error is None else f"{r.rate_error:.1e}"
+            rows.append(f"| {preset} | {steps} | {r.positions_ms:.3f} | {r.full_ms:.3f} | {base} | "
+                        f"{ratio} | {err_a} | {err_r} |")
+    return "\n".join(rows)
+
 
 if __name__ == "__main__":
-    for preset in ("analitika-2.1", "four-bar-crank-rocker", "analitika-2.2"):
-        for steps in (12, 72, 360, 3600):
-            print(run_bench(load_preset(preset), steps, repeat=200 if steps < 3600 else 300))
-            print()
+    text = table()
+    print(text)
+    if "--write" in sys.argv:
+        doc = ROOT / "docs" / "performance.md"
+        head, _, _ = doc.read_text().partition("<!-- kinematics table -->")
+        doc.write_text(f"{head}<!-- kinematics table -->\n"
+                       f"Measured {date.today()} on {platform.machine()}, Python "
+                       f"{platform.python_version()}, median of 300 runs:\n\n{text}\n")

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import time
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -24,7 +25,7 @@ def fourbar_closed_form(o, d, r2, r3, r4, phi2, omega2, eps2, sign):
     dx, dy = d[0] - ax, d[1] - ay
     dist = np.hypot(dx, dy)
     x = (r3 * r3 - r4 * r4 + dist * dist) / (2 * dist)
-    h = np.sqrt(r3 * r3 - x * x)
+    h = np.sqrt(np.where(r3 * r3 >= x * x, r3 * r3 - x * x, np.nan))
     cx = ax + (x * dx - sign * h * dy) / dist
     cy = ay + (x * dy + sign * h * dx) / dist
     phi3 = np.arctan2(cy - ay, cx - ax)
@@ -75,36 +76,65 @@ def _median_time(fn, repeat: int) -> float:
     return float(np.median(times))
 
 
-def run_bench(scene: Scene, steps: int, repeat: int) -> str:
+@dataclass
+class BenchResult:
+    scene: str
+    steps: int
+    repeat: int
+    positions_ms: float
+    full_ms: float
+    feasible: int
+    baseline_ms: float | None = None  # closed-form four-bar, pos + vel + acc
+    angle_error: float | None = None  # rad
+    rate_error: float | None = None  # ω and ε, relative to their peak
+
+    @property
+    def ratio(self) -> float | None:
+        return None if self.baseline_ms is None else self.full_ms / self.baseline_ms
+
+
+def measure(scene: Scene, steps: int, repeat: int) -> BenchResult:
+    """Time the solver over ``steps`` positions and compare it with the closed form."""
     phi = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
     structure = decompose(scene)
-    lines = [f"benchmark: {scene.id}, N = {steps} positions, median of {repeat} runs"]
     fb = _fourbar_of(scene)
     wanted = [fb["point"]] if fb else None
     t_pos = _median_time(lambda: solve(scene, phi, order=0, points=wanted, structure=structure), repeat)
     t_all = _median_time(lambda: solve(scene, phi, order=2, points=wanted, structure=structure), repeat)
-    lines.append(f"  mehanizmi, positions only          {t_pos * 1e3:8.3f} ms")
-    lines.append(f"  mehanizmi, pos + vel + acc         {t_all * 1e3:8.3f} ms")
-    if fb is None:
-        lines.append("  (no closed-form baseline: the first group is not a four-bar on the crank)")
-        return "\n".join(lines)
     motion = solve(scene, phi, order=2, points=wanted, structure=structure)
+    result = BenchResult(scene.id, steps, repeat, t_pos * 1e3, t_all * 1e3, int(motion.feasible.sum()))
+    if fb is None:
+        return result
     j, k = fb["members"]
-    sign = 1.0
     args = (fb["o"], fb["d"], fb["r2"], fb["r3"], fb["r4"], phi, scene.driver.speed,
             scene.driver.accel)
-    ref = fourbar_closed_form(*args, sign)
-    if np.nanmax(np.abs(np.angle(np.exp(1j * (ref[0] - motion.members[j].angle))))) > 1e-6:
-        sign = -1.0
-        ref = fourbar_closed_form(*args, sign)
-    t_base = _median_time(lambda: fourbar_closed_form(*args, sign), repeat)
     ours = (motion.members[j].angle, motion.members[k].angle, motion.members[j].omega,
             motion.members[k].omega, motion.members[j].epsilon, motion.members[k].epsilon)
+    sign = 1.0
+    ref = fourbar_closed_form(*args, sign)
+    if np.nanmax(np.abs(np.angle(np.exp(1j * (ref[0] - ours[0]))))) > 1e-6:
+        sign = -1.0
+        ref = fourbar_closed_form(*args, sign)
+    result.baseline_ms = _median_time(lambda: fourbar_closed_form(*args, sign), repeat) * 1e3
     ok = np.isfinite(ref[0]) & motion.feasible
-    err_angle = max(np.max(np.abs(np.angle(np.exp(1j * (a - b)))[ok])) for a, b in zip(ref[:2], ours[:2]))
-    err_rate = max(np.max(np.abs(a - b)[ok] / np.max(np.abs(a[ok]))) for a, b in zip(ref[2:], ours[2:]))
-    lines.append(f"  closed-form numpy baseline         {t_base * 1e3:8.3f} ms  (pos + vel + acc)")
-    lines.append(f"  ratio mehanizmi / baseline         {t_all / t_base:8.2f}×   (target ≤ 1.5×)")
-    lines.append(f"  max error vs baseline: angles {err_angle:.2e} rad, ω and ε {err_rate:.2e} "
-                 f"(relative to their peak); {int(ok.sum())} of {steps} positions feasible")
+    result.angle_error = max(float(np.max(np.abs(np.angle(np.exp(1j * (a - b)))[ok])))
+                             for a, b in zip(ref[:2], ours[:2]))
+    result.rate_error = max(float(np.max(np.abs(a - b)[ok]) / np.max(np.abs(a[ok])))
+                            for a, b in zip(ref[2:], ours[2:]))
+    return result
+
+
+def run_bench(scene: Scene, steps: int, repeat: int) -> str:
+    """The benchmark as text, for the command line."""
+    r = measure(scene, steps, repeat)
+    lines = [f"benchmark: {r.scene}, N = {r.steps} positions, median of {r.repeat} runs",
+             f"  mehanizmi, positions only          {r.positions_ms:8.3f} ms",
+             f"  mehanizmi, pos + vel + acc         {r.full_ms:8.3f} ms"]
+    if r.baseline_ms is None:
+        lines.append("  (no closed-form baseline: the first group is not a four-bar on the crank)")
+        return "\n".join(lines)
+    lines += [f"  closed-form numpy baseline         {r.baseline_ms:8.3f} ms  (pos + vel + acc)",
+              f"  ratio mehanizmi / baseline         {r.ratio:8.2f}×   (target ≤ 1.5×)",
+              f"  max error vs baseline: angles {r.angle_error:.2e} rad, ω and ε {r.rate_error:.2e} "
+              f"(relative to their peak); {r.feasible} of {r.steps} positions feasible"]
     return "\n".join(lines)
