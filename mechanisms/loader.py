@@ -172,6 +172,7 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         book=_book(raw, r),
     )
     _check_every_member_is_joined(scene, r)
+    _check_shared_points_are_joints(scene, r)
     return scene
 
 
@@ -350,36 +351,33 @@ def _assembly(raw: dict, r: _Reader, members: dict[int, Member]) -> dict[tuple[i
     return out
 
 
-def _forces(raw: dict, r: _Reader, members: dict[int, Member], frame: dict) -> tuple[Force, ...]:
-    specs = raw.get("forces", [])
+def _tables(raw: dict, r: _Reader, name: str, allowed: set[str]):
+    """(where, spec) for each table of the array ``[[name]]``, keys checked."""
+    specs = raw.get(name, [])
     if not isinstance(specs, list):
-        raise r.fail("forces", "must be an array of tables [[forces]]")
-    forces = []
+        raise r.fail(name, f"must be an array of tables [[{name}]]")
     for i, spec in enumerate(specs):
-        where = f"forces[{i}]"
-        spec = r.check_keys(spec, FORCE_KEYS, where)
+        where = f"{name}[{i}]"
+        yield where, r.check_keys(spec, allowed, where)
+
+
+def _forces(raw: dict, r: _Reader, members: dict[int, Member], frame: dict) -> tuple[Force, ...]:
+    forces = []
+    for where, spec in _tables(raw, r, "forces", FORCE_KEYS):
         member = _member_ref(spec.get("member"), r, f"{where}.member", members)
         follows = spec.get("follows_member", False)
         if not isinstance(follows, bool):
             raise r.fail(f"{where}.follows_member", f"must be true or false, got {follows!r}")
-        forces.append(Force(member, _point_ref(spec.get("point"), member, r, f"{where}.point",
-                                               frame, members),
-                            r.number(spec, "magnitude", where),
+        point = _point_ref(spec.get("point"), member, r, f"{where}.point", frame, members)
+        forces.append(Force(member, point, r.number(spec, "magnitude", where),
                             math.radians(r.number(spec, "angle", where, default=0.0)), follows))
     return tuple(forces)
 
 
 def _moments(raw: dict, r: _Reader, members: dict[int, Member]) -> tuple[Moment, ...]:
-    specs = raw.get("moments", [])
-    if not isinstance(specs, list):
-        raise r.fail("moments", "must be an array of tables [[moments]]")
-    out = []
-    for i, spec in enumerate(specs):
-        where = f"moments[{i}]"
-        spec = r.check_keys(spec, MOMENT_KEYS, where)
-        out.append(Moment(_member_ref(spec.get("member"), r, f"{where}.member", members),
-                          r.number(spec, "value", where)))
-    return tuple(out)
+    return tuple(Moment(_member_ref(spec.get("member"), r, f"{where}.member", members),
+                        r.number(spec, "value", where))
+                 for where, spec in _tables(raw, r, "moments", MOMENT_KEYS))
 
 
 def _book(raw: dict, r: _Reader) -> dict[str, float]:
@@ -387,6 +385,28 @@ def _book(raw: dict, r: _Reader) -> dict[str, float]:
     if not isinstance(table, dict):
         raise r.fail("book", "must be a table of printed values, e.g. \"members.4.omega\" = 8.148")
     return {k: r.number(table, k, "book") for k in table}
+
+
+def _check_shared_points_are_joints(scene: Scene, r: _Reader) -> None:
+    """A letter on several members names one place: those members must be pinned there."""
+    owners: dict[str, list[int]] = {}
+    for number in [1, *scene.members]:
+        for name in scene.points_of(number):
+            owners.setdefault(name, []).append(number)
+    for name, members in owners.items():
+        group = {members[0]}
+        grown = True
+        while grown:
+            grown = False
+            for p in scene.pairs:
+                if p.kind == "revolute" and p.point == name and len(group & set(p.members)) == 1:
+                    group |= set(p.members)
+                    grown = True
+        loose = [m for m in members if m not in group]
+        if loose:
+            raise r.fail(f"members.{loose[0]}.points",
+                         f"uses the letter {name} of member {members[0]} but no revolute pair at "
+                         f"{name} joins them; give the point its own letter")
 
 
 def _check_every_member_is_joined(scene: Scene, r: _Reader) -> None:

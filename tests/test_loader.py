@@ -101,3 +101,15 @@ def test_overriding_a_length_moves_extra_points_with_the_link():
     longer = scene.with_(lengths={3: 1.2})
     assert longer.members[3].points["B"] == pytest.approx(0.9)
     assert scene.members[3].points["B"] == pytest.approx(0.45)
+
+
+def test_a_letter_on_two_members_must_be_a_joint():
+    text = fourbar_text().replace('length = 0.3\n', 'length = 0.3\nextra = { A = [0.1, 0.1] }\n')
+    with pytest.raises(SceneError, match="members.4.points uses the letter A of member 2"):
+        parse_scene(text)
+
+
+def test_loads_are_read_in_si_units():
+    (force,) = load_preset("slider-crank").forces
+    assert force.member == 4 and force.point == "B" and force.magnitude == 200.0
+    assert force.angle == pytest.approx(3.141592653589793)
