@@ -121,15 +121,15 @@ def _solve(args) -> int:
     print(f"{'point':6s}{'x m':>11s}{'y m':>11s}{'vx m/s':>11s}{'vy m/s':>11s}"
           f"{'ax m/s²':>11s}{'ay m/s²':>11s}")
     for name, p in data["points"].items():
-        print(f"{name:6s}" + "".join(f"{p[k]:11.4f}" for k in ("x", "y", "vx", "vy", "ax", "ay")))
+        print(f"{name:6s}" + "".join(f" {p[k]:10.5g}" for k in ("x", "y", "vx", "vy", "ax", "ay")))
     print(f"\n{'member':8s}{'angle °':>11s}{'ω rad/s':>11s}{'ε rad/s²':>11s}")
     for n, m in data["members"].items():
-        print(f"{n:8s}{m['angle_deg']:11.3f}{m['omega']:11.4f}{m['epsilon']:11.3f}")
+        print(f"{n:8s}{m['angle_deg']:11.3f} {m['omega']:10.5g} {m['epsilon']:10.5g}")
     if data["sliders"]:
         print(f"\n{'slider':10s}{'s m':>11s}{'v m/s':>11s}{'a m/s²':>11s}{'Coriolis m/s²':>24s}")
         for name, s in data["sliders"].items():
-            cor = f"({s['coriolis'][0]:.3f}, {s['coriolis'][1]:.3f})"
-            print(f"{name:10s}{s['s']:11.4f}{s['v']:11.4f}{s['a']:11.3f}{cor:>24s}")
+            cor = f"({s['coriolis'][0]:.5g}, {s['coriolis'][1]:.5g})"
+            print(f"{name:10s} {s['s']:10.5g} {s['v']:10.5g} {s['a']:10.5g} {cor:>23s}")
     return 0
 
 

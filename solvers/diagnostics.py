@@ -23,11 +23,13 @@ WHY_OPEN = {
 
 def format_driver(scene: Scene, value: float) -> str:
     if scene.driver.kind == "rotating":
-        return f"φ₂ = {math.degrees(value):.1f}°"
-    return f"s = {value:.4g} m"
+        return f"φ₂ = {math.degrees(value):.6g}°"
+    return f"s = {value:.6g} m"
 
 
 def format_range(scene: Scene, lo: float, hi: float) -> str:
+    if lo == hi:
+        return format_driver(scene, lo)
     if scene.driver.kind == "rotating":
         return f"φ₂ ∈ [{math.degrees(lo):.1f}°, {math.degrees(hi):.1f}°]"
     return f"s ∈ [{lo:.4g} m, {hi:.4g} m]"

@@ -46,7 +46,7 @@ def test_a_position_the_crank_cannot_reach_fails_with_the_reason():
     out = run("solve", "analitika-2.1", "--at", "140")
     assert out.returncode == 3
     assert out.stdout == ""
-    assert "cannot close at φ₂ = 140.0°" in out.stderr and "cannot pass" in out.stderr
+    assert "cannot close at φ₂ = 140°" in out.stderr and "cannot pass" in out.stderr
     assert "Traceback" not in out.stderr
 
 
