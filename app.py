@@ -2,23 +2,25 @@
 
 import streamlit as st
 
-from pages.chapters import CHAPTERS
+from ui.chapters import CHAPTERS
+from ui.i18n import language_picker, t
+from ui.present import projector_switch
 
 
 def home() -> None:
     st.title("Mehanizmi")
-    st.write("Kinematics and dynamics of planar mechanisms for the course *Mechanisms of "
-             "Agricultural Machines*: every number computed exactly, every figure drawn from "
-             "that solution.")
+    st.write(t("app.intro"))
     for chapter in CHAPTERS:
         with st.container(border=True):
-            st.page_link(chapter.file, label=chapter.title, icon=chapter.icon)
-            st.write(chapter.summary)
+            st.page_link(chapter.file, label=t(chapter.title), icon=chapter.icon)
+            st.write(t(chapter.summary))
             if not chapter.ready:
-                st.caption("Coming soon.")
+                st.caption(t("app.coming_soon"))
 
 
 st.set_page_config(page_title="Mehanizmi", page_icon=":material/settings:", layout="wide")
-pages = [st.Page(home, title="Home", icon=":material/home:", default=True)]
-pages += [st.Page(c.file, title=c.title, icon=c.icon) for c in CHAPTERS]
+language_picker()
+projector_switch()
+pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
+pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in CHAPTERS]
 st.navigation(pages).run()

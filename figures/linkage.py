@@ -1,84 +1,95 @@
-"""The mechanism drawn at one instant, with the paths of its points over the cycle."""
+"""The mechanism drawn at one position: members, pivots, sliders with their guides, letters.
+
+Every call returns the same number of traces in the same order for any position of a
+scene, so animation frames can replace them one for one. Traces are plain dicts.
+"""
 
 from __future__ import annotations
 
 import cmath
+from collections.abc import Callable
 
 import numpy as np
-import plotly.graph_objects as go
 
 from mechanisms.schema import FRAME, Scene
 from solvers.kinematics import Motion
 
-from .style import FRAME_COLOUR, PATH_COLOUR, member_colour, plane_layout
+from .style import FRAME_COLOUR, NORMAL, Look, member_colour
+
+Text = Callable[..., str]  # the page's translator: t(key, **values)
+
+
+def scatter(**properties) -> dict:
+    """A scatter trace as a plain dict (see figures/raw.py for why not ``go.Scatter``)."""
+    return {"type": "scatter", **properties}
 
 
 def _xy(points: list[complex]) -> tuple[list[float], list[float]]:
     return [p.real for p in points], [p.imag for p in points]
 
 
-def mechanism_traces(scene: Scene, positions: dict[str, complex],
-                     rotations: dict[int, complex]) -> list[go.Scatter]:
-    """Members as lines (a ternary member as a closed outline), pivots, sliders and guides."""
+def pose(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, complex]]:
+    """Positions of the points and rotations e^{iθ} of the members at one position."""
+    positions = {n: complex(p.z[index]) for n, p in motion.points.items()}
+    rotations = {m: complex(mm.rot[index]) for m, mm in motion.members.items()}
+    rotations[FRAME] = 1 + 0j
+    return positions, rotations
+
+
+def typical_length(scene: Scene) -> float:
+    lengths = list(scene.lengths.values()) or [1.0]
+    return float(np.median(lengths))
+
+
+def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dict[int, complex],
+                     t: Text, look: Look = NORMAL, opacity: float = 1.0,
+                     legend: bool = True, letters: bool = True) -> list[dict]:
+    """Members as thick lines (a member with three or more points as a closed outline),
+    frame pivots as triangles, sliders as squares on dotted guide lines, point letters."""
     traces = []
     for number, member in scene.members.items():
         pts = [positions[p] for p in member.points if p in positions]
         if len(pts) > 2:
             pts = pts + pts[:1]
         x, y = _xy(pts)
-        traces.append(go.Scatter(
-            x=x, y=y, mode="lines+markers", name=f"{number} {member.label}".strip(),
-            line=dict(color=member_colour(number), width=4), marker=dict(size=7),
-            hoverinfo="name"))
+        label = f"{number} {member.label}".strip()
+        traces.append(scatter(
+            x=x, y=y, mode="lines+markers", name=label, legendgroup=str(number),
+            showlegend=legend, opacity=opacity, hoverinfo="name",
+            line=dict(color=member_colour(number), width=4 * look.line),
+            marker=dict(size=7 * look.line)))
+    guide_x: list = []
+    guide_y: list = []
+    blocks = []
+    reach = 0.6 * typical_length(scene)
     for pair in scene.pairs:
-        if pair.kind != "prismatic" or pair.members[0] not in rotations:
+        if pair.kind != "prismatic":
             continue
-        guide, slider = pair.members
         at = positions.get(pair.point)
-        if at is None:
+        rot = rotations.get(pair.members[0])
+        if at is None or rot is None:
             continue
-        direction = cmath.exp(1j * pair.angle) * rotations[guide]
-        ends = [at - 0.6 * _scale(scene) * direction, at + 0.6 * _scale(scene) * direction]
-        x, y = _xy(ends)
-        traces.append(go.Scatter(x=x, y=y, mode="lines", showlegend=False, hoverinfo="skip",
-                                 line=dict(color=member_colour(guide) if guide != FRAME
-                                           else FRAME_COLOUR, width=1.5, dash="dot")))
-        traces.append(go.Scatter(x=[at.real], y=[at.imag], mode="markers", showlegend=False,
-                                 hoverinfo="skip", marker=dict(symbol="square", size=14,
-                                                               color="rgba(0,0,0,0)",
-                                                               line=dict(color=member_colour(slider), width=2))))
-    fixed = [positions[p] for p in scene.frame if p in positions]
-    x, y = _xy(fixed)
-    traces.append(go.Scatter(x=x, y=y, mode="markers", name="1 frame",
-                             marker=dict(symbol="triangle-up", size=14, color=FRAME_COLOUR)))
-    names = sorted(positions)
+        direction = cmath.exp(1j * pair.angle) * rot
+        x, y = _xy([at - reach * direction, at + reach * direction])
+        guide_x += x + [None]
+        guide_y += y + [None]
+        blocks.append(at)
+    traces.append(scatter(x=guide_x, y=guide_y, mode="lines", showlegend=False, hoverinfo="skip",
+                             opacity=opacity, line=dict(color=FRAME_COLOUR, width=1.5 * look.line,
+                                                        dash="dot")))
+    x, y = _xy(blocks)
+    traces.append(scatter(x=x, y=y, mode="markers", showlegend=False, hoverinfo="skip",
+                             opacity=opacity, marker=dict(symbol="square-open", size=16 * look.line,
+                                                          color=FRAME_COLOUR,
+                                                          line=dict(width=2 * look.line))))
+    x, y = _xy([positions[p] for p in scene.frame if p in positions])
+    traces.append(scatter(x=x, y=y, mode="markers", name=t("fig.frame"), showlegend=legend,
+                             opacity=opacity, hoverinfo="skip",
+                             marker=dict(symbol="triangle-up", size=14 * look.line,
+                                         color=FRAME_COLOUR)))
+    names = sorted(positions) if letters else []
     x, y = _xy([positions[n] for n in names])
-    traces.append(go.Scatter(x=x, y=y, mode="text", text=names, textposition="top right",
-                             showlegend=False, hoverinfo="skip", textfont=dict(size=14)))
+    traces.append(scatter(x=x, y=y, mode="text", text=names, textposition="top right",
+                             showlegend=False, hoverinfo="skip",
+                             textfont=dict(size=look.font + 2, color="black")))
     return traces
-
-
-def _scale(scene: Scene) -> float:
-    """A typical length of the scene (for drawing guide lines)."""
-    lengths = list(scene.lengths.values()) or [1.0]
-    return float(np.median(lengths))
-
-
-def instant_figure(cycle: Motion, now: Motion, paths: list[str], title: str) -> go.Figure:
-    """The mechanism at the instant ``now`` (first position), over the paths of ``cycle``.
-
-    Where the mechanism cannot be, the paths have gaps; an instant that cannot be
-    reached draws the paths alone.
-    """
-    fig = go.Figure()
-    for name in paths:
-        p = cycle.points[name]
-        fig.add_trace(go.Scatter(x=p.x, y=p.y, mode="lines", name=f"path of {name}",
-                                 line=dict(color=PATH_COLOUR, width=1.5), hoverinfo="skip"))
-    if now.feasible[0]:
-        positions = {n: complex(p.z[0]) for n, p in now.points.items()}
-        rot = {m: cmath.exp(1j * float(mm.angle[0])) for m, mm in now.members.items()}
-        rot[FRAME] = 1 + 0j
-        for trace in mechanism_traces(now.scene, positions, rot):
-            fig.add_trace(trace)
-    return plane_layout(fig, title)

@@ -1,27 +1,50 @@
-"""Shared look of every figure: colours per member, fonts, equal axes in metres."""
+"""Shared look of every figure: colours per member, fonts, equal axes in metres.
+
+``Look`` carries what projector mode changes: bigger type, thicker lines, a taller figure.
+"""
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import plotly.graph_objects as go
 
 MEMBER_COLOURS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
                   "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"]
 FRAME_COLOUR = "#444444"
-PATH_COLOUR = "#888888"
+PATH_COLOURS = ["#0b6e4f", "#c44900", "#6a4c93", "#1982c4", "#8a5a44", "#ff595e"]
+
+
+@dataclass(frozen=True)
+class Look:
+    font: int = 14
+    line: float = 1.0  # multiplies every line width and marker size
+    height: int = 600
+
+
+NORMAL = Look()
+PROJECTOR = Look(font=24, line=2.0, height=860)
 
 
 def member_colour(number: int) -> str:
     return MEMBER_COLOURS[(number - 2) % len(MEMBER_COLOURS)]
 
 
-def plane_layout(fig: go.Figure, title: str, height: int = 560) -> go.Figure:
+def path_colour(index: int) -> str:
+    return PATH_COLOURS[index % len(PATH_COLOURS)]
+
+
+def plane_layout(fig: go.Figure, title: str, look: Look = NORMAL, x_title: str = "x [m]",
+                 y_title: str = "y [m]") -> go.Figure:
     """Equal scaling on x and y (a linkage must not look sheared), metres on both axes."""
     fig.update_layout(
-        title=title, height=height, margin=dict(l=10, r=10, t=50, b=80),
-        plot_bgcolor="white", showlegend=True,
-        legend=dict(orientation="h", yanchor="top", y=-0.12, xanchor="left", x=0.0),
+        title=dict(text=title, font=dict(size=look.font + 4)), height=look.height,
+        margin=dict(l=10, r=10, t=60, b=10), plot_bgcolor="white",
+        font=dict(size=look.font, color="black"), showlegend=True,
+        legend=dict(orientation="h", yanchor="top", y=-0.1, xanchor="left", x=0.0),
     )
-    fig.update_xaxes(title_text="x [m]", showgrid=True, gridcolor="#eeeeee", zeroline=False)
-    fig.update_yaxes(title_text="y [m]", showgrid=True, gridcolor="#eeeeee", zeroline=False,
-                     scaleanchor="x", scaleratio=1)
+    grid = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, linecolor="black",
+                mirror=True, showline=True)
+    fig.update_xaxes(title_text=x_title, **grid)
+    fig.update_yaxes(title_text=y_title, scaleanchor="x", scaleratio=1, **grid)
     return fig

@@ -14,13 +14,14 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from .schema import DRIVER, FRAME, Driver, Force, Member, Moment, Pair, Scene
+from .schema import DRIVER, FRAME, Driver, Force, Member, Moment, Pair, Scene, Travel
 
 PRESETS = Path(__file__).parent / "presets"
 MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before parsing
 
 TOP_KEYS = {"id", "kind", "title", "source", "note", "gravity", "pairs", "frame", "driver",
-            "members", "assembly", "forces", "moments", "book"}
+            "members", "assembly", "forces", "moments", "book", "travel"}
+TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
 PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "angle",
              "slider_angle"}
@@ -171,6 +172,8 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         gravity=r.number(raw, "gravity", "", default=0.0, non_negative=True),
         book=_book(raw, r),
     )
+    if "travel" in raw:
+        scene = scene.with_(travel=_travel(raw, r, driver))
     _check_every_member_is_joined(scene, r)
     _check_shared_points_are_joints(scene, r)
     return scene
@@ -378,6 +381,15 @@ def _moments(raw: dict, r: _Reader, members: dict[int, Member]) -> tuple[Moment,
     return tuple(Moment(_member_ref(spec.get("member"), r, f"{where}.member", members),
                         r.number(spec, "value", where))
                  for where, spec in _tables(raw, r, "moments", MOMENT_KEYS))
+
+
+def _travel(raw: dict, r: _Reader, driver: Driver) -> Travel:
+    spec = r.check_keys(raw["travel"], TRAVEL_KEYS, "travel")
+    if driver.kind != "rotating":
+        raise r.fail("travel", "needs a rotating driver (the crank is chain-driven)")
+    return Travel(*(r.number(spec, k, "travel", positive=True)
+                    for k in ("speed", "wheel_radius", "sprocket_wheel", "sprocket_crank")),
+                  angle=math.radians(r.number(spec, "angle", "travel", default=0.0)))
 
 
 def _book(raw: dict, r: _Reader) -> dict[str, float]:

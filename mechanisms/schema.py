@@ -11,6 +11,7 @@ SI units throughout; angles in radians (the TOML file uses degrees).
 from __future__ import annotations
 
 import dataclasses
+import math
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -109,6 +110,36 @@ class Moment:
 
 
 @dataclass(frozen=True)
+class Travel:
+    """A machine that travels while its linkage runs, the crank chain-driven from the ground
+    wheel (the hay tedder of task 1.3): ω_t = v_R/R_t, ω₂ = ω_b = ω_t·R_a/R_b."""
+
+    speed: float  # v_R, m/s
+    wheel_radius: float  # R_t, m
+    sprocket_wheel: float  # R_a, m (on the ground wheel's shaft)
+    sprocket_crank: float  # R_b, m (on the crank's shaft)
+    angle: float = 0.0  # direction of travel, rad from +x
+
+    @property
+    def wheel_omega(self) -> float:
+        return self.speed / self.wheel_radius
+
+    @property
+    def crank_omega(self) -> float:
+        return self.wheel_omega * self.sprocket_wheel / self.sprocket_crank
+
+    @property
+    def cycle_time(self) -> float:
+        return 2 * math.pi / self.crank_omega
+
+    def step_time(self, steps: int = 12) -> float:
+        return self.cycle_time / steps
+
+    def step_distance(self, steps: int = 12) -> float:
+        return self.speed * self.step_time(steps)
+
+
+@dataclass(frozen=True)
 class Scene:
     """A linkage scene: what a TOML file under ``mechanisms/presets`` describes."""
 
@@ -125,6 +156,7 @@ class Scene:
     moments: tuple[Moment, ...] = ()
     gravity: float = 0.0  # m/s², acting along −y when > 0
     book: dict[str, float] = field(default_factory=dict)  # the book's printed values
+    travel: Travel | None = None
 
     def pair(self, name: str) -> Pair:
         for p in self.pairs:
@@ -148,9 +180,11 @@ class Scene:
         return {n: m.length for n, m in self.members.items() if m.length is not None}
 
     def with_(self, *, lengths: dict[int, float] | None = None, speed: float | None = None,
-              accel: float | None = None, at: float | None = None) -> Scene:
-        """A copy with overridden link lengths, driver speed/acceleration or instant.
+              accel: float | None = None, at: float | None = None,
+              travel: Travel | None = None) -> Scene:
+        """A copy with overridden link lengths, driver speed/acceleration, instant or travel.
 
+        With travel, ω₂ follows the chain drive (its sense stays the scene's).
         A new length scales every point of that member about its first axis point (the
         origin of its frame), so extra points such as B on member 3 keep their place
         relative to the link.
@@ -162,10 +196,13 @@ class Scene:
             points = {k: z * factor for k, z in member.points.items()}
             centre = None if member.centre is None else member.centre * factor
             members[number] = dataclasses.replace(member, points=points, centre=centre)
+        travel = travel or self.travel
+        if travel is not None:
+            speed = math.copysign(travel.crank_omega, self.driver.speed if speed is None else speed)
         driver = dataclasses.replace(
             self.driver,
             speed=self.driver.speed if speed is None else speed,
             accel=self.driver.accel if accel is None else accel,
             at=self.driver.at if at is None else at,
         )
-        return dataclasses.replace(self, members=members, driver=driver)
+        return dataclasses.replace(self, members=members, driver=driver, travel=travel)

@@ -1,5 +1,5 @@
 """Chapter page placeholder (its issue is not done yet)."""
 
-from pages.chapters import coming_soon
+from ui.chapters import coming_soon
 
 coming_soon("pages/planetary_gears.py")

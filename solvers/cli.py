@@ -112,7 +112,13 @@ def _solve(args) -> int:
     for issue in motion.issues:
         print(f"warning: {explain_singular(scene, motion.at[0], issue.group, issue.worst_condition)}",
               file=sys.stderr)
-    data = _clean(motion_json(motion))
+    data = motion_json(motion)
+    if scene.travel:
+        tr = scene.travel
+        data["travel"] = {"wheel_omega": tr.wheel_omega, "crank_omega": tr.crank_omega,
+                          "cycle_time": tr.cycle_time, "step_time": tr.step_time(),
+                          "step_distance": tr.step_distance()}
+    data = _clean(data)
     if args.json:
         print(json.dumps(data, indent=1, ensure_ascii=False))
         return 0
@@ -125,6 +131,11 @@ def _solve(args) -> int:
     print(f"\n{'member':8s}{'angle °':>11s}{'ω rad/s':>11s}{'ε rad/s²':>11s}")
     for n, m in data["members"].items():
         print(f"{n:8s}{m['angle_deg']:11.3f} {m['omega']:10.5g} {m['epsilon']:10.5g}")
+    if "travel" in data:
+        tr = data["travel"]
+        print(f"\ntravel: ω_t = {tr['wheel_omega']:.5g} s⁻¹, ω₂ = ω_b = {tr['crank_omega']:.5g} s⁻¹, "
+              f"t_c = {tr['cycle_time']:.5g} s, t_c/12 = {tr['step_time']:.5g} s, "
+              f"travel per step = {tr['step_distance']:.5g} m")
     if data["sliders"]:
         print(f"\n{'slider':10s}{'s m':>11s}{'v m/s':>11s}{'a m/s²':>11s}{'Coriolis m/s²':>24s}")
         for name, s in data["sliders"].items():

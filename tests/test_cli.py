@@ -80,3 +80,13 @@ def test_bench_prints_the_ratio_and_the_error():
     assert "ratio mehanizmi / baseline" in out.stdout
     error = float(out.stdout.split("angles ")[1].split(" rad")[0])
     assert error < 1e-12
+
+
+def test_the_hay_tedder_adds_its_travel_block():
+    data = json.loads(run("solve", "zbirka-1.3", "--json").stdout)
+    travel = data["travel"]
+    assert set(travel) == {"wheel_omega", "crank_omega", "cycle_time", "step_time", "step_distance"}
+    assert travel["wheel_omega"] == pytest.approx(3.0 / 0.32)
+    assert travel["crank_omega"] == pytest.approx(28.125)
+    assert travel["step_distance"] == pytest.approx(3.0 * 2 * math.pi / 28.125 / 12)
+    assert data["members"]["2"]["omega"] == pytest.approx(28.125)

@@ -113,3 +113,17 @@ def test_loads_are_read_in_si_units():
     (force,) = load_preset("slider-crank").forces
     assert force.member == 4 and force.point == "B" and force.magnitude == 200.0
     assert force.angle == pytest.approx(3.141592653589793)
+
+
+@pytest.mark.parametrize("pid", preset_ids())
+def test_a_downloaded_scene_uploads_again_unchanged(pid):
+    from mechanisms.writer import to_toml
+    from solvers import solve
+
+    scene = load_preset(pid).with_(lengths={2: 0.123})
+    again = parse_scene(to_toml(scene))
+    assert again.lengths == pytest.approx(scene.lengths)
+    assert again.driver.speed == pytest.approx(scene.driver.speed)
+    a, b = solve(scene), solve(again)
+    for name, p in a.points.items():
+        assert complex(b.points[name].z[0]) == pytest.approx(complex(p.z[0]), abs=1e-12)

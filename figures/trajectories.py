@@ -1,0 +1,129 @@
+"""Chapter 1 figures: the 12-step construction, smooth paths, the animation, the field path."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from solvers.kinematics import Motion
+
+from .linkage import Text, mechanism_traces, pose, scatter
+from .raw import RawFigure
+from .style import NORMAL, Look, path_colour, plane_layout
+
+TRAIL = 40  # frames a trail lasts
+SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def numbered(point: str, k: int) -> str:
+    """B₁, B₂, … as the book numbers the positions."""
+    return f"{point}{str(k).translate(SUBSCRIPTS)}"
+
+
+def _closed(z: np.ndarray) -> np.ndarray:
+    return np.append(z, z[:1])
+
+
+def construction_figure(steps: Motion, smooth: Motion | None, points: list[str], title: str,
+                        t: Text, look: Look = NORMAL) -> RawFigure:
+    """The mechanism faint in each of the 12 positions, the chosen points numbered 1…12, and
+    their paths: through the 12 positions as on paper, or (``smooth``) at a fine resolution."""
+    fig = RawFigure()
+    scene = steps.scene
+    for k in range(len(steps.at)):
+        if steps.feasible[k]:
+            positions, rotations = pose(steps, k)
+            fig.add_raw(mechanism_traces(scene, positions, rotations, t, look, opacity=0.18,
+                                            legend=False, letters=False))
+    for i, name in enumerate(points):
+        colour = path_colour(i)
+        if smooth is None:
+            z = _closed(steps.points[name].z)
+            label = t("fig.path_steps", point=name)
+        else:
+            z = _closed(smooth.points[name].z)
+            label = t("fig.path_of", point=name)
+        fig.add_raw([scatter(x=z.real, y=z.imag, mode="lines", name=label, hoverinfo="skip",
+                                 line=dict(color=colour, width=2 * look.line))])
+        z = steps.points[name].z
+        fig.add_raw([scatter(
+            x=z.real, y=z.imag, mode="markers+text", name=t("fig.positions_of", point=name),
+            text=[numbered(name, k + 1) for k in range(len(z))], textposition="top center",
+            textfont=dict(size=look.font, color=colour),
+            marker=dict(size=7 * look.line, color=colour), hoverinfo="text")])
+    if steps.feasible[0]:
+        positions, rotations = pose(steps, 0)
+        fig.add_raw(mechanism_traces(scene, positions, rotations, t, look))
+    return plane_layout(fig, title, look)
+
+
+def animation_figure(motion: Motion, order: np.ndarray, points: list[str], title: str, t: Text,
+                     look: Look = NORMAL) -> RawFigure:
+    """The mechanism moving through the positions ``order`` with the chosen points leaving
+    trails. Each frame carries only the moving traces (the mechanism and the trails)."""
+    scene = motion.scene
+    fig = RawFigure()
+    for i, name in enumerate(points):  # the whole path, faint and still
+        z = motion.points[name].z
+        fig.add_raw([scatter(x=z.real, y=z.imag, mode="lines", showlegend=False,
+                                 hoverinfo="skip", opacity=0.25,
+                                 line=dict(color=path_colour(i), width=1.5 * look.line))])
+
+    def moving(step: int) -> list[dict]:
+        k = order[step]
+        positions, rotations = pose(motion, k)
+        traces = []
+        for i, name in enumerate(points):
+            trail = motion.points[name].z[order[max(0, step - TRAIL):step + 1]]
+            traces.append(scatter(x=trail.real, y=trail.imag, mode="lines",
+                                     name=t("fig.trail_of", point=name), hoverinfo="skip",
+                                     line=dict(color=path_colour(i), width=3 * look.line)))
+        return traces + mechanism_traces(scene, positions, rotations, t, look)
+
+    indices = fig.add_raw(moving(0))
+    labels = np.degrees(motion.at[order]) % 360
+    fig.add_frames([dict(data=moving(s), traces=indices, name=str(s)) for s in range(len(order))])
+    x = np.concatenate([p.x for p in motion.points.values()])
+    y = np.concatenate([p.y for p in motion.points.values()])
+    pad = 0.05 * max(np.nanmax(x) - np.nanmin(x), np.nanmax(y) - np.nanmin(y), 1e-9)
+    fig.update_xaxes(range=[np.nanmin(x) - pad, np.nanmax(x) + pad], autorange=False)
+    fig.update_yaxes(range=[np.nanmin(y) - pad, np.nanmax(y) + pad], autorange=False)
+    frame_ms = 60
+    play = dict(frame=dict(duration=frame_ms, redraw=False), transition=dict(duration=0),
+                fromcurrent=True, mode="immediate")
+    pause = dict(frame=dict(duration=0, redraw=False), mode="immediate")
+    fig.update_layout(
+        updatemenus=[dict(type="buttons", direction="left", x=0.0, y=1.08, xanchor="left",
+                          showactive=False, font=dict(size=look.font + 2),
+                          buttons=[dict(label="▶ " + t("fig.play"), method="animate", args=[None, play]),
+                                   dict(label="⏸ " + t("fig.pause"), method="animate",
+                                        args=[[None], pause])])],
+        sliders=[dict(active=0, x=0.0, y=-0.02, len=1.0, pad=dict(t=40),
+                      currentvalue=dict(prefix="φ₂ = ", suffix="°", font=dict(size=look.font + 2)),
+                      steps=[dict(label=f"{labels[s]:.0f}", method="animate",
+                                  args=[[str(s)], dict(frame=dict(duration=0, redraw=False),
+                                                       mode="immediate")])
+                             for s in range(len(order))])])
+    plane_layout(fig, title, look)
+    fig.update_layout(legend=dict(y=-0.25))
+    return fig
+
+
+def field_figure(times: np.ndarray, field: np.ndarray, relative: np.ndarray, point: str,
+                 steps_per_cycle: int, title: str, t: Text, look: Look = NORMAL) -> RawFigure:
+    """The point's path in the field (relative path + travel) over several cycles, with the
+    12 numbered positions of each cycle; the relative loop is drawn at the start for scale."""
+    fig = RawFigure()
+    fig.add_raw([scatter(x=relative.real, y=relative.imag, mode="lines",
+                             name=t("fig.relative_path", point=point), hoverinfo="skip",
+                             line=dict(color="#999999", width=1.5 * look.line, dash="dot"))])
+    fig.add_raw([scatter(x=field.real, y=field.imag, mode="lines",
+                             name=t("fig.field_path", point=point),
+                             line=dict(color=path_colour(0), width=2.5 * look.line),
+                             customdata=times, hovertemplate="t = %{customdata:.4f} s<extra></extra>")])
+    marks = np.arange(0, len(field), max(1, steps_per_cycle // 12))
+    fig.add_raw([scatter(
+        x=field.real[marks], y=field.imag[marks], mode="markers+text",
+        name=t("fig.positions_of", point=point),
+        text=[numbered(point, (i % 12) + 1) for i in range(len(marks))], textposition="top center",
+        textfont=dict(size=look.font - 2), marker=dict(size=6 * look.line, color=path_colour(1)))])
+    return plane_layout(fig, title, look)

@@ -1,0 +1,83 @@
+"""Write a scene back to TOML (the download of the current scene, with the user's changes).
+
+The output uses the same format the loader reads (docs/scene-format.md), so a downloaded
+scene uploads again unchanged.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+from .schema import Scene
+
+
+def _s(text: str) -> str:
+    return json.dumps(text, ensure_ascii=False)  # a JSON string is a valid TOML basic string
+
+
+def _n(value: float) -> str:
+    return repr(float(value))
+
+
+def _v(z: complex) -> str:
+    return f"[{_n(z.real)}, {_n(z.imag)}]"
+
+
+def to_toml(scene: Scene) -> str:
+    out = [f"id = {_s(scene.id)}", f"title = {_s(scene.title)}", f"source = {_s(scene.source)}",
+           f"note = {_s(scene.note)}"]
+    if scene.gravity:
+        out.append(f"gravity = {_n(scene.gravity)}")
+    out.append("\npairs = [")
+    for p in scene.pairs:
+        if p.kind == "revolute":
+            out.append(f'  {{ type = "revolute", members = [{p.members[0]}, {p.members[1]}], '
+                       f'point = {_s(p.point)}, name = {_s(p.name)} }},')
+        else:
+            out.append(f'  {{ type = "prismatic", guide = {p.members[0]}, slider = {p.members[1]}, '
+                       f'point = {_s(p.point)}, through = {_s(p.through)}, '
+                       f'angle = {_n(math.degrees(p.angle))}, '
+                       f'slider_angle = {_n(math.degrees(p.slider_angle))}, name = {_s(p.name)} }},')
+    out.append("]\n\n[frame]")
+    out += [f"{name} = {_v(z)}" for name, z in scene.frame.items()]
+    d = scene.driver
+    out.append(f'\n[driver]\ntype = "{d.kind}"')
+    if d.kind == "rotating":
+        out += [f"at = {_n(math.degrees(d.at))}", f"omega = {_n(d.speed)}", f"epsilon = {_n(d.accel)}"]
+    else:
+        out += [f"at = {_n(d.at)}", f"velocity = {_n(d.speed)}", f"acceleration = {_n(d.accel)}"]
+    if scene.travel:
+        tr = scene.travel
+        out += ["\n[travel]", f"speed = {_n(tr.speed)}", f"wheel_radius = {_n(tr.wheel_radius)}",
+                f"sprocket_wheel = {_n(tr.sprocket_wheel)}",
+                f"sprocket_crank = {_n(tr.sprocket_crank)}", f"angle = {_n(math.degrees(tr.angle))}"]
+    for number, m in scene.members.items():
+        out.append(f"\n[members.{number}]")
+        if m.label:
+            out.append(f"label = {_s(m.label)}")
+        out.append("points = [" + ", ".join(_s(p) for p in m.axis) + "]")
+        if m.length is not None:
+            out.append(f"length = {_n(m.length)}")
+        extra = [f"{name} = {_v(z)}" for name, z in m.points.items() if name not in m.axis]
+        if extra:
+            out.append("extra = { " + ", ".join(extra) + " }")
+        if m.mass:
+            out.append(f"mass = {_n(m.mass)}")
+        if m.centre is not None:
+            out.append(f"centre = {_v(m.centre)}")
+        if m.gyration:
+            out.append(f"gyration = {_n(m.gyration)}")
+    if scene.assembly:
+        out.append("\n[assembly]")
+        out += [f'"{a}-{b}" = {sign}' for (a, b), sign in scene.assembly.items()]
+    for f in scene.forces:
+        out += ["\n[[forces]]", f"member = {f.member}", f"point = {_s(f.point)}",
+                f"magnitude = {_n(f.magnitude)}", f"angle = {_n(math.degrees(f.angle))}",
+                f"follows_member = {'true' if f.follows_member else 'false'}"]
+    for m in scene.moments:
+        out += ["\n[[moments]]", f"member = {m.member}", f"value = {_n(m.value)}"]
+    if scene.book:
+        out.append("\n[book]")
+        out += [f"{_s(k)} = {_n(v)}" for k, v in scene.book.items()]
+    return "\n".join(out) + "\n"

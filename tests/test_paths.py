@@ -1,0 +1,105 @@
+"""Chapter 1 solvers: positions per cycle, drawing accuracy, path metrics, animation order, travel."""
+
+import math
+
+import numpy as np
+import pytest
+
+from mechanisms import load_preset
+from mechanisms.schema import Travel
+from solvers import solve
+from solvers.paths import (animation_order, chord_deviation, cycle_time, cycle_values, field_path,
+                           loops_backward, path_length, resolution_table, strokes)
+
+from . import scenes
+
+
+def test_positions_start_at_the_scenes_instant_and_follow_the_rotation():
+    scene = load_preset("analitika-2.1")  # φ₂ = 55°, ω₂ < 0 (clockwise)
+    values = np.degrees(cycle_values(scene, 12))
+    assert values[0] == pytest.approx(55.0)
+    assert values[1] == pytest.approx(55.0 - 30.0)
+
+
+@pytest.mark.parametrize("steps", [12, 72, 360, 3600])
+def test_chord_deviation_of_the_crank_circle_is_its_sagitta(steps):
+    """A point on a circle of radius r, drawn from N positions: r·(1 − cos(π/N))."""
+    scene = scenes.fourbar(r2=0.1)
+    deviation = chord_deviation(scene, steps, ["A"])["A"]
+    assert deviation == pytest.approx(0.1 * (1 - math.cos(math.pi / steps)), rel=1e-3)
+
+
+def test_finer_resolution_draws_closer_to_the_exact_path():
+    scene = load_preset("zbirka-1.3")
+    deviation = [chord_deviation(scene, n, ["E"])["E"] for n in (12, 72, 360, 3600)]
+    assert deviation == sorted(deviation, reverse=True)
+    assert deviation[0] / deviation[1] == pytest.approx(36, rel=0.5)  # second order: (72/12)²
+
+
+def test_path_length_and_stroke_against_hand_values():
+    crank = scenes.fourbar(r2=0.1)
+    motion = solve(crank, cycle_values(crank, 3600), order=0)
+    assert path_length(motion.points["A"].z) == pytest.approx(2 * math.pi * 0.1, rel=1e-6)
+    slider = load_preset("slider-crank")  # central: stroke = 2·OA
+    motion = solve(slider, cycle_values(slider, 3600), order=0)
+    assert strokes(motion)["1-4"] == pytest.approx(0.2, rel=1e-6)
+    assert cycle_time(slider) == pytest.approx(2 * math.pi / 20.0)
+
+
+def test_animation_runs_round_a_full_turn():
+    assert list(animation_order(np.ones(5, bool))) == [0, 1, 2, 3, 4]
+
+
+def test_animation_rocks_between_the_limits_without_jumping():
+    feasible = np.array([True] * 4 + [False] * 3 + [True] * 3)  # an arc 7, 8, 9, 0, 1, 2, 3
+    order = animation_order(feasible, start=1)
+    assert order[0] == 1 and feasible[order].all()
+    steps = np.abs(np.diff(order))
+    assert set(steps) <= {1, 9}  # neighbours, or 9 ↔ 0 across the seam of the cycle
+    assert {3, 7} <= set(order)  # it reaches both limits
+
+
+def test_travel_numbers_of_task_1_3():
+    """The book's chain: ω_t = v_R/R_t, ω_b = ω_t·R_a/R_b, t_c = 2π/ω_b, 12 steps."""
+    travel = Travel(speed=3.0, wheel_radius=0.32, sprocket_wheel=0.09, sprocket_crank=0.03)
+    assert travel.wheel_omega == pytest.approx(3.0 / 0.32)
+    assert travel.crank_omega == pytest.approx(3.0 / 0.32 * 0.09 / 0.03)
+    assert travel.cycle_time == pytest.approx(2 * math.pi / 28.125)
+    assert travel.step_time() == pytest.approx(0.22340214 / 12, rel=1e-6)
+    assert travel.step_distance() == pytest.approx(3.0 * 0.22340214 / 12, rel=1e-6)
+    scene = load_preset("zbirka-1.3")
+    assert scene.driver.speed == pytest.approx(28.125)
+
+
+def test_field_path_advances_by_the_travel_of_one_cycle():
+    scene = load_preset("zbirka-1.3")
+    motion = solve(scene, cycle_values(scene, 360), order=1)
+    times, field = field_path(motion, scene.travel, "E", cycles=3)
+    tc = scene.travel.cycle_time
+    assert times[360] == pytest.approx(tc)
+    assert field[360] - field[0] == pytest.approx(3.0 * tc)
+    assert field[720] - field[360] == pytest.approx(3.0 * tc)
+
+
+def test_a_point_loops_back_exactly_when_it_outruns_the_machine():
+    """The crank pin: speed r·ω along the travel at its lowest point, against v_R."""
+    crank = scenes.fourbar(r2=0.1, omega=20.0)  # r·ω = 2 m/s
+    motion = solve(crank, cycle_values(crank, 3600), order=1)
+    slow = Travel(speed=1.5, wheel_radius=0.3, sprocket_wheel=0.1, sprocket_crank=0.1)
+    fast = Travel(speed=2.5, wheel_radius=0.3, sprocket_wheel=0.1, sprocket_crank=0.1)
+    assert loops_backward(motion, slow, "A") == (True, pytest.approx(-0.5, abs=1e-5))
+    assert loops_backward(motion, fast, "A") == (False, pytest.approx(0.5, abs=1e-5))
+
+
+def test_the_tedder_tine_makes_a_true_trochoid_at_the_books_speed():
+    scene = load_preset("zbirka-1.3")
+    motion = solve(scene, cycle_values(scene, 360), order=1)
+    loops, slowest = loops_backward(motion, scene.travel, "E")
+    assert loops and slowest < 0
+
+
+def test_resolution_table_reports_time_and_error_per_resolution():
+    rows = resolution_table(scenes.fourbar(r2=0.1), ["A"], repeat=1)
+    assert [r["positions"] for r in rows] == [12, 72, 360, 3600]
+    assert all(r["solve_ms"] > 0 for r in rows)
+    assert rows[0]["deviation_m"] == pytest.approx(0.1 * (1 - math.cos(math.pi / 12)), rel=1e-3)

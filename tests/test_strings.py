@@ -1,0 +1,49 @@
+"""The strings tables: every key in every language, none unused, notation kept in Latin."""
+
+import re
+from pathlib import Path
+
+import pytest
+
+from ui.i18n import LANGUAGES, num, parse_number, t, table
+
+ROOT = Path(__file__).resolve().parents[1]
+SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *ROOT.glob("figures/*.py")]
+
+
+def used_keys() -> set[str]:
+    """Every quoted string in the app's code that looks like a key ("area.name")."""
+    text = "\n".join(p.read_text() for p in SOURCES)
+    return set(re.findall(r"""["']([a-z0-9]+\.[A-Za-z0-9_]+)["']""", text)) - {"app.py"}
+
+
+def test_every_language_has_the_same_keys():
+    keys = set(table("en"))
+    for language in LANGUAGES:
+        assert set(table(language)) == keys, language
+
+
+def test_every_key_is_used_and_every_used_key_exists():
+    keys, used = set(table("en")), used_keys()
+    assert not used - keys, f"missing in the tables: {sorted(used - keys)}"
+    assert not keys - used, f"unused keys: {sorted(keys - used)}"
+
+
+def test_placeholders_agree_across_languages():
+    for key, english in table("en").items():
+        wanted = set(re.findall(r"\{(\w+)\}", english))
+        for language in LANGUAGES:
+            assert set(re.findall(r"\{(\w+)\}", table(language)[key])) == wanted, (language, key)
+
+
+def test_cyrillic_is_transliterated_but_notation_and_units_stay_latin():
+    text = t("traj.R_b", language="sr-cyrl")
+    assert "R_b" in text and "[m]" in text and "лан" in text  # lančanik → ланчаник
+    assert t("traj.length", language="sr-cyrl", link="AB", member=3).startswith("AB (члан 3)")
+
+
+def test_numbers_use_the_languages_decimal_separator_and_inputs_accept_both():
+    assert num(0.25, language="sr") == "0,25" and num(0.25, language="en") == "0.25"
+    assert parse_number("0,25") == parse_number("0.25") == 0.25
+    with pytest.raises(ValueError):
+        parse_number("abc")

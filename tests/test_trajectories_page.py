@@ -1,0 +1,88 @@
+"""Chapter 1 page as a user drives it (AppTest): the numbers in the figures follow the inputs."""
+
+import math
+
+import numpy as np
+import pytest
+
+from .test_pages import chart, decode, page, traces
+
+
+def positions(at, point: str) -> np.ndarray:
+    (trace,) = traces(chart(at, "paths"), f"positions of {point}")
+    return np.asarray(decode(trace["x"]), float) + 1j * np.asarray(decode(trace["y"]), float)
+
+
+def fourbar(**state):
+    return page("pages/trajectories.py", lang="en", scene="four-bar-crank-rocker", points=["A", "E"],
+                **state)
+
+
+def test_twelve_numbered_positions_follow_the_sense_of_rotation():
+    at = fourbar()
+    a = positions(at, "A")
+    assert len(a) == 12
+    assert np.angle(a[1] / a[0]) == pytest.approx(math.radians(30))  # ω₂ > 0: counter-clockwise
+    at.slider(key="omega").set_value(-10.0).run()
+    a = positions(at, "A")
+    assert np.angle(a[1] / a[0]) == pytest.approx(math.radians(-30))
+    (metric,) = [m for m in at.metric if m.label.startswith("Time per cycle")]
+    assert metric.value == f"{2 * math.pi / 10:.4g} s"
+
+
+def test_a_longer_crank_draws_a_bigger_crank_circle():
+    at = fourbar()
+    assert np.abs(positions(at, "A")) == pytest.approx(np.full(12, 0.1))
+    at.slider(key="L2").set_value(0.12).run()
+    assert not at.exception
+    assert np.abs(positions(at, "A")) == pytest.approx(np.full(12, 0.12))
+
+
+def test_the_tedder_advances_by_its_travel_each_cycle_and_closes_relative_to_the_machine():
+    at = page("pages/trajectories.py", lang="en", scene="zbirka-1.3", res=360)
+    at.slider(key="vR").set_value(4.0).run()
+    assert not at.exception
+    (field,) = traces(chart(at, "field"), "path of E in the field")
+    x, y = np.asarray(decode(field["x"]), float), np.asarray(decode(field["y"]), float)
+    omega_b = 4.0 / 0.32 * 0.09 / 0.03
+    tc = 2 * math.pi / omega_b
+    assert x[360] - x[0] == pytest.approx(4.0 * tc)  # one cycle of travel along +x
+    assert y[360] == pytest.approx(y[0])  # the relative path closes after one cycle
+    labels = {m.label: m.value for m in at.metric}
+    assert labels["ω_b = ω₂ — crank"] == f"{omega_b:.4g} s⁻¹"
+
+
+def test_a_mechanism_with_a_dead_zone_warns_and_rocks():
+    at = page("pages/trajectories.py", lang="en", scene="analitika-2.1")
+    assert not at.exception
+    assert "cannot pass" in at.warning[0].value
+    assert any("rocks" in m.value or "limit position" in m.value for m in at.info)
+
+
+def test_the_speed_accuracy_table_covers_every_resolution():
+    at = fourbar()
+    table = at.dataframe[0].value
+    assert list(table.iloc[:, 0]) == [12, 72, 360, 3600]
+    deviation = [float(v) for v in table.iloc[:, 2]]
+    assert deviation == sorted(deviation, reverse=True)
+
+
+def test_serbian_page_uses_the_decimal_comma():
+    at = page("pages/trajectories.py", lang="sr", scene="four-bar-crank-rocker")
+    (metric,) = [m for m in at.metric if m.label.startswith("Vreme jednog ciklusa")]
+    assert metric.value == "0,6283 s"
+
+
+def test_animation_frames_carry_only_the_moving_traces_and_never_jump():
+    at = page("pages/trajectories.py", lang="en", scene="analitika-2.1", res=360, points=["M"])
+    spec = chart(at, "animation")
+    frames = spec["frames"]
+    assert 10 < len(frames) <= 120
+    moving = frames[0]["traces"]
+    assert 0 not in moving  # the still, faint path is not resent
+    assert all(f["traces"] == moving and len(f["data"]) == len(moving) for f in frames)
+    angles = np.radians([float(s["label"]) for s in spec["layout"]["sliders"][0]["steps"]])
+    jumps = np.abs(np.angle(np.exp(1j * np.diff(angles))))
+    # 289 feasible positions rock there and back (576 frames), shown every 5th: 5° steps at most,
+    # also where the motion turns back at the limits
+    assert jumps.max() <= math.radians(5.01)

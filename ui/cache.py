@@ -1,0 +1,27 @@
+"""Cached loading and solving shared by the pages (Streamlit reruns the page on every change).
+
+Scenes are frozen dataclasses; they are hashed by their ``repr`` (every parameter shows
+there), so a changed slider is a new cache entry and an unchanged page costs nothing.
+Results are cached as shared objects (``cache_resource``) and never mutated.
+"""
+
+from __future__ import annotations
+
+import streamlit as st
+
+from mechanisms import Scene, load_preset
+from mechanisms.schema import Scene as SceneType
+from solvers import Motion, solve
+
+BY_REPR = {SceneType: repr}
+
+
+@st.cache_resource(max_entries=64)
+def preset(preset_id: str) -> Scene:
+    return load_preset(preset_id)
+
+
+@st.cache_resource(max_entries=128, hash_funcs=BY_REPR)
+def solved(scene: Scene, values: tuple[float, ...], order: int = 0) -> Motion:
+    """``solve`` for driver values given as a tuple (hashable)."""
+    return solve(scene, list(values), order=order)

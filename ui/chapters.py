@@ -1,0 +1,44 @@
+"""The six chapters of the course: one page each. Shared by the router and the home page."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import streamlit as st
+
+from ui.i18n import t
+
+
+@dataclass(frozen=True)
+class Chapter:
+    file: str
+    title: str  # string keys (see locales/)
+    summary: str
+    icon: str
+    ready: bool = False
+
+
+CHAPTERS = (
+    Chapter("pages/trajectories.py", "ch1.title", "ch1.summary", ":material/timeline:", ready=True),
+    Chapter("pages/velocity_plans.py", "ch2.title", "ch2.summary", ":material/straighten:"),
+    Chapter("pages/assur_groups.py", "ch4.title", "ch4.summary", ":material/account_tree:"),
+    Chapter("pages/kinetostatics.py", "ch5.title", "ch5.summary", ":material/balance:"),
+    Chapter("pages/planetary_gears.py", "ch6.title", "ch6.summary", ":material/settings:"),
+    Chapter("pages/rotor_balancing.py", "ch7.title", "ch7.summary", ":material/autorenew:"),
+)
+
+
+def chapter(file: str) -> Chapter:
+    return next(c for c in CHAPTERS if c.file == file)
+
+
+def page_title(file: str) -> None:
+    c = chapter(file)
+    st.title(f"{c.icon} {t(c.title)}")
+
+
+def coming_soon(file: str) -> None:
+    """The placeholder of a chapter page whose issue is not done yet."""
+    page_title(file)
+    st.write(t(chapter(file).summary))
+    st.info(t("app.coming_soon_page"))

@@ -1,0 +1,24 @@
+"""Downloads: tables as CSV, figures as SVG or PNG (drawn by the browser, no server work)."""
+
+from __future__ import annotations
+
+import pandas as pd
+import plotly.graph_objects as go
+import streamlit as st
+
+from ui.i18n import t
+
+
+def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
+    st.download_button(t("export.csv"), table.to_csv(index=False).encode("utf-8"), filename,
+                       mime="text/csv", key=key, on_click="ignore", icon=":material/download:")
+
+
+def chart(fig: go.Figure, filename: str, key: str) -> None:
+    """A Plotly chart whose camera button saves SVG or PNG, as the user picks."""
+    fmt = st.session_state.get(f"{key}_format", "svg")
+    st.plotly_chart(fig, key=key, config={"displaylogo": False, "toImageButtonOptions":
+                                          {"format": fmt, "filename": filename, "scale": 2}})
+    st.segmented_control(t("export.figure_format"), ["svg", "png"], key=f"{key}_format",
+                         default="svg", format_func=str.upper, label_visibility="visible")
+    st.caption(t("export.camera_hint"))

@@ -1,0 +1,78 @@
+"""Every visible string in Serbian (Latin), English, and Serbian Cyrillic.
+
+The strings live in one table per language (``locales/sr.toml``, ``locales/en.toml``);
+Cyrillic is generated from the Latin Serbian table with ``cyrtranslit``. Course notation
+inside a string (point letters, U_L, F_pq, v_R …) is wrapped in ⟨ ⟩ so that it stays in
+Latin letters (the brackets never reach the screen); units in [square brackets] and
+{placeholders} stay as they are too. Values are formatted in after
+transliteration, with the language's decimal separator (the book writes 0,25 m).
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from functools import cache
+from pathlib import Path
+
+import cyrtranslit
+import streamlit as st
+
+LOCALES = Path(__file__).resolve().parents[1] / "locales"
+LANGUAGES = {"sr": "Srpski (latinica)", "en": "English", "sr-cyrl": "Српски (ћирилица)"}
+KEEP = re.compile(r"⟨([^⟩]*)⟩")
+LATIN = re.compile(r"(⟨[^⟩]*⟩|\{[^}]*\}|\[[^\]]*\])")  # spans transliteration leaves alone
+
+
+@cache
+def table(language: str) -> dict[str, str]:
+    """The strings of one language (Cyrillic made from the Latin Serbian table)."""
+    if language == "sr-cyrl":
+        return {k: _to_cyrillic(v) for k, v in table("sr").items()}
+    with open(LOCALES / f"{language}.toml", "rb") as f:
+        return tomllib.load(f)
+
+
+def _to_cyrillic(text: str) -> str:
+    parts = LATIN.split(text)  # even indices: prose, odd: spans kept in Latin
+    return "".join(cyrtranslit.to_cyrillic(p, "sr") if i % 2 == 0 else p
+                   for i, p in enumerate(parts))
+
+
+def current() -> str:
+    return st.session_state.get("lang") or default_language()
+
+
+def default_language() -> str:
+    locale = (getattr(st.context, "locale", None) or "").lower()
+    if locale.startswith("sr") and "cyrl" in locale:
+        return "sr-cyrl"
+    return "sr" if locale.startswith(("sr", "bs", "hr", "me")) else "en"
+
+
+def t(key: str, language: str | None = None, **values) -> str:
+    """The string ``key`` in the current language, with ``values`` formatted in."""
+    text = KEEP.sub(r"\1", table(language or current())[key])
+    if not values:
+        return text
+    return text.format(**{k: num(v, language=language) if isinstance(v, float) else v
+                          for k, v in values.items()})
+
+
+def num(value: float, digits: int = 4, language: str | None = None) -> str:
+    """A number with ``digits`` significant digits and the language's decimal separator."""
+    text = f"{value:.{digits}g}"
+    return text.replace(".", ",") if (language or current()).startswith("sr") else text
+
+
+def parse_number(text: str) -> float:
+    """A typed number: accepts both 0,25 and 0.25 (raises ValueError otherwise)."""
+    return float(text.strip().replace(" ", "").replace(",", "."))
+
+
+def language_picker() -> str:
+    """The language choice in the sidebar, kept in the URL as ``?lang=``."""
+    options = list(LANGUAGES)
+    default = options.index(default_language())
+    return st.sidebar.selectbox("🌐", options, index=default, key="lang", bind="query-params",
+                                format_func=LANGUAGES.get, label_visibility="collapsed")

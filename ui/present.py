@@ -1,0 +1,45 @@
+"""Projector mode: big type, thick lines, high contrast, no sidebar; ``?present=1`` in the URL."""
+
+from __future__ import annotations
+
+import streamlit as st
+
+from figures.style import NORMAL, PROJECTOR, Look
+from ui.i18n import t
+
+CSS = """
+<style>
+html { font-size: 21px; }
+[data-testid="stSidebar"], [data-testid="stSidebarCollapsedControl"],
+[data-testid="stToolbar"] { display: none; }
+.stApp, [data-testid="stHeader"] { background: #ffffff; color: #000000; }
+[data-testid="stMainBlockContainer"] { max-width: 100%; padding: 0.5rem 1.5rem; }
+.stApp p, .stApp label, .stApp li { color: #000000; font-weight: 500; }
+</style>
+"""
+
+
+def presenting() -> bool:
+    return bool(st.session_state.get("present"))
+
+
+def look() -> Look:
+    return PROJECTOR if presenting() else NORMAL
+
+
+def _sync_url() -> None:
+    if st.session_state.get("present"):
+        st.query_params["present"] = "1"
+    else:
+        st.query_params.pop("present", None)
+
+
+def projector_switch() -> None:
+    """The switch (sidebar normally, top of the page while presenting)."""
+    if "present" not in st.session_state:
+        st.session_state["present"] = st.query_params.get("present") in ("1", "true")
+    if presenting():
+        st.html(CSS)
+        st.toggle(t("app.projector"), key="present", on_change=_sync_url)
+    else:
+        st.sidebar.toggle(t("app.projector"), key="present", on_change=_sync_url)
