@@ -92,19 +92,20 @@ def animation_figure(motion: Motion, order: np.ndarray, points: list[str], title
                 fromcurrent=True, mode="immediate")
     pause = dict(frame=dict(duration=0, redraw=False), mode="immediate")
     fig.update_layout(
-        updatemenus=[dict(type="buttons", direction="left", x=0.0, y=1.08, xanchor="left",
-                          showactive=False, font=dict(size=look.font + 2),
+        updatemenus=[dict(type="buttons", direction="left", x=0.0, y=-0.08, xanchor="left",
+                          yanchor="top", showactive=False, font=dict(size=look.font + 2),
+                          pad=dict(t=10, r=10),
                           buttons=[dict(label="▶ " + t("fig.play"), method="animate", args=[None, play]),
-                                   dict(label="⏸ " + t("fig.pause"), method="animate",
+                                   dict(label="■ " + t("fig.pause"), method="animate",
                                         args=[[None], pause])])],
-        sliders=[dict(active=0, x=0.0, y=-0.02, len=1.0, pad=dict(t=40),
+        sliders=[dict(active=0, x=0.25, y=-0.08, len=0.75, yanchor="top", pad=dict(t=10),
                       currentvalue=dict(prefix="φ₂ = ", suffix="°", font=dict(size=look.font + 2)),
                       steps=[dict(label=f"{labels[s]:.0f}", method="animate",
                                   args=[[str(s)], dict(frame=dict(duration=0, redraw=False),
                                                        mode="immediate")])
                              for s in range(len(order))])])
     plane_layout(fig, title, look)
-    fig.update_layout(legend=dict(y=-0.25))
+    fig.update_layout(legend=dict(y=-0.3), margin=dict(b=40))
     return fig
 
 

@@ -19,6 +19,7 @@ from ui.export import chart, csv_button
 from ui.i18n import num, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
+from ui.url import seed, url_choice
 
 RESOLUTIONS = (12, 72, 360, 3600)
 MAX_FRAMES = 120
@@ -34,26 +35,36 @@ def accuracy(scene: Scene, points: tuple[str, ...]) -> list[dict]:
 controls, main = st.columns([1, 3], gap="large")
 
 
+def defaults(base: Scene) -> dict[str, object]:
+    """Every scene-dependent widget's value in the scene as loaded."""
+    values: dict[str, object] = {f"L{n}": length for n, length in base.lengths.items()}
+    values["points"] = [p for p in base.point_names if p not in base.frame][-1:]
+    if base.travel:
+        tr = base.travel
+        values.update(vR=tr.speed, Rt=tr.wheel_radius, Ra=tr.sprocket_wheel, Rb=tr.sprocket_crank)
+    else:
+        values["omega"] = float(base.driver.speed)
+    return values
+
+
 def travel_sliders(base: Travel) -> Travel:
-    """v_R and the chain drive of task 1.3 (defaults from the scene)."""
-    return Travel(
-        speed=st.slider(t("traj.v_R"), 0.5, 8.0, base.speed, 0.1, key="vR", bind="query-params"),
-        wheel_radius=st.slider(t("traj.R_t"), 0.15, 0.6, base.wheel_radius, 0.01, key="Rt",
-                               bind="query-params"),
-        sprocket_wheel=st.slider(t("traj.R_a"), 0.02, 0.2, base.sprocket_wheel, 0.005, key="Ra",
-                                 bind="query-params"),
-        sprocket_crank=st.slider(t("traj.R_b"), 0.02, 0.2, base.sprocket_crank, 0.005, key="Rb",
-                                 bind="query-params"),
-        angle=base.angle)
+    """v_R and the chain drive of task 1.3."""
+    def slider(label: str, key: str, lo: float, hi: float, step: float) -> float:
+        return st.slider(t(label), lo, hi, step=step, key=key, bind="query-params")
+
+    return Travel(speed=slider("traj.v_R", "vR", 0.5, 8.0, 0.1),
+                  wheel_radius=slider("traj.R_t", "Rt", 0.15, 0.6, 0.01),
+                  sprocket_wheel=slider("traj.R_a", "Ra", 0.02, 0.2, 0.005),
+                  sprocket_crank=slider("traj.R_b", "Rb", 0.02, 0.2, 0.005), angle=base.angle)
 
 
-def length_sliders(scene: Scene) -> dict[int, float]:
+def length_sliders(base: Scene) -> dict[int, float]:
     """One slider per link, from a quarter to twice its length in the scene."""
     out = {}
-    for number, length in scene.lengths.items():
-        member = scene.members[number]
+    for number, length in base.lengths.items():
+        member = base.members[number]
         label = t("traj.length", link="".join(member.axis), member=number)
-        out[number] = st.slider(label, round(length / 4, 4), round(length * 2, 4), length,
+        out[number] = st.slider(label, round(length / 4, 4), round(length * 2, 4),
                                 step=round(length / 100, 5), format="%.4f", key=f"L{number}",
                                 bind="query-params")
     return out
@@ -61,23 +72,22 @@ def length_sliders(scene: Scene) -> dict[int, float]:
 
 with controls:
     base = scene_picker()
+    seed(defaults(base), st.session_state["scene"])
     steps = st.select_slider(t("traj.resolution"), RESOLUTIONS, value=360, key="res",
                              bind="query-params")
     views = {"steps": "traj.view_steps", "smooth": "traj.view_smooth"}
-    view = st.radio(t("traj.view"), list(views), key="view", bind="query-params",
-                    format_func=lambda v: t(views[v]), horizontal=True)
+    view = url_choice(st.radio, t("traj.view"), list(views), "view",
+                      format_func=lambda v: t(views[v]), horizontal=True)
     movable = [p for p in base.point_names if p not in base.frame]
-    points = st.multiselect(t("traj.points"), movable, default=movable[-1:], key="points",
+    points = st.multiselect(t("traj.points"), movable, key="points",
                             bind="query-params") or movable[-1:]
     if base.travel:
-        travel = travel_sliders(base.travel)
-        scene = base.with_(travel=travel)
+        scene = base.with_(travel=travel_sliders(base.travel))
     else:
-        omega = st.slider(t("traj.omega"), -50.0, 50.0, float(base.driver.speed), 0.5,
-                          key="omega", bind="query-params")
+        omega = st.slider(t("traj.omega"), -50.0, 50.0, step=0.5, key="omega", bind="query-params")
         scene = base.with_(speed=omega)
     with st.expander(t("traj.lengths")):
-        scene = scene.with_(lengths=length_sliders(scene))
+        scene = scene.with_(lengths=length_sliders(base))
     scene_download(scene)
 
 started = time.perf_counter()

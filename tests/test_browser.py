@@ -4,6 +4,7 @@ Skipped on a developer machine without /usr/bin/chromium; in CI (CI=true) a miss
 browser is a failure, never a silent skip.
 """
 
+import json
 import os
 import shutil
 import socket
@@ -77,34 +78,80 @@ def wait_idle(page) -> None:
                            timeout=30_000)
 
 
-def plot_x(page) -> list:
-    """The x data of every trace of the Plotly chart, as the browser holds it."""
-    return page.evaluate("() => document.querySelector('.js-plotly-plot').data"
-                         ".map(t => Array.from(t.x || []).map(v => v === null ? null : +v))")
+def plot_x(page, which: int = 0) -> list:
+    """The x data of every trace of a Plotly chart, as the browser holds it."""
+    return page.evaluate("i => document.querySelectorAll('.js-plotly-plot')[i].data"
+                         ".map(t => Array.from(t.x || []).map(v => v === null ? null : +v))", which)
 
 
-def test_moving_the_crank_slider_redraws_the_mechanism(app_url, browser, tmp_path):
+def keep(shot: Path) -> None:
+    """Copy a screenshot where a person can look at it (SCREENSHOT_DIR), besides the temp dir."""
+    assert shot.stat().st_size > 10_000
+    target = os.environ.get("SCREENSHOT_DIR")
+    if target:
+        Path(target).mkdir(parents=True, exist_ok=True)
+        shutil.copy(shot, Path(target) / shot.name)
+
+
+def open_page(browser, url: str, size=(1400, 900)):
     page = browser.new_page()
-    page.goto(f"{app_url}/trajectories")
+    page.set_viewport_size({"width": size[0], "height": size[1]})
+    page.goto(url)
     wait_idle(page)
-    page.wait_for_selector(".js-plotly-plot")
+    page.wait_for_selector(".js-plotly-plot", timeout=30_000)
+    return page
+
+
+def test_turning_the_crank_the_other_way_renumbers_the_positions(app_url, browser, tmp_path):
+    page = open_page(browser, f"{app_url}/trajectories?lang=en&scene=four-bar-crank-rocker")
     before = plot_x(page)
-    thumb = page.locator("[data-testid='stSlider'] input[type='range']").first
-    thumb.focus()
-    for _ in range(30):
-        thumb.press("ArrowRight")
+    omega = page.locator("[data-testid='stSlider'] input[type='range'][aria-label^='ω₂']").first
+    omega.focus()
+    for _ in range(25):  # 10 rad/s → −2.5 rad/s in steps of 0.5
+        omega.press("ArrowLeft")
     page.wait_for_function(
         "before => JSON.stringify(document.querySelector('.js-plotly-plot').data"
         ".map(t => Array.from(t.x || []).map(v => v === null ? null : +v))) !== before",
-        arg=__import__("json").dumps(before), timeout=30_000)
+        arg=json.dumps(before), timeout=30_000)
     wait_idle(page)
-    after = plot_x(page)
-    assert after[0] == before[0]  # the path of the first point is the whole cycle: unchanged
-    assert after != before  # the members moved
-    shot = tmp_path / "trajectories.png"
+    assert plot_x(page) != before
+    assert "omega=-2.5" in page.url  # the new value is in the shareable link
+    shot = tmp_path / "trajectories-construction.png"
     page.screenshot(path=str(shot), full_page=True)
-    assert shot.stat().st_size > 10_000
-    keep = os.environ.get("SCREENSHOT_DIR")
-    if keep:
-        Path(keep).mkdir(parents=True, exist_ok=True)
-        shutil.copy(shot, Path(keep) / shot.name)
+    keep(shot)
+
+
+def test_the_animation_plays_and_its_frame_slider_advances(app_url, browser, tmp_path):
+    page = open_page(browser, f"{app_url}/trajectories?lang=en&scene=analitika-2.1")
+    page.get_by_role("tab", name="Animation").click()
+    plot = page.locator(".js-plotly-plot").nth(1)
+    plot.wait_for(state="visible")
+    active = "() => document.querySelectorAll('.js-plotly-plot')[1]._fullLayout.sliders[0].active"
+    assert page.evaluate(active) == 0
+    plot.locator(".updatemenu-button").first.click()  # ▶ Play
+    page.wait_for_function(f"({active})() >= 5", timeout=30_000)
+    shot = tmp_path / "trajectories-animation.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+
+
+def test_a_shared_link_opens_the_same_scene_language_and_values(app_url, browser, tmp_path):
+    page = open_page(browser, f"{app_url}/trajectories?lang=sr&scene=zbirka-1.3&vR=4.5")
+    page.get_by_role("tab", name="Na njivi").click()
+    omega_b = 4.5 / 0.32 * 0.09 / 0.03
+    expected = f"{omega_b:.4g}".replace(".", ",") + " s⁻¹"
+    page.get_by_text(expected).first.wait_for(timeout=30_000)
+    shot = tmp_path / "trajectories-field-sr.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+
+
+@pytest.mark.parametrize("size", [(1920, 1080), (1280, 720)], ids=["1920x1080", "1280x720"])
+def test_projector_mode_fills_the_screen_without_the_sidebar(app_url, browser, tmp_path, size):
+    page = open_page(browser, f"{app_url}/trajectories?lang=sr&scene=zbirka-1.1&present=1", size)
+    assert not page.locator("[data-testid='stSidebar']").is_visible()
+    font = page.evaluate("() => parseFloat(getComputedStyle(document.documentElement).fontSize)")
+    assert font >= 20
+    shot = tmp_path / f"projector-{size[0]}x{size[1]}.png"
+    page.screenshot(path=str(shot))
+    keep(shot)

@@ -72,7 +72,8 @@ def parse_number(text: str) -> float:
 
 def language_picker() -> str:
     """The language choice in the sidebar, kept in the URL as ``?lang=``."""
-    options = list(LANGUAGES)
-    default = options.index(default_language())
-    return st.sidebar.selectbox("🌐", options, index=default, key="lang", bind="query-params",
-                                format_func=LANGUAGES.get, label_visibility="collapsed")
+    from ui.url import url_choice
+
+    return url_choice(st.sidebar.selectbox, "Language · Jezik · Језик", list(LANGUAGES), "lang",
+                      default=default_language(), format_func=LANGUAGES.get,
+                      label_visibility="collapsed")

@@ -8,16 +8,9 @@ from mechanisms import Scene, SceneError, parse_scene, preset_ids
 from mechanisms.writer import to_toml
 from ui.cache import preset
 from ui.i18n import t
+from ui.url import url_choice
 
 UPLOADED = "upload"
-
-
-def _reset_scene_widgets() -> None:
-    """A new scene has other links and defaults: forget the old scene's slider values."""
-    for key in list(st.session_state):
-        if isinstance(key, str) and (key[:1] == "L" and key[1:].isdigit()
-                                     or key in ("omega", "vR", "Rt", "Ra", "Rb", "points", "phi")):
-            del st.session_state[key]
 
 
 def _read_upload() -> None:
@@ -28,7 +21,6 @@ def _read_upload() -> None:
         st.session_state["uploaded_scene"] = parse_scene(file.getvalue(), source=file.name)
         st.session_state["upload_error"] = None
         st.session_state["scene"] = UPLOADED
-        _reset_scene_widgets()
     except SceneError as exc:
         st.session_state["upload_error"] = str(exc)
 
@@ -44,8 +36,7 @@ def scene_picker(kinds: tuple[str, ...] | None = None) -> Scene:
         scene = uploaded if pid == UPLOADED else preset(pid)
         return f"{pid} — {scene.title}"
 
-    choice = st.selectbox(t("scene.pick"), options, key="scene", bind="query-params",
-                          format_func=label, on_change=_reset_scene_widgets)
+    choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", format_func=label)
     scene = uploaded if choice == UPLOADED else preset(choice)
     with st.expander(t("scene.about")):
         st.caption(scene.source)
