@@ -98,18 +98,18 @@ class _Reader:
         return complex(value[0], value[1])
 
 
-def load_scene(path: str | Path) -> Scene:
-    """Load a scene from a TOML file."""
+def load_scene(path: str | Path):
+    """Load a scene of any kind (linkage, rotor, …) from a TOML file."""
     path = Path(path)
     try:
         data = path.read_bytes()
     except OSError as exc:
         raise SceneError(f"{path}: cannot read file ({exc.strerror})") from None
-    return parse_scene(data, source=path.name, default_id=path.stem)
+    return parse_document(data, source=path.name, default_id=path.stem)
 
 
-def load_preset(preset_id: str) -> Scene:
-    """Load a preset by its id (``analitika-2.1``, ``zbirka-1.3``, …)."""
+def load_preset(preset_id: str):
+    """Load a preset by its id (``analitika-2.1``, ``zbirka-1.3``, ``zbirka-7.1``, …)."""
     path = PRESETS / f"{preset_id}.toml"
     if not path.is_file():
         known = ", ".join(preset_ids())
@@ -117,19 +117,46 @@ def load_preset(preset_id: str) -> Scene:
     return load_scene(path)
 
 
-def preset_ids() -> list[str]:
-    return sorted(p.stem for p in PRESETS.glob("*.toml"))
+def preset_ids(kind: str | None = None) -> list[str]:
+    """Preset ids, optionally only those of one kind ("linkage", "rotor", …)."""
+    ids = sorted(p.stem for p in PRESETS.glob("*.toml"))
+    return [i for i in ids if kind is None or _kind_of(PRESETS / f"{i}.toml") == kind]
 
 
-def load_any(name: str) -> Scene:
+def _kind_of(path: Path) -> str:
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if line.startswith("kind"):
+            return line.split("=", 1)[1].strip().strip('"')
+        if line.startswith("["):
+            break
+    return "linkage"
+
+
+def load_any(name: str):
     """A preset id or a path to a TOML file, as the command line accepts."""
     if name.endswith(".toml") or "/" in name:
         return load_scene(name)
     return load_preset(name)
 
 
+def parse_document(data: bytes | str, source: str = "<scene>", default_id: str = "scene"):
+    """Parse any scene kind: the top-level ``kind`` key chooses the schema."""
+    raw = _read_toml(data, source)
+    kind = raw.get("kind", "linkage")
+    if kind == "rotor":
+        from .rotor import parse_rotor
+
+        return parse_rotor(raw, source, default_id)
+    return _build(raw, _Reader(source), default_id)
+
+
 def parse_scene(data: bytes | str, source: str = "<scene>", default_id: str = "scene") -> Scene:
-    """Parse and validate scene text (bytes from an upload or a file)."""
+    """Parse and validate a linkage scene (bytes from an upload or a file)."""
+    return _build(_read_toml(data, source), _Reader(source), default_id)
+
+
+def _read_toml(data: bytes | str, source: str) -> dict:
+    """Bytes → TOML table, refusing what is too big, not UTF-8 or not TOML."""
     if isinstance(data, str):
         data = data.encode("utf-8")
     if len(data) > MAX_BYTES:
@@ -145,7 +172,7 @@ def parse_scene(data: bytes | str, source: str = "<scene>", default_id: str = "s
         raise SceneError(f"{source}: not valid TOML ({exc})") from None
     except RecursionError:
         raise SceneError(f"{source}: tables nested too deeply") from None
-    return _build(raw, _Reader(source), default_id)
+    return raw
 
 
 def _build(raw: dict, r: _Reader, default_id: str) -> Scene:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 
+from .rotor import Rotor
 from .schema import Scene
 
 
@@ -80,4 +81,29 @@ def to_toml(scene: Scene) -> str:
     if scene.book:
         out.append("\n[book]")
         out += [f"{_s(k)} = {_n(v)}" for k, v in scene.book.items()]
+    return "\n".join(out) + "\n"
+
+
+def rotor_to_toml(rotor: Rotor) -> str:
+    out = ['kind = "rotor"', f"id = {_s(rotor.id)}", f"title = {_s(rotor.title)}",
+           f"source = {_s(rotor.source)}", f"note = {_s(rotor.note)}", f'mode = "{rotor.mode}"']
+    if rotor.omega is not None:
+        out.append(f"omega = {_n(rotor.omega)}")
+    out.append("\n[planes]")
+    out += [f"{plane} = {_n(x)}" for plane, x in rotor.planes.items()]
+    for m in rotor.masses:
+        out += ["\n[[masses]]", f"mass = {_n(m.mass)}", f"radius = {_n(m.radius)}",
+                f"angle = {_n(math.degrees(m.angle))}", f"x = {_n(m.x)}"]
+    for plane, c in rotor.corrections.items():
+        out.append(f"\n[corrections.{plane}]")
+        for q in ("mass", "radius", "angle"):
+            value = getattr(c, q)
+            if value is not None:
+                out.append(f"{q} = {_n(math.degrees(value) if q == 'angle' else value)}")
+    if rotor.bearings:
+        out.append("\n[bearings]")
+        out += [f"{k} = {_n(v)}" for k, v in rotor.bearings.items()]
+    if rotor.book:
+        out.append("\n[book]")
+        out += [f"{_s(k)} = {_n(v)}" for k, v in rotor.book.items()]
     return "\n".join(out) + "\n"

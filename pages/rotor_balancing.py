@@ -1,5 +1,210 @@
-"""Chapter page placeholder (its issue is not done yet)."""
+"""Chapter 7 — rotor balancing: static and two-plane dynamic, with the U and V polygons."""
 
-from ui.chapters import coming_soon
+from __future__ import annotations
 
-coming_soon("pages/rotor_balancing.py")
+import math
+
+import pandas as pd
+import streamlit as st
+
+from figures.balancing import end_view_figure, polygon_figure, rotor_3d_figure
+from mechanisms.rotor import PLANES, Correction, Mass, Rotor
+from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
+from ui.chapters import page_title
+from ui.export import chart, csv_button
+from ui.i18n import num, t
+from ui.present import look
+from ui.scenes import scene_download, scene_picker
+from ui.url import seed, url_choice
+
+MM = 1e3  # the course writes radii and distances in mm, U in kg·mm and V in kg·mm²
+COLUMNS = ("m [kg]", "r [mm]", "φ [°]", "x [mm]")
+
+page_title("pages/rotor_balancing.py")
+controls, main = st.columns([1, 3], gap="large")
+
+
+def nice(value: float) -> float:
+    """A round drawing scale (1, 2 or 5 × 10ⁿ) at or above ``value``."""
+    if value <= 0:
+        return 1.0
+    power = 10 ** math.floor(math.log10(value))
+    return float(next(k * power for k in (1, 2, 5, 10) if k * power >= value))
+
+
+def defaults(base: Rotor) -> dict[str, object]:
+    values: dict[str, object] = {"mode": base.mode, "omega": base.omega or 100.0}
+    for plane in PLANES:
+        c = base.corrections.get(plane, Correction(radius=0.1))
+        given = "mass" if c.mass is not None else "radius"
+        values[f"given{plane}"] = given
+        values[f"value{plane}"] = float(getattr(c, given) * (1 if given == "mass" else MM))
+        values[f"x{plane}"] = float(base.planes.get(plane, 0.0) * MM)
+    return values
+
+
+def table_of(base: Rotor) -> pd.DataFrame:
+    return pd.DataFrame([(m.mass, m.radius * MM, math.degrees(m.angle), m.x * MM)
+                         for m in base.masses], columns=COLUMNS)
+
+
+def rotor_from_inputs(base: Rotor, table: pd.DataFrame) -> Rotor:
+    rows = table.dropna()
+    masses = tuple(Mass(float(m), float(r) / MM, math.radians(float(a)), float(x) / MM)
+                   for m, r, a, x in rows[list(COLUMNS)].itertuples(index=False))
+    mode = st.session_state["mode"]
+    planes = PLANES if mode == "dynamic" else PLANES[:1]
+    corrections = {}
+    for plane in planes:
+        value = st.session_state[f"value{plane}"]
+        if st.session_state[f"given{plane}"] == "mass":
+            corrections[plane] = Correction(mass=value)
+        else:
+            corrections[plane] = Correction(radius=value / MM)
+    return base.with_(masses=masses, mode=mode, omega=st.session_state["omega"],
+                      planes={p: st.session_state[f"x{p}"] / MM for p in planes},
+                      corrections=corrections)
+
+
+with controls:
+    base = scene_picker("rotor")
+    seed(defaults(base), st.session_state["scene"])
+    modes = {"dynamic": "rotor.mode_dynamic", "static": "rotor.mode_static"}
+    url_choice(st.radio, t("rotor.mode"), list(modes), "mode", default=base.mode,
+               format_func=lambda m: t(modes[m]), horizontal=True)
+    givens = {"mass": "rotor.given_mass", "radius": "rotor.given_radius"}
+    for plane in PLANES[:1] if st.session_state["mode"] == "static" else PLANES:
+        st.markdown(f"**{t('rotor.plane', plane=plane)}**")
+        st.number_input(t("rotor.plane_x"), key=f"x{plane}", step=10.0, format="%.1f",
+                        bind="query-params")
+        given = url_choice(st.radio, t("rotor.given"), list(givens), f"given{plane}",
+                           format_func=lambda g: t(givens[g]), horizontal=True)
+        unit_label = "kg" if given == "mass" else "mm"
+        st.number_input(f"{t(givens[given])} [{unit_label}]", min_value=1e-6, key=f"value{plane}",
+                        format="%.4g", bind="query-params")
+    st.number_input(t("rotor.omega"), min_value=0.1, key="omega", step=10.0, bind="query-params")
+    precision = st.slider(t("rotor.precision"), 0.1, 2.0, 0.5, 0.1, key="precision",
+                          bind="query-params")
+
+with main:
+    st.markdown(f"**{t('rotor.masses')}**")
+    table = st.data_editor(table_of(base), num_rows="dynamic", key=f"masses-{base.id}",
+                           width="stretch")
+    rotor = rotor_from_inputs(base, table)
+    try:
+        result = balance(rotor)
+    except BalanceError as exc:
+        st.error(str(exc))
+        st.stop()
+    for note in result.notes:
+        st.info(note)
+
+with controls:
+    scene_download(rotor)
+
+
+def results_table(result: Balance) -> pd.DataFrame:
+    """Each correction, exact beside the book's printed value where the preset has one."""
+    rows = []
+    for plane, f in result.corrections.items():
+        for quantity, label, shown, unit_label in (("mass", "rotor.q_mass", f.mass, "kg"),
+                                                   ("radius", "rotor.q_radius", f.radius * MM, "mm"),
+                                                   ("angle_deg", "rotor.q_angle",
+                                                    math.degrees(f.angle), "°")):
+            book = rotor.book.get(f"corrections.{plane}.{quantity}")
+            if quantity == "radius" and book is not None:
+                book *= MM
+            rows.append({t("rotor.col_plane"): plane, t("rotor.col_quantity"): t(label),
+                         t("rotor.col_exact"): f"{num(shown, 5)} {unit_label}",
+                         t("rotor.col_book"): "" if book is None else f"{num(book, 5)} {unit_label}",
+                         t("rotor.col_diff"): "" if book is None else
+                         f"{num(100 * (book - shown) / shown if shown else 0.0, 2)} %"})
+    return pd.DataFrame(rows)
+
+
+with main:
+    st.subheader(t("rotor.results"))
+    corrections_table = results_table(result)
+    st.dataframe(corrections_table, hide_index=True)
+    cols = st.columns(2)
+    cols[0].metric(t("rotor.residual_force"), f"{num(result.residual_force * MM, 2)} kg·mm")
+    cols[1].metric(t("rotor.residual_moment"), f"{num(result.residual_moment * MM**2, 2)} kg·mm²")
+    before, after = result.bearing_forces(False), result.bearing_forces(True)
+    if before:
+        cols = st.columns(4)
+        for i, bearing in enumerate(("A", "B")):
+            cols[i].metric(t("rotor.bearing_before", bearing=bearing), f"{num(before[bearing], 4)} N")
+            cols[2 + i].metric(t("rotor.bearing_after", bearing=bearing), f"{num(after[bearing], 2)} N")
+    csv_button(corrections_table, f"{rotor.id}-corrections.csv", key="csv")
+
+    names = [f"U{i + 1}" for i in range(len(rotor.masses))]
+    us = [m.mass * m.radius * unit(m.angle) * MM for m in rotor.masses]  # kg·mm
+    found = {p: f.u * MM for p, f in result.corrections.items()}
+    tab_v, tab_u, tab_end, tab_3d = st.tabs([t("rotor.tab_v"), t("rotor.tab_u"), t("rotor.tab_end"),
+                                             t("rotor.tab_3d")])
+    with tab_u:
+        scale_u = nice(max(abs(sum(us[:k + 1])) for k in range(len(us))) / 8)
+        scale_u = st.number_input(t("rotor.scale_u"), min_value=1e-6, value=scale_u, key=f"UU-{rotor.id}",
+                                  format="%.4g")
+        chart(polygon_figure(list(zip(names, us)), [(f"U{p}", u) for p, u in found.items()],
+                             scale_u, "kg·mm", t("rotor.tab_u"), t, look()),
+              f"{rotor.id}-U", key="upoly")
+    if rotor.mode == "dynamic":
+        with tab_v:
+            reference = url_choice(st.radio, t("rotor.reference"), ["II", "I"], "ref",
+                                   horizontal=True)
+            other = "I" if reference == "II" else "II"
+            x_ref = rotor.planes[reference]
+            vs = [u * (m.x - x_ref) * MM for u, m in zip(us, rotor.masses)]  # kg·mm²
+            v_fix = found[other] * (rotor.planes[other] - x_ref) * MM
+            scale_v = nice(max(abs(sum(vs[:k + 1])) for k in range(len(vs))) / 8)
+            scale_v = st.number_input(t("rotor.scale_v"), min_value=1e-6, value=scale_v,
+                                      key=f"UV{reference}-{rotor.id}", format="%.4g")
+            chart(polygon_figure([(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)],
+                                 scale_v, "kg·mm²", t("rotor.v_title", plane=reference), t, look()),
+                  f"{rotor.id}-V", key="vpoly")
+    else:
+        tab_v.info(t("rotor.static_no_v"))
+    with tab_end:
+        chart(end_view_figure([(f"m{i + 1}", m.radius * unit(m.angle)) for i, m in enumerate(rotor.masses)],
+                              [(f"m{p}", f.radius * unit(f.angle)) for p, f in result.corrections.items()],
+                              t("rotor.tab_end"), t, look()), f"{rotor.id}-end", key="end")
+    with tab_3d:
+        chart(rotor_3d_figure([(f"m{i + 1}", m.mass, m.radius * unit(m.angle), m.x)
+                               for i, m in enumerate(rotor.masses)],
+                              [(f"m{p}", f.mass, f.radius * unit(f.angle), rotor.planes[p])
+                               for p, f in result.corrections.items()],
+                              rotor.planes, t("rotor.tab_3d"), t, look()), f"{rotor.id}-3d", key="3d")
+
+    st.subheader(t("rotor.accuracy_title"))
+    rows = []
+    for plane, f in result.corrections.items():
+        size = abs(found[plane])
+        length_error, angle_error = graphical_error(size, scale_u * 100, precision / MM,
+                                                    vectors=len(us) + 1)
+        if rotor.corrections[plane].mass is None:  # the mass is read off: U = m·r, r given
+            error, exact, label = length_error / (f.radius * MM), f.mass, f"m{plane} [kg]"
+        else:  # the radius is read off
+            error, exact, label = length_error / f.mass, f.radius * MM, f"r{plane} [mm]"
+        rows.append({t("rotor.col_plane"): plane, t("rotor.col_graphical"): f"{label}: ± {num(error, 2)}",
+                     t("rotor.col_relative"): f"± {num(100 * error / exact, 2)} %",
+                     t("rotor.col_angle"): f"± {num(math.degrees(angle_error), 2)}°"})
+    st.dataframe(pd.DataFrame(rows), hide_index=True)
+    st.caption(t("rotor.accuracy_note", precision=num(precision, 2)))
+
+    with st.expander(t("rotor.steps_title")):
+        x_ref = rotor.planes.get("II", 0.0)
+        steps = pd.DataFrame([{
+            "i": i + 1, "y = r·sin φ [mm]": num(m.radius * math.sin(m.angle) * MM, 5),
+            "z = r·cos φ [mm]": num(m.radius * math.cos(m.angle) * MM, 5),
+            "L [mm]": num((m.x - x_ref) * MM, 5),
+            "m·L·y [kg·mm²]": num(m.mass * (m.x - x_ref) * m.radius * math.sin(m.angle) * MM**2, 5),
+            "m·L·z [kg·mm²]": num(m.mass * (m.x - x_ref) * m.radius * math.cos(m.angle) * MM**2, 5),
+            "m·y [kg·mm]": num(m.mass * m.radius * math.sin(m.angle) * MM, 5),
+            "m·z [kg·mm]": num(m.mass * m.radius * math.cos(m.angle) * MM, 5)}
+            for i, m in enumerate(rotor.masses)])
+        st.dataframe(steps, hide_index=True)
+        for plane, u in result.u_needed.items():
+            st.markdown(t("rotor.step_plane", plane=plane, Y=num(u.imag * MM, 5),
+                          Z=num(u.real * MM, 5), tan=num(u.imag / u.real, 5) if u.real else "∞",
+                          angle=num(math.degrees(result.corrections[plane].angle), 5)))

@@ -15,6 +15,9 @@ import numpy as np
 
 from mechanisms import SceneError, Scene, load_any, load_preset, preset_ids
 
+from mechanisms.rotor import Rotor
+
+from .balancing import Balance, BalanceError, balance
 from .diagnostics import explain_open, explain_singular
 from .kinematics import SINGULAR, Motion, solve
 from .structure import StructureError, decompose
@@ -106,8 +109,38 @@ def motion_json(motion: Motion) -> dict:
     }
 
 
+def rotor_json(result: Balance) -> dict:
+    return {"scene": result.rotor.id, "kind": "rotor",
+            "corrections": {p: {"mass": f.mass, "radius": f.radius,
+                                "angle_deg": math.degrees(f.angle)}
+                            for p, f in result.corrections.items()},
+            "residual": {"force": result.residual_force, "moment": result.residual_moment}}
+
+
+def _solve_rotor(rotor: Rotor, as_json: bool) -> int:
+    try:
+        result = balance(rotor)
+    except BalanceError as exc:
+        raise Unsolvable(str(exc)) from None
+    for note in result.notes:
+        print(f"note: {note}", file=sys.stderr)
+    data = _clean(rotor_json(result))
+    if as_json:
+        print(json.dumps(data, indent=1, ensure_ascii=False))
+        return 0
+    print(f"{rotor.id} — {rotor.title}\n")
+    print(f"{'plane':7s}{'mass kg':>12s}{'radius m':>12s}{'angle °':>10s}")
+    for plane, c in data["corrections"].items():
+        print(f"{plane:7s}{c['mass']:12.5g}{c['radius']:12.5g}{c['angle_deg']:10.2f}")
+    print(f"\nresidual after correction: force {data['residual']['force']:.3g} kg·m, "
+          f"moment {data['residual']['moment']:.3g} kg·m²")
+    return 0
+
+
 def _solve(args) -> int:
     scene = load_any(args.scene)
+    if isinstance(scene, Rotor):
+        return _solve_rotor(scene, args.json)
     motion = solve_instant(scene, args.at)
     for issue in motion.issues:
         print(f"warning: {explain_singular(scene, motion.at[0], issue.group, issue.worst_condition)}",
@@ -157,6 +190,9 @@ def _clean(value):
 
 def _structure(args) -> int:
     scene = load_any(args.scene)
+    if not isinstance(scene, Scene):
+        raise SceneError(f"{args.scene} is a {type(scene).__name__.lower()}, not a linkage: "
+                         "it has no Assur groups")
     st = decompose(scene)
     data = {"dof": st.dof, "members": st.moving_members, "lower_pairs": st.lower_pairs,
             "higher_pairs": st.higher_pairs,

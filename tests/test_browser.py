@@ -155,3 +155,16 @@ def test_projector_mode_fills_the_screen_without_the_sidebar(app_url, browser, t
     shot = tmp_path / f"projector-{size[0]}x{size[1]}.png"
     page.screenshot(path=str(shot))
     keep(shot)
+
+
+def test_the_rotor_page_draws_both_polygons(app_url, browser, tmp_path):
+    page = open_page(browser, f"{app_url}/rotor_balancing?lang=en&scene=zbirka-7.1")
+    page.get_by_text("0.35408 kg").first.wait_for(state="attached", timeout=30_000)  # a grid cell
+    shot = tmp_path / "rotor-v-polygon.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+    page.get_by_role("tab", name="U polygon (forces)").click()
+    page.wait_for_timeout(500)
+    shot = tmp_path / "rotor-u-polygon.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)

@@ -90,3 +90,23 @@ def test_the_hay_tedder_adds_its_travel_block():
     assert travel["crank_omega"] == pytest.approx(28.125)
     assert travel["step_distance"] == pytest.approx(3.0 * 2 * math.pi / 28.125 / 12)
     assert data["members"]["2"]["omega"] == pytest.approx(28.125)
+
+
+def test_rotor_json_has_the_corrections_and_the_residual():
+    out = run("solve", "zbirka-7.1", "--json")
+    assert out.returncode == 0, out.stderr
+    data = json.loads(out.stdout)
+    assert list(data) == ["scene", "kind", "corrections", "residual"]
+    assert data["kind"] == "rotor" and set(data["corrections"]) == {"I", "II"}
+    assert set(data["corrections"]["I"]) == {"mass", "radius", "angle_deg"}
+    assert data["corrections"]["I"]["radius"] == 0.2
+    assert data["residual"]["force"] < 1e-12 and data["residual"]["moment"] < 1e-12
+
+
+def test_an_unbalanceable_rotor_file_exits_3_with_the_reason(tmp_path):
+    bad = tmp_path / "flat.toml"
+    bad.write_text('kind = "rotor"\n[planes]\nI = 0.1\nII = 0.1\n[[masses]]\nmass = 0.1\n'
+                   'radius = 0.1\nangle = 0\nx = 0.3\n[corrections.I]\nradius = 0.1\n'
+                   '[corrections.II]\nradius = 0.1\n')
+    out = run("solve", str(bad))
+    assert out.returncode == 3 and "same axial position" in out.stderr

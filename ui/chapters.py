@@ -24,7 +24,8 @@ CHAPTERS = (
     Chapter("pages/assur_groups.py", "ch4.title", "ch4.summary", ":material/account_tree:"),
     Chapter("pages/kinetostatics.py", "ch5.title", "ch5.summary", ":material/balance:"),
     Chapter("pages/planetary_gears.py", "ch6.title", "ch6.summary", ":material/settings:"),
-    Chapter("pages/rotor_balancing.py", "ch7.title", "ch7.summary", ":material/autorenew:"),
+    Chapter("pages/rotor_balancing.py", "ch7.title", "ch7.summary", ":material/autorenew:",
+            ready=True),
 )
 
 

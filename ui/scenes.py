@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import streamlit as st
 
-from mechanisms import Scene, SceneError, parse_scene, preset_ids
-from mechanisms.writer import to_toml
+from mechanisms import Scene, SceneError, parse_document, preset_ids
+from mechanisms.rotor import Rotor
+from mechanisms.writer import rotor_to_toml, to_toml
 from ui.cache import preset
 from ui.i18n import t
 from ui.url import url_choice
@@ -13,22 +14,30 @@ from ui.url import url_choice
 UPLOADED = "upload"
 
 
-def _read_upload() -> None:
+KINDS = {"linkage": Scene, "rotor": Rotor}
+
+
+def _read_upload(kind: str) -> None:
     file = st.session_state.get("upload_file")
     if file is None:
         return
     try:
-        st.session_state["uploaded_scene"] = parse_scene(file.getvalue(), source=file.name)
+        scene = parse_document(file.getvalue(), source=file.name)
+        if not isinstance(scene, KINDS[kind]):
+            raise SceneError(t("scene.wrong_kind", file=file.name, kind=kind))
+        st.session_state["uploaded_scene"] = scene
         st.session_state["upload_error"] = None
         st.session_state["scene"] = UPLOADED
     except SceneError as exc:
         st.session_state["upload_error"] = str(exc)
 
 
-def scene_picker(kinds: tuple[str, ...] | None = None) -> Scene:
+def scene_picker(kind: str = "linkage"):
     """The scene select box (kept in the URL), an upload, and a download of the scene."""
-    options = [pid for pid in preset_ids() if kinds is None or pid.startswith(kinds)]
+    options = preset_ids(kind)
     uploaded = st.session_state.get("uploaded_scene")
+    if not isinstance(uploaded, KINDS[kind]):
+        uploaded = None
     if uploaded is not None:
         options.append(UPLOADED)
 
@@ -41,13 +50,15 @@ def scene_picker(kinds: tuple[str, ...] | None = None) -> Scene:
     with st.expander(t("scene.about")):
         st.caption(scene.source)
         st.write(scene.note)
-        st.file_uploader(t("scene.upload"), type=["toml"], key="upload_file", on_change=_read_upload)
+        st.file_uploader(t("scene.upload"), type=["toml"], key="upload_file", on_change=_read_upload,
+                         args=(kind,))
         if st.session_state.get("upload_error"):
             st.error(st.session_state["upload_error"])
     return scene
 
 
-def scene_download(scene: Scene) -> None:
+def scene_download(scene) -> None:
     """The current scene, with the user's changes, as a TOML file that uploads again."""
-    st.download_button(t("scene.download"), to_toml(scene).encode("utf-8"), f"{scene.id}.toml",
+    text = rotor_to_toml(scene) if isinstance(scene, Rotor) else to_toml(scene)
+    st.download_button(t("scene.download"), text.encode("utf-8"), f"{scene.id}.toml",
                        mime="application/toml", on_click="ignore", icon=":material/download:")

@@ -1,0 +1,60 @@
+"""Chapter 7 page driven as a user would (AppTest)."""
+
+import json
+
+import pytest
+
+from .test_pages import page
+
+
+def rotor_page(**state):
+    return page("pages/rotor_balancing.py", lang="en", **state)
+
+
+def corrections(at):
+    """The results table (the first table with a "quantity" column; the editor comes first)."""
+    return next(d.value for d in at.dataframe if "quantity" in d.value.columns)
+
+
+def exact(at, plane: str, quantity: str) -> float:
+    table = corrections(at)
+    row = table[(table["plane"] == plane) & (table["quantity"] == quantity)].iloc[0]
+    return float(row["exact"].split()[0])
+
+
+def test_task_7_1_shows_exact_beside_the_book():
+    at = rotor_page(scene="zbirka-7.1")
+    assert not at.exception
+    assert exact(at, "I", "mass") == pytest.approx(0.35408, abs=1e-5)
+    assert corrections(at).loc[0, "book"] == "0.354 kg"
+
+
+def test_a_bigger_correction_radius_needs_a_proportionally_smaller_mass():
+    at = rotor_page(scene="zbirka-7.1")
+    before = exact(at, "I", "mass")
+    at.number_input(key="valueI").set_value(400.0).run()  # r_I from 200 mm to 400 mm
+    assert exact(at, "I", "mass") == pytest.approx(before / 2, rel=1e-4)
+
+
+def test_planes_at_the_same_place_get_a_message_not_a_traceback():
+    at = rotor_page(scene="zbirka-7.1")
+    at.number_input(key="xII").set_value(450.0).run()
+    assert not at.exception
+    assert "same axial position" in at.error[0].value
+
+
+def test_static_mode_uses_one_plane():
+    at = rotor_page(scene="zbirka-7.2")
+    at.radio(key="mode").set_value("static").run()
+    assert not at.exception
+    assert set(corrections(at)["plane"]) == {"I"}
+
+
+def test_every_task_renders_its_polygons():
+    for task in range(1, 7):
+        at = rotor_page(scene=f"zbirka-7.{task}")
+        assert not at.exception
+        ids = [e.proto.id for e in at.get("plotly_chart")]
+        assert any(i.endswith("upoly") for i in ids) and any(i.endswith("vpoly") for i in ids)
+        spec = json.loads(at.get("plotly_chart")[0].proto.spec)
+        assert len(spec["layout"]["annotations"]) >= 8  # 3 masses + the closing vector, labelled
