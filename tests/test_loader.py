@@ -115,7 +115,16 @@ def test_loads_are_read_in_si_units():
     assert force.angle == pytest.approx(3.141592653589793)
 
 
-@pytest.mark.parametrize("pid", preset_ids())
+@pytest.mark.parametrize("pid", preset_ids("rotor"))
+def test_a_downloaded_rotor_uploads_again_unchanged(pid):
+    from mechanisms import parse_document
+    from mechanisms.writer import rotor_to_toml
+
+    rotor = load_preset(pid)
+    assert parse_document(rotor_to_toml(rotor)) == rotor
+
+
+@pytest.mark.parametrize("pid", preset_ids("linkage"))
 def test_a_downloaded_scene_uploads_again_unchanged(pid):
     from mechanisms.writer import to_toml
     from solvers import solve
