@@ -93,7 +93,8 @@ class Motion:
 
     @property
     def condition(self) -> np.ndarray:
-        """Worst condition number (1/|sin γ|) over the solved groups at each position."""
+        """Worst condition number (1/transmission) over the solved groups at each position:
+        1 is a well-placed group, 10³ and above is near a dead centre."""
         if not self.transmission:
             return np.ones_like(self.at)
         worst = np.min(np.vstack(list(self.transmission.values())), axis=0)

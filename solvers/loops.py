@@ -60,6 +60,7 @@ class DyadLoop:
     free: tuple[int, ...]  # dyad members whose angle is unknown
     slides: tuple[str, ...]  # prismatic pairs whose slide is unknown
     branch: int
+    size: float  # the group's own length scale, to compare angle and slide columns
 
     @property
     def unknowns(self) -> tuple:
@@ -95,7 +96,19 @@ def build_loop(scene: Scene, group: Group) -> DyadLoop:
         steps.append(Leg(ref, st.local * cmath.exp(1j * off), st.slide))
     slides = tuple(p.name for p in group.pairs if p.kind == "prismatic")
     branch = scene.assembly.get(tuple(sorted(group.members)), 1)
-    return DyadLoop(group, start, tuple(steps), (body, at), angle_of, free, slides, branch)
+    return DyadLoop(group, start, tuple(steps), (body, at), angle_of, free, slides, branch,
+                    _size(scene, group))
+
+
+def _size(scene: Scene, group: Group) -> float:
+    """The group's members' extent, or else the scene's (sliders alone have no length)."""
+    own = [abs(c) for m in group.members for c in scene.members[m].points.values()]
+    if max(own) > 0:
+        return max(own)
+    first = next(iter(scene.frame.values()))
+    spans = [abs(z - first) for z in scene.frame.values()]
+    spans += [abs(c) for m in scene.members.values() for c in m.points.values()]
+    return max(spans) or 1.0
 
 
 @dataclass(frozen=True)
@@ -161,7 +174,7 @@ def cross(a, b):
 @dataclass
 class DyadSolution:
     bodies: dict[int, Body]
-    transmission: np.ndarray | None  # |sin| between the unknown directions; 0 = dead centre
+    transmission: np.ndarray | None  # how far from a dead centre: 0 = singular, ~1 = well off
     closed: np.ndarray  # where the loop closes
 
 
@@ -203,7 +216,9 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
     columns += [next(u for leg, u in zip(legs, units) if leg.slide == name) for name in loop.slides]
     c1, c2 = columns
     det = cross(c1, c2)
-    transmission = np.abs(det) / (np.abs(c1) * np.abs(c2))
+    # |det| with every angle column measured against the group's size: about the sine of the
+    # transmission angle for two links, and s/size when a slider runs into its guide's pivot
+    transmission = np.abs(det) / loop.size ** len(loop.free)
     rhs = b_end.velocity(c_end) - b_start.velocity(c_start)
     for leg, v in zip(legs, values):
         if leg.ref not in coef:
