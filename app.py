@@ -23,4 +23,5 @@ language_picker()
 projector_switch()
 pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
 pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in CHAPTERS]
+pages.append(st.Page("pages/textbook_check.py", title=t("check.title"), icon=":material/fact_check:"))
 st.navigation(pages).run()

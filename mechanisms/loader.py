@@ -20,7 +20,7 @@ PRESETS = Path(__file__).parent / "presets"
 MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before parsing
 
 TOP_KEYS = {"id", "kind", "title", "source", "note", "gravity", "pairs", "frame", "driver",
-            "members", "assembly", "forces", "moments", "book", "travel"}
+            "members", "assembly", "forces", "moments", "book", "travel", "book_notes"}
 TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
 PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "angle",
@@ -198,6 +198,7 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         moments=_moments(raw, r, members),
         gravity=r.number(raw, "gravity", "", default=0.0, non_negative=True),
         book=_book(raw, r),
+        book_notes=book_notes(raw, r),
     )
     if "travel" in raw:
         scene = scene.with_(travel=_travel(raw, r, driver))
@@ -417,6 +418,14 @@ def _travel(raw: dict, r: _Reader, driver: Driver) -> Travel:
     return Travel(*(r.number(spec, k, "travel", positive=True)
                     for k in ("speed", "wheel_radius", "sprocket_wheel", "sprocket_crank")),
                   angle=math.radians(r.number(spec, "angle", "travel", default=0.0)))
+
+
+def book_notes(raw: dict, r: _Reader) -> dict[str, str]:
+    """One-line reasons why printed values differ, keyed like ``[book]``."""
+    table = raw.get("book_notes", {})
+    if not isinstance(table, dict):
+        raise r.fail("book_notes", "must be a table of strings keyed like [book]")
+    return {k: r.text(table, k, "book_notes") for k in table}
 
 
 def _book(raw: dict, r: _Reader) -> dict[str, float]:

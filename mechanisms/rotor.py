@@ -11,12 +11,12 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 
-from .loader import SceneError, _Reader
+from .loader import SceneError, _Reader, book_notes
 
 PLANES = ("I", "II")
 QUANTITIES = ("mass", "radius", "angle")
 TOP_KEYS = {"id", "kind", "title", "source", "note", "omega", "mode", "planes", "masses",
-            "corrections", "bearings", "book"}
+            "corrections", "bearings", "book", "book_notes"}
 
 
 @dataclass(frozen=True)
@@ -53,6 +53,7 @@ class Rotor:
     omega: float | None = None  # rad/s, for the bearing forces
     bearings: dict[str, float] = field(default_factory=dict)  # axial positions A, B, m
     book: dict[str, float] = field(default_factory=dict)
+    book_notes: dict[str, str] = field(default_factory=dict)
 
     def with_(self, **changes) -> Rotor:
         return dataclasses.replace(self, **changes)
@@ -101,6 +102,7 @@ def parse_rotor(raw: dict, source: str, default_id: str) -> Rotor:
         omega=None if omega is None else r.number(raw, "omega", "", positive=True),
         bearings={k: r.number(bearings, k, "bearings") for k in bearings},
         book={k: r.number(raw.get("book", {}), k, "book") for k in raw.get("book", {})},
+        book_notes=book_notes(raw, r),
     )
 
 

@@ -157,6 +157,7 @@ class Scene:
     gravity: float = 0.0  # m/s², acting along −y when > 0
     book: dict[str, float] = field(default_factory=dict)  # the book's printed values
     travel: Travel | None = None
+    book_notes: dict[str, str] = field(default_factory=dict)  # why a printed value is off
 
     def pair(self, name: str) -> Pair:
         for p in self.pairs:

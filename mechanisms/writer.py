@@ -78,10 +78,19 @@ def to_toml(scene: Scene) -> str:
                 f"follows_member = {'true' if f.follows_member else 'false'}"]
     for m in scene.moments:
         out += ["\n[[moments]]", f"member = {m.member}", f"value = {_n(m.value)}"]
-    if scene.book:
-        out.append("\n[book]")
-        out += [f"{_s(k)} = {_n(v)}" for k, v in scene.book.items()]
+    out += _book(scene.book, scene.book_notes)
     return "\n".join(out) + "\n"
+
+
+def _book(book: dict[str, float], notes: dict[str, str]) -> list[str]:
+    out = []
+    if book:
+        out.append("\n[book]")
+        out += [f"{_s(k)} = {_n(v)}" for k, v in book.items()]
+    if notes:
+        out.append("\n[book_notes]")
+        out += [f"{_s(k)} = {_s(v)}" for k, v in notes.items()]
+    return out
 
 
 def rotor_to_toml(rotor: Rotor) -> str:
@@ -103,7 +112,5 @@ def rotor_to_toml(rotor: Rotor) -> str:
     if rotor.bearings:
         out.append("\n[bearings]")
         out += [f"{k} = {_n(v)}" for k, v in rotor.bearings.items()]
-    if rotor.book:
-        out.append("\n[book]")
-        out += [f"{_s(k)} = {_n(v)}" for k, v in rotor.book.items()]
+    out += _book(rotor.book, rotor.book_notes)
     return "\n".join(out) + "\n"

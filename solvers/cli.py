@@ -11,20 +11,14 @@ import json
 import math
 import sys
 
-import numpy as np
-
 from mechanisms import SceneError, Scene, load_any, load_preset, preset_ids
 
 from mechanisms.rotor import Rotor
 
-from .balancing import Balance, BalanceError, balance
-from .diagnostics import explain_open, explain_singular
-from .kinematics import SINGULAR, Motion, solve
+from .balancing import BalanceError, balance
+from .diagnostics import Unsolvable, explain_singular, solve_instant
+from .report import motion_json, rotor_json
 from .structure import StructureError, decompose
-
-
-class Unsolvable(Exception):
-    """The mechanism cannot be in the requested position."""
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -70,53 +64,6 @@ def _list(args) -> int:
     return 0
 
 
-def _driver_value(scene: Scene, at: float | None) -> float:
-    if at is None:
-        return scene.driver.at
-    return math.radians(at) if scene.driver.kind == "rotating" else at
-
-
-def solve_instant(scene: Scene, at: float | None) -> Motion:
-    """Solve one instant, or raise ``Unsolvable`` with the reason."""
-    value = _driver_value(scene, at)
-    structure = decompose(scene)
-    motion = solve(scene, value, structure=structure)
-    for issue in motion.issues:
-        if issue.problem == "open":
-            raise Unsolvable(explain_open(scene, value, issue, structure))
-    for name, t in motion.transmission.items():
-        if t[0] < SINGULAR:
-            raise Unsolvable(explain_singular(scene, value, name, 1.0 / max(t[0], 1e-300)))
-    return motion
-
-
-def motion_json(motion: Motion) -> dict:
-    """The instant's results in the documented JSON layout (first position of ``motion``)."""
-    scene = motion.scene
-    at = motion.at[0]
-    return {
-        "scene": scene.id,
-        "at": math.degrees(at) if scene.driver.kind == "rotating" else at,
-        "points": {name: {"x": p.x[0], "y": p.y[0], "vx": p.vx[0], "vy": p.vy[0],
-                          "ax": p.ax[0], "ay": p.ay[0]}
-                   for name, p in sorted(motion.points.items())},
-        "members": {str(n): {"angle_deg": math.degrees(m.angle[0]) % 360.0,
-                             "omega": m.omega[0], "epsilon": m.epsilon[0]}
-                    for n, m in sorted(motion.members.items())},
-        "sliders": {name: {"s": s.s[0], "v": s.v[0], "a": s.a[0],
-                           "coriolis": [s.coriolis[0].real, s.coriolis[0].imag]}
-                    for name, s in motion.sliders.items()},
-    }
-
-
-def rotor_json(result: Balance) -> dict:
-    return {"scene": result.rotor.id, "kind": "rotor",
-            "corrections": {p: {"mass": f.mass, "radius": f.radius,
-                                "angle_deg": math.degrees(f.angle)}
-                            for p, f in result.corrections.items()},
-            "residual": {"force": result.residual_force, "moment": result.residual_moment}}
-
-
 def _solve_rotor(rotor: Rotor, as_json: bool) -> int:
     try:
         result = balance(rotor)
@@ -124,7 +71,7 @@ def _solve_rotor(rotor: Rotor, as_json: bool) -> int:
         raise Unsolvable(str(exc)) from None
     for note in result.notes:
         print(f"note: {note}", file=sys.stderr)
-    data = _clean(rotor_json(result))
+    data = rotor_json(result)
     if as_json:
         print(json.dumps(data, indent=1, ensure_ascii=False))
         return 0
@@ -146,12 +93,6 @@ def _solve(args) -> int:
         print(f"warning: {explain_singular(scene, motion.at[0], issue.group, issue.worst_condition)}",
               file=sys.stderr)
     data = motion_json(motion)
-    if scene.travel:
-        tr = scene.travel
-        data["travel"] = {"wheel_omega": tr.wheel_omega, "crank_omega": tr.crank_omega,
-                          "cycle_time": tr.cycle_time, "step_time": tr.step_time(),
-                          "step_distance": tr.step_distance()}
-    data = _clean(data)
     if args.json:
         print(json.dumps(data, indent=1, ensure_ascii=False))
         return 0
@@ -175,17 +116,6 @@ def _solve(args) -> int:
             cor = f"({s['coriolis'][0]:.5g}, {s['coriolis'][1]:.5g})"
             print(f"{name:10s} {s['s']:10.5g} {s['v']:10.5g} {s['a']:10.5g} {cor:>23s}")
     return 0
-
-
-def _clean(value):
-    """Plain floats for JSON; -0.0 printed as 0.0."""
-    if isinstance(value, dict):
-        return {k: _clean(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [_clean(v) for v in value]
-    if isinstance(value, (float, np.floating)):
-        return float(value) + 0.0
-    return value
 
 
 def _structure(args) -> int:

@@ -8,8 +8,12 @@ import numpy as np
 
 from mechanisms.schema import Scene
 
-from .kinematics import GroupIssue, solve
+from .kinematics import SINGULAR, GroupIssue, Motion, solve
 from .structure import Structure, decompose
+
+
+class Unsolvable(Exception):
+    """The mechanism cannot be in the requested position; the message says why."""
 
 WHY_OPEN = {
     "RRR": "the two links cannot reach each other: the distance between the group's outer "
@@ -81,3 +85,26 @@ def explain_singular(scene: Scene, at: float, group: str, condition: float) -> s
     return (f"group II({group}) is at or near a dead centre at {format_driver(scene, at)} "
             f"(condition number {condition:.3g}): velocities and accelerations grow without "
             "bound there")
+
+
+def _driver_value(scene: Scene, at: float | None) -> float:
+    if at is None:
+        return scene.driver.at
+    return math.radians(at) if scene.driver.kind == "rotating" else at
+
+
+def solve_instant(scene: Scene, at: float | None) -> Motion:
+    """Solve one instant (driver value in degrees or metres, default the scene's own), or
+    raise ``Unsolvable`` with the reason."""
+    value = _driver_value(scene, at)
+    structure = decompose(scene)
+    motion = solve(scene, value, structure=structure)
+    for issue in motion.issues:
+        if issue.problem == "open":
+            raise Unsolvable(explain_open(scene, value, issue, structure))
+    for name, t in motion.transmission.items():
+        if t[0] < SINGULAR:
+            raise Unsolvable(explain_singular(scene, value, name, 1.0 / max(t[0], 1e-300)))
+    return motion
+
+

@@ -15,10 +15,14 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def page(path: str, **state) -> AppTest:
-    at = AppTest.from_file(str(ROOT / path), default_timeout=60)
+    """Open the app as a user does (app.py routes), with ``state`` preset, on page ``path``."""
+    at = AppTest.from_file(str(ROOT / "app.py"), default_timeout=60)
     for key, value in state.items():
         at.session_state[key] = value
-    return at.run()
+    at.run()
+    if path != "app.py":
+        at.switch_page(path).run()
+    return at
 
 
 def decode(value):
@@ -53,3 +57,17 @@ def test_every_chapter_page_renders_in_every_language(chapter, language):
     at = page(chapter.file, lang=language)
     assert not at.exception
     assert at.title[0].value.endswith(t(chapter.title, language=language))
+
+
+def test_every_preset_that_quotes_the_book_is_on_the_textbook_check_page():
+    from mechanisms import load_preset, preset_ids
+
+    at = page("pages/textbook_check.py", lang="en")
+    assert not at.exception
+    headings = " ".join(h.value for h in at.subheader)
+    quoting = [pid for pid in preset_ids() if load_preset(pid).book]
+    assert len(quoting) >= 9
+    for pid in quoting:
+        assert pid in headings
+    rows = sum(len(d.value) for d in at.dataframe)
+    assert rows == sum(len(load_preset(pid).book) for pid in quoting)

@@ -133,3 +133,15 @@ def test_task_2_2_positions_and_rates_match_independent_newton():
     assert m[6].omega[0] == pytest.approx(rate("phi6"), rel=1e-5)
     assert s["3-4"].v[0] == pytest.approx(rate("r3"), rel=1e-5)
     assert complex(motion.points["M"].v[0]) == pytest.approx(rate("m"), rel=1e-5)
+
+
+def test_task_2_2_accelerations_match_second_differences_of_the_independent_solution():
+    """ε₃ and r̈₃ (where the book's printed values differ) from the Newton positions alone."""
+    scene = load_preset("analitika-2.2")
+    ry, v, h = 0.17, 3.0, 1e-4
+    motion = solve(scene, [ry])
+    back, mid, ahead = (task_2_2_positions(x) for x in (ry - h, ry, ry + h))
+    second = lambda key: v * v * (ahead[key] - 2 * mid[key] + back[key]) / h**2  # noqa: E731
+    assert motion.members[3].epsilon[0] == pytest.approx(second("phi3"), rel=1e-4)
+    assert motion.sliders["3-4"].a[0] == pytest.approx(second("r3"), rel=1e-4)
+    assert motion.members[6].epsilon[0] == pytest.approx(second("phi6"), rel=1e-4)

@@ -43,3 +43,14 @@ def coming_soon(file: str) -> None:
     page_title(file)
     st.write(t(chapter(file).summary))
     st.info(t("app.coming_soon_page"))
+
+
+def page_for(preset_id: str) -> str:
+    """The page a preset belongs to, from its task number (zbirka-7.1 → rotor balancing)."""
+    chapter = preset_id.split("-")[-1].split(".")[0]
+    if preset_id.startswith("analitika"):
+        chapter = "2"
+    pages = {"1": "trajectories", "2": "velocity_plans", "3": "velocity_plans",
+             "4": "assur_groups", "5": "kinetostatics", "6": "planetary_gears",
+             "7": "rotor_balancing"}
+    return f"pages/{pages.get(chapter, 'trajectories')}.py"

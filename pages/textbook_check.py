@@ -1,0 +1,66 @@
+"""Textbook check: every value a preset quotes from the book, beside the exact value."""
+
+from __future__ import annotations
+
+import pandas as pd
+import streamlit as st
+
+from mechanisms import load_preset, preset_ids
+from solvers.diagnostics import Unsolvable
+from solvers.textbook import BookRow, check
+from ui.chapters import page_for
+from ui.export import csv_button
+from ui.i18n import num, t
+
+VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs",
+            "missing": "check.missing"}
+
+
+@st.cache_data(max_entries=4)
+def all_checks() -> dict[str, list[BookRow] | str]:
+    """Every preset that quotes the book: its rows, or why it cannot be solved."""
+    out: dict[str, list[BookRow] | str] = {}
+    for pid in preset_ids():
+        scene = load_preset(pid)
+        if scene.book:
+            try:
+                out[pid] = check(scene)
+            except Unsolvable as exc:
+                out[pid] = str(exc)
+    return out
+
+
+def order(pid: str) -> tuple:
+    """By chapter and task: analitika-2.1 sits with chapter 2."""
+    number = pid.split("-")[-1]
+    return tuple(int(p) for p in number.split(".") if p.isdigit()), pid
+
+
+st.title(f":material/fact_check: {t('check.title')}")
+st.write(t("check.intro"))
+checks = all_checks()
+everything = [row for rows in checks.values() if isinstance(rows, list) for row in rows]
+cols = st.columns(3)
+for col, verdict in zip(cols, ("agrees", "close", "differs")):
+    col.metric(t(VERDICTS[verdict]), sum(r.verdict == verdict for r in everything))
+
+table = []
+for pid in sorted(checks, key=order):
+    scene = load_preset(pid)
+    st.subheader(f"{pid} — {scene.title}")
+    st.page_link(page_for(pid), label=t("check.open"), icon=":material/open_in_new:",
+                 query_params={"scene": pid})
+    rows = checks[pid]
+    if isinstance(rows, str):
+        st.error(rows)
+        continue
+    frame = pd.DataFrame([{
+        t("check.col_quantity"): r.key, t("check.col_book"): num(r.book, 6),
+        t("check.col_exact"): "—" if r.exact is None else num(r.exact, 6),
+        t("check.col_difference"): "—" if r.difference is None else num(r.difference, 3),
+        t("check.col_verdict"): t(VERDICTS[r.verdict]), t("check.col_note"): r.note}
+        for r in rows])
+    st.dataframe(frame, hide_index=True)
+    table += [dict(preset=pid, key=r.key, book=r.book, exact=r.exact, verdict=r.verdict,
+                   note=r.note) for r in rows]
+csv_button(pd.DataFrame(table), "textbook-check.csv", key="csv")

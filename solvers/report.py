@@ -1,0 +1,78 @@
+"""The results of a scene as plain data: the JSON of ``python -m solvers solve`` and the
+textbook check both read them from here."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from mechanisms.rotor import Rotor
+from mechanisms.schema import Scene
+
+from .balancing import Balance, balance
+from .diagnostics import solve_instant
+from .kinematics import Motion
+
+
+def motion_json(motion: Motion) -> dict:
+    """One instant (the first position of ``motion``) in the documented JSON layout."""
+    scene = motion.scene
+    at = motion.at[0]
+    data = {
+        "scene": scene.id,
+        "at": math.degrees(at) if scene.driver.kind == "rotating" else at,
+        "points": {name: {"x": p.x[0], "y": p.y[0], "vx": p.vx[0], "vy": p.vy[0],
+                          "ax": p.ax[0], "ay": p.ay[0]}
+                   for name, p in sorted(motion.points.items())},
+        "members": {str(n): {"angle_deg": math.degrees(m.angle[0]) % 360.0,
+                             "omega": m.omega[0], "epsilon": m.epsilon[0]}
+                    for n, m in sorted(motion.members.items())},
+        "sliders": {name: {"s": s.s[0], "v": s.v[0], "a": s.a[0],
+                           "coriolis": [s.coriolis[0].real, s.coriolis[0].imag]}
+                    for name, s in motion.sliders.items()},
+    }
+    if scene.travel:
+        tr = scene.travel
+        data["travel"] = {"wheel_omega": tr.wheel_omega, "crank_omega": tr.crank_omega,
+                          "cycle_time": tr.cycle_time, "step_time": tr.step_time(),
+                          "step_distance": tr.step_distance()}
+    return clean(data)
+
+
+def rotor_json(result: Balance) -> dict:
+    return clean({"scene": result.rotor.id, "kind": "rotor",
+                  "corrections": {p: {"mass": f.mass, "radius": f.radius,
+                                      "angle_deg": math.degrees(f.angle)}
+                                  for p, f in result.corrections.items()},
+                  "residual": {"force": result.residual_force, "moment": result.residual_moment}})
+
+
+def clean(value):
+    """Plain floats for JSON; -0.0 printed as 0.0."""
+    if isinstance(value, dict):
+        return {k: clean(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [clean(v) for v in value]
+    if isinstance(value, (float, np.floating)):
+        return float(value) + 0.0
+    return value
+
+
+def flatten(data: dict, prefix: str = "") -> dict[str, float]:
+    """{"members": {"4": {"omega": 7.8}}} → {"members.4.omega": 7.8} (the book keys)."""
+    out = {}
+    for key, value in data.items():
+        path = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out.update(flatten(value, f"{path}."))
+        elif isinstance(value, (int, float)) and not isinstance(value, bool):
+            out[path] = float(value)
+    return out
+
+
+def exact_values(scene: Scene | Rotor) -> dict[str, float]:
+    """Every result of the scene at its own instant, keyed like its ``[book]`` table."""
+    if isinstance(scene, Rotor):
+        return flatten(rotor_json(balance(scene)))
+    return flatten(motion_json(solve_instant(scene, None)))

@@ -1,0 +1,60 @@
+"""Book vs exact: every value a preset quotes from the textbook, beside the value computed here.
+
+The book's printed answers carry slips (a swapped digit, a copied angle, a lost sign) and
+the rounding of its intermediate steps. A printed value *agrees* when it matches the exact
+one to within one unit of its last printed digit, is *close* when it is off by less than
+3 % (rounded intermediate values, or a drawing read off to its precision; for angles,
+by at most 2°, a protractor's reading), and *differs* otherwise — most likely a slip, explained where the preset's ``[book_notes]`` can tell.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from decimal import Decimal
+
+from .report import exact_values
+
+CLOSE = 0.03
+CLOSE_ANGLE = 2.0  # degrees
+
+
+@dataclass(frozen=True)
+class BookRow:
+    key: str  # e.g. "members.4.omega"
+    book: float
+    exact: float | None  # None when the scene does not produce that value
+    verdict: str  # "agrees", "close", "differs" or "missing"
+    note: str = ""
+
+    @property
+    def difference(self) -> float | None:
+        return None if self.exact is None else self.book - self.exact
+
+
+def printed_unit(value: float) -> float:
+    """One unit of the last digit as printed: 8.148 → 0.001, 118.0 → 1."""
+    exponent = Decimal(repr(value)).normalize().as_tuple().exponent
+    return 10.0 ** min(int(exponent), 0)
+
+
+def verdict(key: str, book: float, exact: float) -> str:
+    diff = book - exact
+    angle = key.endswith("angle_deg")
+    if angle:
+        diff = (diff + 180.0) % 360.0 - 180.0
+    if abs(diff) <= printed_unit(book) * 1.000001:
+        return "agrees"
+    limit = CLOSE_ANGLE if angle else CLOSE * max(abs(exact), 1e-12)
+    return "close" if abs(diff) <= limit else "differs"
+
+
+def check(scene) -> list[BookRow]:
+    """Every printed value of the preset against the exact solution of its data."""
+    exact = exact_values(scene)
+    notes = getattr(scene, "book_notes", {})
+    rows = []
+    for key, book in scene.book.items():
+        value = exact.get(key)
+        rows.append(BookRow(key, book, value, "missing" if value is None else verdict(key, book, value),
+                            notes.get(key, "")))
+    return rows
