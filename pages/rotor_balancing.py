@@ -15,6 +15,7 @@ from ui.export import chart, csv_button
 from ui.i18n import num, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
+from ui.selfcheck import Quantity, answer_box
 from ui.url import seed, url_choice
 
 MM = 1e3  # the course writes radii and distances in mm, U in kg·mm and V in kg·mm²
@@ -177,7 +178,7 @@ with main:
                               rotor.planes, t("rotor.tab_3d"), t, look()), f"{rotor.id}-3d", key="3d")
 
     st.subheader(t("rotor.accuracy_title"))
-    rows = []
+    rows, answers = [], []
     for plane, f in result.corrections.items():
         size = abs(found[plane])
         length_error, angle_error = graphical_error(size, scale_u * 100, precision / MM,
@@ -186,11 +187,16 @@ with main:
             error, exact, label = length_error / (f.radius * MM), f.mass, f"m{plane} [kg]"
         else:  # the radius is read off
             error, exact, label = length_error / f.mass, f.radius * MM, f"r{plane} [mm]"
+        unit_of = label.split("[")[1].rstrip("]")
+        answers += [Quantity(label, exact, unit_of, drawing=error),
+                    Quantity(f"φ{plane} [°]", math.degrees(f.angle), "°",
+                             drawing=math.degrees(angle_error))]
         rows.append({t("rotor.col_plane"): plane, t("rotor.col_graphical"): f"{label}: ± {num(error, 2)}",
                      t("rotor.col_relative"): f"± {num(100 * error / exact, 2)} %",
                      t("rotor.col_angle"): f"± {num(math.degrees(angle_error), 2)}°"})
     st.dataframe(pd.DataFrame(rows), hide_index=True)
     st.caption(t("rotor.accuracy_note", precision=num(precision, 2)))
+    answer_box(answers, key="self")
 
     with st.expander(t("rotor.steps_title")):
         x_ref = rotor.planes.get("II", 0.0)

@@ -19,6 +19,7 @@ from ui.export import chart, csv_button
 from ui.i18n import num, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
+from ui.selfcheck import Quantity, answer_box
 from ui.url import seed, url_choice
 
 RESOLUTIONS = (12, 72, 360, 3600)
@@ -136,6 +137,15 @@ with main:
                        speed=num(slowest, 3)))
 
 with controls:
+    answers = [Quantity(t("traj.time_per_cycle"), cycle_time(scene), "s")]
+    answers += [Quantity(t("traj.path_length", point=p), path_length(fine.points[p].z), "m")
+                for p in points]
+    if scene.travel:
+        tr = scene.travel
+        answers += [Quantity(t("traj.omega_b"), tr.crank_omega, "s⁻¹"),
+                    Quantity(t("traj.step_time"), tr.step_time(), "s"),
+                    Quantity(t("traj.step_distance"), tr.step_distance(), "m")]
+    answer_box(answers, key="self")
     st.metric(t("traj.time_per_cycle"), f"{num(cycle_time(scene))} s")
     for name in points:
         st.metric(t("traj.path_length", point=name), f"{num(path_length(fine.points[name].z))} m")

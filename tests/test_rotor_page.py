@@ -58,3 +58,15 @@ def test_every_task_renders_its_polygons():
         assert any(i.endswith("upoly") for i in ids) and any(i.endswith("vpoly") for i in ids)
         spec = json.loads(at.get("plotly_chart")[0].proto.spec)
         assert len(spec["layout"]["annotations"]) >= 8  # 3 masses + the closing vector, labelled
+
+
+def test_a_student_checks_a_graphical_answer():
+    at = rotor_page(scene="zbirka-7.1")
+    at.text_input(key="self_value").input("0,354").run()  # the first quantity: m_I [kg]
+    assert "Correct" in at.success[0].value
+    at.text_input(key="self_value").input("0,36").run()  # 1.7 % off: within a 0.5 mm drawing
+    assert "good graphical answer" in at.info[-1].value
+    at.text_input(key="self_value").input("0,5").run()
+    assert "Off by" in at.warning[-1].value
+    at.text_input(key="self_value").input("abc").run()
+    assert "not a number" in at.error[-1].value

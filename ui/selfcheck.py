@@ -1,0 +1,55 @@
+"""Exam self-check: the student types a value and learns how far it is from the exact one."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import streamlit as st
+
+from ui.i18n import num, parse_number, t
+
+
+@dataclass(frozen=True)
+class Quantity:
+    label: str  # already translated, with its unit
+    exact: float
+    unit: str
+    drawing: float | None = None  # the error a drawing at the user's scales allows
+
+
+def grade(typed: float, quantity: Quantity, tolerance: float = 0.005) -> tuple[str, float]:
+    """("correct" | "drawing" | "off", relative error): correct within 0.5 %, within the
+    drawing's expected error for a graphical answer, or off by the returned fraction."""
+    error = typed - quantity.exact
+    relative = abs(error) / abs(quantity.exact) if quantity.exact else abs(error)
+    if relative <= tolerance:
+        return "correct", relative
+    if quantity.drawing is not None and abs(error) <= quantity.drawing:
+        return "drawing", relative
+    return "off", relative
+
+
+def answer_box(quantities: list[Quantity], key: str) -> None:
+    """Pick a quantity, type a value (0,25 or 0.25), see the verdict."""
+    with st.expander(t("self.title"), icon=":material/school:"):
+        labels = [q.label for q in quantities]
+        choice = st.selectbox(t("self.quantity"), range(len(labels)), format_func=labels.__getitem__,
+                              key=f"{key}_quantity")
+        quantity = quantities[choice]
+        typed = st.text_input(t("self.value", unit=quantity.unit), key=f"{key}_value")
+        if not typed:
+            return
+        try:
+            value = parse_number(typed)
+        except ValueError:
+            st.error(t("self.not_a_number", text=typed))
+            return
+        verdict, relative = grade(value, quantity)
+        exact = f"{num(quantity.exact, 5)} {quantity.unit}"
+        if verdict == "correct":
+            st.success(t("self.correct", exact=exact))
+        elif verdict == "drawing":
+            st.info(t("self.drawing", percent=num(100 * relative, 2), exact=exact,
+                      allowed=f"{num(quantity.drawing, 2)} {quantity.unit}"))
+        else:
+            st.warning(t("self.off", percent=num(100 * relative, 3), exact=exact))
