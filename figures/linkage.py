@@ -10,6 +10,7 @@ import cmath
 from collections.abc import Callable
 
 import numpy as np
+from _plotly_utils.utils import to_typed_array_spec
 
 from mechanisms.schema import FRAME, Scene
 from solvers.kinematics import Motion
@@ -20,7 +21,15 @@ Text = Callable[..., str]  # the page's translator: t(key, **values)
 
 
 def scatter(**properties) -> dict:
-    """A scatter trace as a plain dict (see figures/raw.py for why not ``go.Scatter``)."""
+    """A scatter trace as a plain dict (see figures/raw.py for why not ``go.Scatter``).
+
+    Coordinate arrays travel as base64 float32 (Plotly's typed arrays): a quarter of the
+    JSON text, encoded in microseconds, and seven digits is more than a screen shows.
+    """
+    for key in ("x", "y", "customdata"):
+        value = properties.get(key)
+        if isinstance(value, np.ndarray) and value.size > 64:
+            properties[key] = to_typed_array_spec(value.astype(np.float32))
     return {"type": "scatter", **properties}
 
 

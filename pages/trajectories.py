@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 import streamlit as st
 
+from figures.style import Look
 from figures.trajectories import animation_figure, construction_figure, field_figure
 from mechanisms.schema import Scene, Travel
 from solvers.diagnostics import dead_zones, format_range
@@ -16,7 +17,7 @@ from solvers.paths import (animation_order, cycle_time, cycle_values, field_path
 from ui.cache import BY_REPR, solved
 from ui.chapters import page_title
 from ui.export import chart, csv_button
-from ui.i18n import num, t
+from ui.i18n import current, num, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -31,6 +32,15 @@ page_title("pages/trajectories.py")
 @st.cache_data(max_entries=64, hash_funcs=BY_REPR)
 def accuracy(scene: Scene, points: tuple[str, ...]) -> list[dict]:
     return resolution_table(scene, list(points), RESOLUTIONS)
+
+
+@st.cache_resource(max_entries=16, hash_funcs=BY_REPR)
+def animation(scene: Scene, steps: int, points: tuple[str, ...], language: str, look_: Look):
+    """The animation figure (the costliest to build); shared, never mutated."""
+    fine = solved(scene, tuple(cycle_values(scene, steps)), order=1)
+    order = animation_order(fine.feasible)
+    frames = order[::-(-len(order) // MAX_FRAMES)]  # at most MAX_FRAMES frames
+    return animation_figure(fine, frames, list(points), scene.title, t, look_)
 
 
 controls, main = st.columns([1, 3], gap="large")
@@ -109,11 +119,9 @@ with main:
         figure_ms = (time.perf_counter() - started) * 1e3
         chart(fig, f"{scene.id}-paths", key="paths")
     with tab_anim:
-        order = animation_order(fine.feasible)
-        frames = order[::-(-len(order) // MAX_FRAMES)]  # at most MAX_FRAMES frames
         if not fine.feasible.all():
             st.info(t("traj.rocking"))
-        chart(animation_figure(fine, frames, points, scene.title, t, look()),
+        chart(animation(scene, steps, tuple(points), current(), look()),
               f"{scene.id}-animation", key="animation")
     if tab_field:
         with tab_field[0]:
