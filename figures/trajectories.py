@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from mechanisms.schema import FRAME, Scene
 from solvers.kinematics import Motion
 
 from .linkage import Text, mechanism_traces, pose, scatter
@@ -25,10 +26,12 @@ def _closed(z: np.ndarray) -> np.ndarray:
 
 def construction_figure(steps: Motion, smooth: Motion | None, points: list[str], title: str,
                         t: Text, look: Look = NORMAL) -> RawFigure:
-    """The mechanism faint in each of the 12 positions, the chosen points numbered 1…12, and
-    their paths: through the 12 positions as on paper, or (``smooth``) at a fine resolution."""
+    """The compass circles, the mechanism faint in each of the 12 positions, the chosen points
+    numbered 1…12, and their paths: through the 12 positions as on paper, or (``smooth``)
+    at a fine resolution."""
     fig = RawFigure()
     scene = steps.scene
+    fig.add_raw(compass_circles(scene, t, look))
     for k in range(len(steps.at)):
         if steps.feasible[k]:
             positions, rotations = pose(steps, k)
@@ -54,6 +57,26 @@ def construction_figure(steps: Motion, smooth: Motion | None, points: list[str],
         positions, rotations = pose(steps, 0)
         fig.add_raw(mechanism_traces(scene, positions, rotations, t, look))
     return plane_layout(fig, title, look)
+
+
+def compass_circles(scene: Scene, t: Text, look: Look) -> list[dict]:
+    """The circles a student draws with the compass: every point of a member pinned to the
+    frame moves on a circle about that pivot (the crank circle, the rocker's arc)."""
+    ring = np.exp(1j * np.linspace(0, 2 * np.pi, 121))
+    xs, ys = [], []
+    for pair in scene.pairs:
+        if pair.kind != "revolute" or FRAME not in pair.members:
+            continue
+        member = scene.members[pair.other(FRAME)]
+        centre = scene.frame[pair.point]
+        pivot = member.points[pair.point]
+        for name, local in member.points.items():
+            if name != pair.point:
+                circle = centre + abs(local - pivot) * ring
+                xs += list(circle.real) + [None]
+                ys += list(circle.imag) + [None]
+    return [scatter(x=xs, y=ys, mode="lines", name=t("fig.compass"), hoverinfo="skip",
+                    line=dict(color="#999999", width=1 * look.line, dash="dash"))]
 
 
 def animation_figure(motion: Motion, order: np.ndarray, points: list[str], title: str, t: Text,

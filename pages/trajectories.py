@@ -13,7 +13,7 @@ from figures.trajectories import animation_figure, construction_figure, field_fi
 from mechanisms.schema import Scene, Travel
 from solvers.diagnostics import dead_zones, format_range
 from solvers.paths import (animation_order, cycle_time, cycle_values, field_path, loops_backward,
-                           path_length, resolution_table, strokes)
+                           path_length, resolution_table, strokes, swings)
 from ui.cache import BY_REPR, solved
 from ui.chapters import page_title
 from ui.export import chart, csv_button
@@ -44,6 +44,12 @@ def animation(scene: Scene, steps: int, points: tuple[str, ...], language: str, 
 
 
 controls, main = st.columns([1, 3], gap="large")
+
+
+def crank_pin(scene: Scene) -> str:
+    """The driving member's moving point (B of tasks 1.1, C of 1.2): always numbered."""
+    member = scene.members[2]
+    return next(p for p in member.axis[::-1] + tuple(member.points) if p not in scene.frame)
 
 
 def defaults(base: Scene) -> dict[str, object]:
@@ -114,7 +120,8 @@ with main:
     tab_paths, tab_anim, *tab_field = st.tabs(tabs)
     with tab_paths:
         started = time.perf_counter()
-        fig = construction_figure(construction, fine if view == "smooth" else None, points,
+        numbered = list(dict.fromkeys([crank_pin(scene), *points]))
+        fig = construction_figure(construction, fine if view == "smooth" else None, numbered,
                                   scene.title, t, look())
         figure_ms = (time.perf_counter() - started) * 1e3
         chart(fig, f"{scene.id}-paths", key="paths")
@@ -159,6 +166,8 @@ with controls:
         st.metric(t("traj.path_length", point=name), f"{num(path_length(fine.points[name].z))} m")
     for name, stroke in strokes(fine).items():
         st.metric(t("traj.stroke", pair=name), f"{num(stroke)} m")
+    for number, (low, high) in swings(fine).items():
+        st.metric(t("traj.swing", member=number), f"{num(low, 4)}° … {num(high, 4)}°")
 
 with main:
     st.subheader(t("traj.accuracy_title"))

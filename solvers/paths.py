@@ -10,7 +10,7 @@ import time
 
 import numpy as np
 
-from mechanisms.schema import Scene, Travel
+from mechanisms.schema import DRIVER, FRAME, Scene, Travel
 
 from .kinematics import Motion, solve
 
@@ -65,6 +65,29 @@ def strokes(motion: Motion) -> dict[str, float]:
     """Stroke (max − min of the relative displacement) of every prismatic pair (m)."""
     return {name: float(np.nanmax(s.s) - np.nanmin(s.s)) for name, s in motion.sliders.items()
             if np.isfinite(s.s).any()}
+
+
+def swings(motion: Motion) -> dict[int, tuple[float, float]]:
+    """Extreme angles (degrees) of every member pinned to the frame that does not turn fully
+    — a rocker's two limit positions — from the solved cycle."""
+    out = {}
+    scene = motion.scene
+    for pair in scene.pairs:
+        if pair.kind != "revolute" or FRAME not in pair.members:
+            continue
+        number = pair.other(FRAME)
+        if number == DRIVER or number not in motion.members:
+            continue
+        angle = motion.members[number].angle
+        ok = np.isfinite(angle)
+        if not ok.any():
+            continue
+        turned = np.unwrap(angle[ok])
+        if np.ptp(turned) < 2 * math.pi - 1e-6:
+            mid = np.angle(np.exp(1j * turned.mean()))  # a centre for the range, −180…180°
+            rel = np.angle(np.exp(1j * (angle[ok] - mid)))
+            out[number] = (math.degrees(mid + rel.min()), math.degrees(mid + rel.max()))
+    return out
 
 
 def cycle_time(scene: Scene) -> float:

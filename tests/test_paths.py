@@ -103,3 +103,21 @@ def test_resolution_table_reports_time_and_error_per_resolution():
     assert [r["positions"] for r in rows] == [12, 72, 360, 3600]
     assert all(r["solve_ms"] > 0 for r in rows)
     assert rows[0]["deviation_m"] == pytest.approx(0.1 * (1 - math.cos(math.pi / 12)), rel=1e-3)
+
+
+def test_a_rockers_limit_positions_are_its_extreme_angles():
+    """Crank-rocker: the rocker's limits are where crank and coupler are in line (law of cosines)."""
+    from solvers.paths import swings
+
+    scene = load_preset("four-bar-crank-rocker")  # OA 0.1, AB 0.35, DB 0.3, OD 0.4
+    motion = solve(scene, cycle_values(scene, 3600), order=0)
+    low, high = swings(motion)[4]
+
+    def rocker_angle(reach):  # angle of D→B when |OB| = reach, B above the x-axis
+        cos_o = (0.4**2 + reach**2 - 0.3**2) / (2 * 0.4 * reach)
+        b = reach * complex(cos_o, math.sqrt(1 - cos_o**2))
+        return math.degrees(np.angle(b - 0.4))
+
+    limits = sorted([rocker_angle(0.35 + 0.1), rocker_angle(0.35 - 0.1)])
+    assert low == pytest.approx(limits[0], abs=0.05) and high == pytest.approx(limits[1], abs=0.05)
+    assert 2 not in swings(motion)  # the crank turns fully

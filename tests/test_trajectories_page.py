@@ -86,3 +86,15 @@ def test_animation_frames_carry_only_the_moving_traces_and_never_jump():
     # 289 feasible positions rock there and back (576 frames), shown every 5th: 5° steps at most,
     # also where the motion turns back at the limits
     assert jumps.max() <= math.radians(5.01)
+
+
+def test_the_construction_numbers_the_crank_pin_and_draws_the_compass_circles():
+    at = page("pages/trajectories.py", lang="en", scene="zbirka-1.1")
+    spec = chart(at, "paths")
+    assert traces(spec, "positions of B") and traces(spec, "positions of K")
+    (circles,) = traces(spec, "compass circles")
+    x = np.array([np.nan if v is None else v for v in circles["x"]], float)
+    y = np.array([np.nan if v is None else v for v in circles["y"]], float)
+    first, second = np.split(x + 1j * y, np.flatnonzero(np.isnan(x))[:2])[:2]
+    radii = sorted([np.nanmean(np.abs(first - 0)), np.nanmean(np.abs(second[1:] - 0.2))])
+    assert radii == pytest.approx([0.06, 0.16], abs=1e-3)  # crank AB about A, rocker DC about D
