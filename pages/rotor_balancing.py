@@ -104,6 +104,21 @@ with controls:
     scene_download(rotor)
 
 
+def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> None:
+    """The moment polygon about the chosen plane, closed by the other plane's correction."""
+    reference = url_choice(st.radio, t("rotor.reference"), ["II", "I"], "ref", horizontal=True)
+    other = "I" if reference == "II" else "II"
+    x_ref = rotor.planes[reference]
+    vs = [u * (m.x - x_ref) * MM for u, m in zip(us, rotor.masses)]  # kg·mm²
+    v_fix = found[other] * (rotor.planes[other] - x_ref) * MM
+    scale = nice(max(abs(sum(vs[:k + 1])) for k in range(len(vs))) / 8)
+    scale = st.number_input(t("rotor.scale_v"), min_value=1e-6, value=scale,
+                            key=f"UV{reference}-{rotor.id}", format="%.4g")
+    chart(polygon_figure([(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)],
+                         scale, "kg·mm²", t("rotor.v_title", plane=reference), t, look()),
+          f"{rotor.id}-V", key="vpoly")
+
+
 def results_table(result: Balance) -> pd.DataFrame:
     """Each correction, exact beside the book's printed value where the preset has one."""
     rows = []
@@ -142,40 +157,38 @@ with main:
     us = [m.mass * m.radius * unit(m.angle) * MM for m in rotor.masses]  # kg·mm
     found = {p: f.u * MM for p, f in result.corrections.items()}
     tab_v, tab_u, tab_end, tab_3d = st.tabs([t("rotor.tab_v"), t("rotor.tab_u"), t("rotor.tab_end"),
-                                             t("rotor.tab_3d")])
-    with tab_u:
-        scale_u = nice(max(abs(sum(us[:k + 1])) for k in range(len(us))) / 8)
-        scale_u = st.number_input(t("rotor.scale_u"), min_value=1e-6, value=scale_u, key=f"UU-{rotor.id}",
-                                  format="%.4g")
-        chart(polygon_figure(list(zip(names, us)), [(f"U{p}", u) for p, u in found.items()],
-                             scale_u, "kg·mm", t("rotor.tab_u"), t, look()),
-              f"{rotor.id}-U", key="upoly")
-    if rotor.mode == "dynamic":
+                                             t("rotor.tab_3d")], key="tab", on_change="rerun")
+    scale_key = f"UU-{rotor.id}"
+    scale_u = st.session_state.get(scale_key) or nice(
+        max(abs(sum(us[:k + 1])) for k in range(len(us))) / 8)
+    if tab_u.open:
+        with tab_u:
+            scale_u = st.number_input(t("rotor.scale_u"), min_value=1e-6, value=scale_u,
+                                      key=scale_key, format="%.4g")
+            chart(polygon_figure(list(zip(names, us)), [(f"U{p}", u) for p, u in found.items()],
+                                 scale_u, "kg·mm", t("rotor.tab_u"), t, look()),
+                  f"{rotor.id}-U", key="upoly")
+    if tab_v.open:
         with tab_v:
-            reference = url_choice(st.radio, t("rotor.reference"), ["II", "I"], "ref",
-                                   horizontal=True)
-            other = "I" if reference == "II" else "II"
-            x_ref = rotor.planes[reference]
-            vs = [u * (m.x - x_ref) * MM for u, m in zip(us, rotor.masses)]  # kg·mm²
-            v_fix = found[other] * (rotor.planes[other] - x_ref) * MM
-            scale_v = nice(max(abs(sum(vs[:k + 1])) for k in range(len(vs))) / 8)
-            scale_v = st.number_input(t("rotor.scale_v"), min_value=1e-6, value=scale_v,
-                                      key=f"UV{reference}-{rotor.id}", format="%.4g")
-            chart(polygon_figure([(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)],
-                                 scale_v, "kg·mm²", t("rotor.v_title", plane=reference), t, look()),
-                  f"{rotor.id}-V", key="vpoly")
-    else:
-        tab_v.info(t("rotor.static_no_v"))
-    with tab_end:
-        chart(end_view_figure([(f"m{i + 1}", m.radius * unit(m.angle)) for i, m in enumerate(rotor.masses)],
-                              [(f"m{p}", f.radius * unit(f.angle)) for p, f in result.corrections.items()],
-                              t("rotor.tab_end"), t, look()), f"{rotor.id}-end", key="end")
-    with tab_3d:
-        chart(rotor_3d_figure([(f"m{i + 1}", m.mass, m.radius * unit(m.angle), m.x)
-                               for i, m in enumerate(rotor.masses)],
-                              [(f"m{p}", f.mass, f.radius * unit(f.angle), rotor.planes[p])
-                               for p, f in result.corrections.items()],
-                              rotor.planes, t("rotor.tab_3d"), t, look()), f"{rotor.id}-3d", key="3d")
+            if rotor.mode == "dynamic":
+                v_polygon(rotor, us, found)
+            else:
+                st.info(t("rotor.static_no_v"))
+    if tab_end.open:
+        with tab_end:
+            chart(end_view_figure([(f"m{i + 1}", m.radius * unit(m.angle))
+                                   for i, m in enumerate(rotor.masses)],
+                                  [(f"m{p}", f.radius * unit(f.angle))
+                                   for p, f in result.corrections.items()],
+                                  t("rotor.tab_end"), t, look()), f"{rotor.id}-end", key="end")
+    if tab_3d.open:
+        with tab_3d:
+            chart(rotor_3d_figure([(f"m{i + 1}", m.mass, m.radius * unit(m.angle), m.x)
+                                   for i, m in enumerate(rotor.masses)],
+                                  [(f"m{p}", f.mass, f.radius * unit(f.angle), rotor.planes[p])
+                                   for p, f in result.corrections.items()],
+                                  rotor.planes, t("rotor.tab_3d"), t, look()), f"{rotor.id}-3d",
+                  key="3d")
 
     st.subheader(t("rotor.accuracy_title"))
     rows, answers = [], []

@@ -117,20 +117,23 @@ with main:
         where = "; ".join(format_range(scene, lo, hi) for lo, hi in zone.ranges)
         st.warning(t("traj.dead_zone", group=zone.group, where=where))
     tabs = [t("traj.tab_paths"), t("traj.tab_animation")] + ([t("traj.tab_field")] if scene.travel else [])
-    tab_paths, tab_anim, *tab_field = st.tabs(tabs)
-    with tab_paths:
+    tab_paths, tab_anim, *tab_field = st.tabs(tabs, key="tab", on_change="rerun")
+    figure_ms = 0.0
+    if tab_paths.open:
         started = time.perf_counter()
         numbered = list(dict.fromkeys([crank_pin(scene), *points]))
         fig = construction_figure(construction, fine if view == "smooth" else None, numbered,
                                   scene.title, t, look())
         figure_ms = (time.perf_counter() - started) * 1e3
-        chart(fig, f"{scene.id}-paths", key="paths")
-    with tab_anim:
-        if not fine.feasible.all():
-            st.info(t("traj.rocking"))
-        chart(animation(scene, steps, tuple(points), current(), look()),
-              f"{scene.id}-animation", key="animation")
-    if tab_field:
+        with tab_paths:
+            chart(fig, f"{scene.id}-paths", key="paths")
+    if tab_anim.open:
+        with tab_anim:
+            if not fine.feasible.all():
+                st.info(t("traj.rocking"))
+            chart(animation(scene, steps, tuple(points), current(), look()),
+                  f"{scene.id}-animation", key="animation")
+    if tab_field and tab_field[0].open:
         with tab_field[0]:
             cycles = st.slider(t("traj.cycles"), 1, 6, 3, key="cycles", bind="query-params")
             point = points[-1]

@@ -6,6 +6,7 @@ browser is a failure, never a silent skip.
 
 import json
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -115,7 +116,7 @@ def test_turning_the_crank_the_other_way_renumbers_the_positions(app_url, browse
         arg=json.dumps(before), timeout=30_000)
     wait_idle(page)
     assert plot_x(page) != before
-    assert "omega=-2.5" in page.url  # the new value is in the shareable link
+    page.wait_for_url(re.compile(r"omega=-2\.5"), timeout=10_000)  # the shareable link follows
     shot = tmp_path / "trajectories-construction.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
@@ -123,10 +124,10 @@ def test_turning_the_crank_the_other_way_renumbers_the_positions(app_url, browse
 
 def test_the_animation_plays_and_its_frame_slider_advances(app_url, browser, tmp_path):
     page = open_page(browser, f"{app_url}/trajectories?lang=en&scene=analitika-2.1")
-    page.get_by_role("tab", name="Animation").click()
-    plot = page.locator(".js-plotly-plot").nth(1)
-    plot.wait_for(state="visible")
-    active = "() => document.querySelectorAll('.js-plotly-plot')[1]._fullLayout.sliders[0].active"
+    page.get_by_role("tab", name="Animation").click()  # only the open tab runs: one chart
+    page.wait_for_function("() => document.querySelector('.js-plotly-plot')?._fullLayout?.sliders?.length")
+    plot = page.locator(".js-plotly-plot").first
+    active = "() => document.querySelector('.js-plotly-plot')._fullLayout.sliders[0].active"
     assert page.evaluate(active) == 0
     plot.locator(".updatemenu-button").first.click()  # ▶ Play
     page.wait_for_function(f"({active})() >= 5", timeout=30_000)

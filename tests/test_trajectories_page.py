@@ -39,7 +39,7 @@ def test_a_longer_crank_draws_a_bigger_crank_circle():
 
 
 def test_the_tedder_advances_by_its_travel_each_cycle_and_closes_relative_to_the_machine():
-    at = page("pages/trajectories.py", lang="en", scene="zbirka-1.3", res=360)
+    at = page("pages/trajectories.py", lang="en", scene="zbirka-1.3", res=360, tab="In the field")
     at.slider(key="vR").set_value(4.0).run()
     assert not at.exception
     (field,) = traces(chart(at, "field"), "path of E in the field")
@@ -53,7 +53,7 @@ def test_the_tedder_advances_by_its_travel_each_cycle_and_closes_relative_to_the
 
 
 def test_a_mechanism_with_a_dead_zone_warns_and_rocks():
-    at = page("pages/trajectories.py", lang="en", scene="analitika-2.1")
+    at = page("pages/trajectories.py", lang="en", scene="analitika-2.1", tab="Animation")
     assert not at.exception
     assert "cannot pass" in at.warning[0].value
     assert any("rocks" in m.value or "limit position" in m.value for m in at.info)
@@ -74,7 +74,8 @@ def test_serbian_page_uses_the_decimal_comma():
 
 
 def test_animation_frames_carry_only_the_moving_traces_and_never_jump():
-    at = page("pages/trajectories.py", lang="en", scene="analitika-2.1", res=360, points=["M"])
+    at = page("pages/trajectories.py", lang="en", scene="analitika-2.1", res=360, points=["M"],
+              tab="Animation")
     spec = chart(at, "animation")
     frames = spec["frames"]
     assert 10 < len(frames) <= 120
