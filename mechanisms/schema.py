@@ -87,10 +87,6 @@ class Driver:
     speed: float
     accel: float = 0.0
 
-    @property
-    def unit(self) -> str:
-        return "deg" if self.kind == "rotating" else "m"
-
 
 @dataclass(frozen=True)
 class Force:

@@ -13,8 +13,6 @@ import cmath
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
 from mechanisms.rotor import PLANES, Correction, Rotor
 
 
@@ -148,9 +146,4 @@ def graphical_error(value: float, scale: float, precision: float = 0.5e-3,
     return length_error, angle_error
 
 
-def polygon(vectors: list[complex]) -> np.ndarray:
-    """Vertices of the polygon drawn head to tail from the origin (U or V polygon)."""
-    return np.concatenate([[0j], np.cumsum(vectors)])
-
-
-__all__ = ["Balance", "BalanceError", "Found", "balance", "graphical_error", "polygon", "PLANES"]
+__all__ = ["Balance", "BalanceError", "Found", "balance", "graphical_error", "PLANES"]

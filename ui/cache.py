@@ -10,10 +10,9 @@ from __future__ import annotations
 import streamlit as st
 
 from mechanisms import Scene, load_preset
-from mechanisms.schema import Scene as SceneType
 from solvers import Motion, solve
 
-BY_REPR = {SceneType: repr}
+BY_REPR = {Scene: repr}
 
 
 @st.cache_resource(max_entries=64)
