@@ -147,6 +147,10 @@ def parse_document(data: bytes | str, source: str = "<scene>", default_id: str =
         from .rotor import parse_rotor
 
         return parse_rotor(raw, source, default_id)
+    if kind == "gears":
+        from .gears import parse_gears
+
+        return parse_gears(raw, source, default_id)
     return _build(raw, _Reader(source), default_id)
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 
+from .gears import GearTrain
 from .rotor import Rotor
 from .schema import Scene
 
@@ -113,4 +114,40 @@ def rotor_to_toml(rotor: Rotor) -> str:
         out.append("\n[bearings]")
         out += [f"{k} = {_n(v)}" for k, v in rotor.bearings.items()]
     out += _book(rotor.book, rotor.book_notes)
+    return "\n".join(out) + "\n"
+
+
+def gears_to_toml(train: GearTrain) -> str:
+    out = ['kind = "gears"', f"id = {_s(train.id)}", f"title = {_s(train.title)}",
+           f"source = {_s(train.source)}", f"note = {_s(train.note)}", "", "meshes = ["]
+    for m in train.meshes:
+        ring = f", internal = {m.internal}" if m.internal is not None else ""
+        bevel = ", bevel = true" if m.bevel else ""
+        out.append(f"  {{ members = [{m.members[0]}, {m.members[1]}], "
+                   f"radii = [{_n(m.radii[0])}, {_n(m.radii[1])}]{ring}{bevel} }},")
+    out.append("]")
+    out.append("shafts = [" + ", ".join("[" + ", ".join(map(str, s)) + "]" for s in train.shafts) + "]")
+    out.append("fixed = [" + ", ".join(map(str, train.fixed)) + "]")
+    out.append("inputs = [")
+    for i in train.inputs:
+        if i.velocity is None:
+            out.append(f"  {{ member = {i.member}, omega = {_n(i.omega)} }},")
+        else:
+            out.append(f"  {{ member = {i.member}, velocity = {_n(i.velocity)}, "
+                       f"radius = {_n(i.radius)} }},")
+    out.append("]")
+    for n, m in train.members.items():
+        out.append(f"\n[members.{n}]")
+        if m.label:
+            out.append(f"label = {_s(m.label)}")
+        if m.carrier is not None:
+            out.append(f"carrier = {m.carrier}")
+        if m.axis:
+            out.append(f"axis = {_n(m.axis)}")
+        if m.x is not None:
+            out.append(f"x = {_n(m.x)}")
+    if train.points:
+        out.append("\n[points]")
+        out += [f"{name} = [{m}, {_n(r)}]" for name, (m, r) in train.points.items()]
+    out += _book(train.book, train.book_notes)
     return "\n".join(out) + "\n"

@@ -1,5 +1,91 @@
-"""Chapter page placeholder (its issue is not done yet)."""
+"""Chapter 6 — planetary and differential gear trains: Willis equations, velocity diagram."""
 
-from ui.chapters import coming_soon
+from __future__ import annotations
 
-coming_soon("pages/planetary_gears.py")
+import pandas as pd
+import streamlit as st
+
+from figures.gears import schematic_figure, velocity_figure
+from mechanisms.gears import GearTrain, Input, Mesh
+from solvers.gears import TrainError, geometry_notes, solve_train
+from ui.chapters import page_title
+from ui.export import chart, csv_button
+from ui.i18n import num, t
+from ui.present import look
+from ui.scenes import scene_download, scene_picker
+from ui.selfcheck import Quantity, answer_box
+
+page_title("pages/planetary_gears.py")
+controls, main = st.columns([1, 3], gap="large")
+
+with controls:
+    base = scene_picker("gears")
+    inputs = []
+    for inp in base.inputs:
+        if inp.velocity is None:
+            omega = st.number_input(t("gears.input_omega", member=inp.member), value=inp.omega,
+                                    key=f"in{inp.member}-{base.id}", format="%.4g")
+            inputs.append(Input(inp.member, omega))
+        else:
+            v = st.number_input(t("gears.input_velocity", member=inp.member, radius=num(inp.radius)),
+                                value=inp.velocity, key=f"in{inp.member}-{base.id}", format="%.4g")
+            inputs.append(Input(inp.member, v / inp.radius, v, inp.radius))
+    pole = st.number_input(t("gears.pole_distance"), min_value=1e-4,
+                           value=0.25 * max(r for m in base.meshes for r in m.radii),
+                           key=f"H-{base.id}", format="%.4g")
+
+with main:
+    st.markdown(f"**{t('gears.meshes')}**")
+    table = st.data_editor(pd.DataFrame([
+        {"a": m.members[0], "b": m.members[1], "R_a [m]": m.radii[0], "R_b [m]": m.radii[1],
+         t("gears.ring"): m.internal or 0} for m in base.meshes]),
+        key=f"meshes-{base.id}", width="stretch", disabled=["a", "b"])
+    meshes = tuple(Mesh((int(r["a"]), int(r["b"])), (float(r["R_a [m]"]), float(r["R_b [m]"])),
+                        int(r[t("gears.ring")]) or None, old.bevel)
+                   for (_, r), old in zip(table.iterrows(), base.meshes))
+    train: GearTrain = base.with_(inputs=tuple(inputs), meshes=meshes)
+    for note in geometry_notes(train):
+        st.info(note)
+    try:
+        solution = solve_train(train)
+    except TrainError as exc:
+        st.error(str(exc))
+        st.stop()
+    st.caption(t("gears.dof", dof=solution.dof, inputs=len(train.inputs)))
+    if solution.status != "solved":
+        st.error(solution.message)
+        chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
+        st.stop()
+
+with controls:
+    scene_download(train)
+
+with main:
+    tab_train, tab_v = st.tabs([t("gears.schematic"), t("gears.velocity_diagram")], key="tab",
+                               on_change="rerun")
+    if tab_train.open:
+        with tab_train:
+            chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
+    if tab_v.open:
+        with tab_v:
+            chart(velocity_figure(solution, pole, t("gears.velocity_diagram"), t, look()),
+                  f"{train.id}-velocities", key="velocities")
+            st.caption(t("gears.pole_note", H=num(pole, 3)))
+    rows = []
+    for m, w in solution.omega.items():
+        book = train.book.get(f"members.{m}.omega")
+        rows.append({t("gears.col_member"): f"{m} {train.members[m].label}".strip(),
+                     "ω [s⁻¹]": num(w, 5),
+                     t("gears.col_book"): "" if book is None else num(book, 5)})
+    results = pd.DataFrame(rows)
+    st.dataframe(results, hide_index=True)
+    cols = st.columns(3)
+    members = list(train.members)
+    a = cols[0].selectbox(t("gears.ratio_from"), members, key="ra")
+    b = cols[1].selectbox(t("gears.ratio_to"), members, index=len(members) - 1, key="rb")
+    ratio = solution.ratio(a, b)
+    cols[2].metric(f"i {a},{b} = ω{a}/ω{b}", t("gears.infinite") if ratio == float("inf") else num(ratio, 5))
+    for name, (m, r) in train.points.items():
+        st.metric(t("gears.point_velocity", point=name, member=m), f"{num(solution.velocity(m, r), 5)} m/s")
+    csv_button(results, f"{train.id}-omega.csv", key="csv")
+    answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")

@@ -13,11 +13,13 @@ import sys
 
 from mechanisms import SceneError, Scene, load_any, load_preset, preset_ids
 
+from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
 
 from .balancing import BalanceError, balance
 from .diagnostics import Unsolvable, explain_singular, solve_instant
-from .report import motion_json, rotor_json
+from .gears import TrainError, solve_train
+from .report import gears_json, motion_json, rotor_json
 from .structure import StructureError, decompose
 
 
@@ -25,7 +27,7 @@ def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
         return args.run(args)
-    except (SceneError, StructureError) as exc:
+    except (SceneError, StructureError, TrainError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     except Unsolvable as exc:
@@ -84,10 +86,32 @@ def _solve_rotor(rotor: Rotor, as_json: bool) -> int:
     return 0
 
 
+def _solve_gears(train: GearTrain, as_json: bool) -> int:
+    solution = solve_train(train)
+    if solution.status != "solved":
+        raise Unsolvable(solution.message)
+    data = gears_json(solution)
+    if as_json:
+        print(json.dumps(data, indent=1, ensure_ascii=False))
+        return 0
+    print(f"{train.id} — {train.title}\n\ndegrees of freedom: {data['dof']}\n")
+    print(f"{'member':8s}{'ω rad/s':>14s}")
+    for m, w in data["members"].items():
+        print(f"{m:8s}{w['omega']:14.6g}")
+    print()
+    for pair, ratio in data["ratios"].items():
+        print(f"i {pair:8s} {'∞ (does not rotate)' if ratio == 'inf' else f'{ratio:.6g}'}")
+    for name, v in data.get("points", {}).items():
+        print(f"v_{name} = {v:.6g} m/s")
+    return 0
+
+
 def _solve(args) -> int:
     scene = load_any(args.scene)
     if isinstance(scene, Rotor):
         return _solve_rotor(scene, args.json)
+    if isinstance(scene, GearTrain):
+        return _solve_gears(scene, args.json)
     motion = solve_instant(scene, args.at)
     for issue in motion.issues:
         print(f"warning: {explain_singular(scene, motion.at[0], issue.group, issue.worst_condition)}",

@@ -7,11 +7,13 @@ import math
 
 import numpy as np
 
+from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
 from mechanisms.schema import Scene
 
 from .balancing import Balance, balance
-from .diagnostics import solve_instant
+from .diagnostics import Unsolvable, solve_instant
+from .gears import TrainSolution, solve_train
 from .kinematics import Motion
 
 
@@ -48,6 +50,26 @@ def rotor_json(result: Balance) -> dict:
                   "residual": {"force": result.residual_force, "moment": result.residual_moment}})
 
 
+def gears_json(solution: TrainSolution) -> dict:
+    """The solved train: ω of every member, ratios from each input (and any the book quotes),
+    the named points' peripheral velocities and the degrees of freedom."""
+    train = solution.train
+    pairs = {(i.member, m) for i in train.inputs for m in train.members if m != i.member}
+    pairs |= {tuple(int(x) for x in k.split(".")[1].split("-")) for k in train.book
+              if k.startswith("ratios.")}
+    data = {"scene": train.id, "kind": "gears",
+            "members": {str(m): {"omega": w} for m, w in solution.omega.items()},
+            "ratios": {f"{a}-{b}": _ratio(solution.ratio(a, b)) for a, b in sorted(pairs)},
+            "dof": solution.dof}
+    if train.points:
+        data["points"] = {name: solution.velocity(m, r) for name, (m, r) in train.points.items()}
+    return clean(data)
+
+
+def _ratio(value: float):
+    return "inf" if math.isinf(value) else value
+
+
 def clean(value):
     """Plain floats for JSON; -0.0 printed as 0.0."""
     if isinstance(value, dict):
@@ -71,8 +93,13 @@ def flatten(data: dict, prefix: str = "") -> dict[str, float]:
     return out
 
 
-def exact_values(scene: Scene | Rotor) -> dict[str, float]:
-    """Every result of the scene at its own instant, keyed like its ``[book]`` table."""
+def exact_values(scene) -> dict[str, float]:
+    """Every result of the scene (at its own instant), keyed like its ``[book]`` table."""
     if isinstance(scene, Rotor):
         return flatten(rotor_json(balance(scene)))
+    if isinstance(scene, GearTrain):
+        solution = solve_train(scene)
+        if solution.status != "solved":
+            raise Unsolvable(solution.message)
+        return flatten(gears_json(solution))
     return flatten(motion_json(solve_instant(scene, None)))

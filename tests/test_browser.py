@@ -169,3 +169,16 @@ def test_the_rotor_page_draws_both_polygons(app_url, browser, tmp_path):
     shot = tmp_path / "rotor-u-polygon.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
+
+
+def test_the_gear_page_draws_the_train_and_its_velocity_diagram(app_url, browser, tmp_path):
+    page = open_page(browser, f"{app_url}/planetary_gears?lang=en&scene=zbirka-6.8")
+    shot = tmp_path / "gears-schematic.png"
+    page.locator("[data-testid='stPlotlyChart']").first.screenshot(path=str(shot))
+    keep(shot)
+    page.get_by_role("tab", name="Velocity diagram (Kutzbach)").click()
+    page.get_by_text("pitch points").first.wait_for(timeout=30_000)
+    wait_idle(page)
+    shot = tmp_path / "gears-velocity-diagram.png"
+    page.locator("[data-testid='stPlotlyChart']").first.screenshot(path=str(shot))
+    keep(shot)

@@ -110,3 +110,15 @@ def test_an_unbalanceable_rotor_file_exits_3_with_the_reason(tmp_path):
                    '[corrections.II]\nradius = 0.1\n')
     out = run("solve", str(bad))
     assert out.returncode == 3 and "same axial position" in out.stderr
+
+
+def test_gear_train_json():
+    data = json.loads(run("solve", "zbirka-6.4", "--json").stdout)
+    assert list(data)[:5] == ["scene", "kind", "members", "ratios", "dof"]
+    assert data["kind"] == "gears" and data["dof"] == 1
+    assert data["members"]["3"]["omega"] == 0.0
+    assert data["ratios"]["4-3"] == "inf"
+    out = run("solve", "zbirka-6.5", "--json")
+    ring = -8.0 * 0.05 / 0.45  # pinion 2 inside ring 3
+    k = 0.356 / 0.182  # Willis: (ω₇ − ω₆)/(ω₄ − ω₆) = −R₄/R₇
+    assert json.loads(out.stdout)["members"]["6"]["omega"] == pytest.approx((12.0 + k * ring) / (1 + k))

@@ -23,7 +23,8 @@ CHAPTERS = (
     Chapter("pages/velocity_plans.py", "ch2.title", "ch2.summary", ":material/straighten:"),
     Chapter("pages/assur_groups.py", "ch4.title", "ch4.summary", ":material/account_tree:"),
     Chapter("pages/kinetostatics.py", "ch5.title", "ch5.summary", ":material/balance:"),
-    Chapter("pages/planetary_gears.py", "ch6.title", "ch6.summary", ":material/settings:"),
+    Chapter("pages/planetary_gears.py", "ch6.title", "ch6.summary", ":material/settings:",
+            ready=True),
     Chapter("pages/rotor_balancing.py", "ch7.title", "ch7.summary", ":material/autorenew:",
             ready=True),
 )

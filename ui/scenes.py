@@ -5,8 +5,9 @@ from __future__ import annotations
 import streamlit as st
 
 from mechanisms import Scene, SceneError, parse_document, preset_ids
+from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
-from mechanisms.writer import rotor_to_toml, to_toml
+from mechanisms.writer import gears_to_toml, rotor_to_toml, to_toml
 from ui.cache import preset
 from ui.i18n import t
 from ui.url import url_choice
@@ -14,7 +15,7 @@ from ui.url import url_choice
 UPLOADED = "upload"
 
 
-KINDS = {"linkage": Scene, "rotor": Rotor}
+KINDS = {"linkage": Scene, "rotor": Rotor, "gears": GearTrain}
 
 
 def _read_upload(kind: str) -> None:
@@ -59,6 +60,7 @@ def scene_picker(kind: str = "linkage"):
 
 def scene_download(scene) -> None:
     """The current scene, with the user's changes, as a TOML file that uploads again."""
-    text = rotor_to_toml(scene) if isinstance(scene, Rotor) else to_toml(scene)
+    writer = {Rotor: rotor_to_toml, GearTrain: gears_to_toml}.get(type(scene), to_toml)
+    text = writer(scene)
     st.download_button(t("scene.download"), text.encode("utf-8"), f"{scene.id}.toml",
                        mime="application/toml", on_click="ignore", icon=":material/download:")

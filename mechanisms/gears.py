@@ -1,0 +1,164 @@
+"""Gear-train scenes (chapter 6): members, meshes, shafts, carriers, fixed members and inputs.
+
+A member is anything that turns about an axis: a gear, a carrier (arm), a ring, a wheel.
+A planet's axis is carried by its carrier at ``axis`` from the central axis; a member
+without a carrier turns about a fixed axis (``axis`` = its distance from the central axis,
+0 for the central members). Each mesh names its two members, the pitch radius of each at
+that mesh (a member may have several toothed rims) and which of them, if any, is a ring
+with internal teeth. A bevel pair is drawn as its plane equivalent (``bevel = true``): the
+sense of the second gear is chosen with ``internal`` as for spur gears, and its axes are
+not checked against the radii. SI units (m, rad/s); format in docs/scene-format.md, "Gear trains".
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+
+from .loader import SceneError, _Reader, book_notes
+
+TOP_KEYS = {"id", "kind", "title", "source", "note", "members", "meshes", "shafts", "fixed",
+            "inputs", "points", "book", "book_notes"}
+MEMBER_KEYS = {"label", "carrier", "axis", "x"}
+MESH_KEYS = {"members", "radii", "teeth", "module", "internal", "bevel"}
+INPUT_KEYS = {"member", "omega", "velocity", "radius"}
+
+
+@dataclass(frozen=True)
+class GearMember:
+    number: int
+    label: str = ""
+    carrier: int | None = None  # the carrier that holds this member's axis (a planet)
+    axis: float = 0.0  # distance of the axis from the central axis, m
+    x: float | None = None  # axial position for the drawing, m (None: laid out in order)
+
+
+@dataclass(frozen=True)
+class Mesh:
+    members: tuple[int, int]
+    radii: tuple[float, float]  # pitch radii at this mesh, m
+    internal: int | None = None  # the member whose teeth are internal (a ring), if any
+    bevel: bool = False  # bevel gears: axes at an angle, so no centre distance to check
+
+
+@dataclass(frozen=True)
+class Input:
+    member: int
+    omega: float  # rad/s (a velocity given at a radius is converted: ω = v/r)
+    velocity: float | None = None  # as given, m/s
+    radius: float | None = None  # m
+
+
+@dataclass(frozen=True)
+class GearTrain:
+    id: str
+    title: str
+    source: str
+    note: str
+    members: dict[int, GearMember]
+    meshes: tuple[Mesh, ...]
+    shafts: tuple[tuple[int, ...], ...] = ()
+    fixed: tuple[int, ...] = ()
+    inputs: tuple[Input, ...] = ()
+    points: dict[str, tuple[int, float]] = field(default_factory=dict)  # name → (member, radius)
+    book: dict[str, float] = field(default_factory=dict)
+    book_notes: dict[str, str] = field(default_factory=dict)
+
+    def with_(self, **changes) -> GearTrain:
+        return dataclasses.replace(self, **changes)
+
+
+def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
+    r = _Reader(source)
+    r.check_keys(raw, TOP_KEYS, "")
+    table = raw.get("members")
+    if not isinstance(table, dict) or not table:
+        raise r.fail("members", "is missing: list the members as [members.N] tables")
+    members = {}
+    for key, spec in table.items():
+        where = f"members.{key}"
+        if not key.isdigit():
+            raise r.fail(where, "must be numbered like the book's members (2, 3, …)")
+        spec = r.check_keys(spec, MEMBER_KEYS, where)
+        carrier = spec.get("carrier")
+        members[int(key)] = GearMember(
+            int(key), r.text(spec, "label", where, default=""),
+            None if carrier is None else r.integer(spec, "carrier", where),
+            r.number(spec, "axis", where, default=0.0, non_negative=True),
+            spec.get("x") if spec.get("x") is None else r.number(spec, "x", where))
+    known = set(members)
+
+    def member(value, where: str) -> int:
+        if isinstance(value, bool) or not isinstance(value, int) or value not in known:
+            raise r.fail(where, f"must be one of the members {sorted(known)}, got {value!r}")
+        return value
+
+    for m in members.values():
+        if m.carrier is not None:
+            member(m.carrier, f"members.{m.number}.carrier")
+            if m.axis <= 0:
+                raise r.fail(f"members.{m.number}.axis", "must be > 0 for a planet (its axis "
+                                                          "turns with the carrier)")
+    meshes = []
+    for i, spec in enumerate(raw.get("meshes", [])):
+        where = f"meshes[{i}]"
+        spec = r.check_keys(spec, MESH_KEYS, where)
+        pair = spec.get("members")
+        if not isinstance(pair, list) or len(pair) != 2:
+            raise r.fail(f"{where}.members", f"must be two member numbers, got {pair!r}")
+        a, b = (member(m, f"{where}.members") for m in pair)
+        if "radii" in spec:
+            radii = spec["radii"]
+            if not isinstance(radii, list) or len(radii) != 2:
+                raise r.fail(f"{where}.radii", "must be two pitch radii [m, m]")
+            radii = tuple(r.number({"r": v}, "r", f"{where}.radii", positive=True) for v in radii)
+        elif "teeth" in spec:
+            module = r.number(spec, "module", where, default=0.001, positive=True)
+            teeth = spec["teeth"]
+            if not isinstance(teeth, list) or len(teeth) != 2 or not all(
+                    isinstance(z, int) and not isinstance(z, bool) and z > 0 for z in teeth):
+                raise r.fail(f"{where}.teeth", f"must be two tooth counts, got {teeth!r}")
+            radii = tuple(module * z / 2 for z in teeth)
+        else:
+            raise r.fail(where, "needs radii = [R_a, R_b] or teeth = [z_a, z_b]")
+        internal = spec.get("internal")
+        if internal is not None:
+            internal = member(internal, f"{where}.internal")
+            if internal not in (a, b):
+                raise r.fail(f"{where}.internal", "must be one of the two meshing members")
+        bevel = spec.get("bevel", False)
+        if not isinstance(bevel, bool):
+            raise r.fail(f"{where}.bevel", f"must be true or false, got {bevel!r}")
+        meshes.append(Mesh((a, b), radii, internal, bevel))
+    shafts = tuple(tuple(member(m, f"shafts[{i}]") for m in group)
+                   for i, group in enumerate(raw.get("shafts", [])))
+    fixed = tuple(member(m, "fixed") for m in raw.get("fixed", []))
+    inputs = []
+    for i, spec in enumerate(raw.get("inputs", [])):
+        where = f"inputs[{i}]"
+        spec = r.check_keys(spec, INPUT_KEYS, where)
+        m = member(spec.get("member"), f"{where}.member")
+        if m in fixed:
+            raise r.fail(f"{where}.member", f"is member {m}, which is fixed: it cannot be driven")
+        if "omega" in spec:
+            inputs.append(Input(m, r.number(spec, "omega", where)))
+        else:
+            v = r.number(spec, "velocity", where)
+            radius = r.number(spec, "radius", where, positive=True)
+            inputs.append(Input(m, v / radius, v, radius))
+    points = {}
+    for name, value in raw.get("points", {}).items():
+        if not (isinstance(value, list) and len(value) == 2):
+            raise r.fail(f"points.{name}", "must be [member, radius]")
+        points[name] = (member(value[0], f"points.{name}"),
+                        r.number({"r": value[1]}, "r", f"points.{name}", non_negative=True))
+    return GearTrain(
+        id=r.text(raw, "id", "", default=default_id), title=r.text(raw, "title", "", default=default_id),
+        source=r.text(raw, "source", "", default=""), note=r.text(raw, "note", "", default=""),
+        members=dict(sorted(members.items())), meshes=tuple(meshes), shafts=shafts, fixed=fixed,
+        inputs=tuple(inputs), points=points,
+        book={k: r.number(raw.get("book", {}), k, "book") for k in raw.get("book", {})},
+        book_notes=book_notes(raw, r))
+
+
+__all__ = ["GearMember", "GearTrain", "Input", "Mesh", "SceneError", "parse_gears"]

@@ -1,0 +1,146 @@
+"""Gear trains (chapter 6): the whole train as one linear system of angular velocities.
+
+Each mesh gives the Willis relation relative to the carrier that holds both axes (the
+frame for fixed axes): seen from the carrier the pitch point has one velocity on both
+gears, (ω_a − ω_c)·R_a = ∓(ω_b − ω_c)·R_b, minus for external teeth, plus when one gear
+is a ring. Shafts make members turn together, fixed members stand still, inputs give
+values. The rank of the system tells the train's degrees of freedom; a train that is
+under- or over-determined is explained, never answered with a least-squares guess.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from mechanisms.gears import GearTrain
+
+FRAME = 1  # the frame is member 1 in the course; it never appears among the unknowns
+
+
+class TrainError(ValueError):
+    """The train's structure is wrong (a mesh between planets of different carriers, …)."""
+
+
+@dataclass(frozen=True)
+class TrainSolution:
+    train: GearTrain
+    omega: dict[int, float]  # rad/s for every member that is determined
+    dof: int  # degrees of freedom of the train without its inputs
+    status: str  # "solved", "under" (missing inputs), "over" (inconsistent inputs)
+    undetermined: tuple[int, ...] = ()
+    message: str = ""
+
+    def ratio(self, a: int, b: int) -> float:
+        """i_ab = ω_a/ω_b; infinite when member b does not turn."""
+        wa, wb = self.omega[a], self.omega[b]
+        if abs(wb) <= 1e-12 * max(abs(wa), 1.0):
+            return math.inf
+        return wa / wb
+
+    def velocity(self, member: int, radius: float) -> float:
+        """Peripheral velocity (m/s) of the point of ``member`` at ``radius`` from the central
+        axis, on the side where the planets' axes are drawn (the half-section)."""
+        m = self.train.members[member]
+        carrier = 0.0 if m.carrier is None else self.omega[m.carrier]
+        return self.omega[member] * radius + (carrier - self.omega[member]) * m.axis
+
+
+def mesh_carrier(train: GearTrain, a: int, b: int) -> int | None:
+    """The carrier holding both axes of a mesh (None: both axes fixed in the frame)."""
+    carriers = {train.members[m].carrier for m in (a, b)} - {None}
+    if len(carriers) > 1:
+        raise TrainError(f"gears {a} and {b} mesh but ride on different carriers "
+                         f"{sorted(carriers)}; a mesh needs both axes on one carrier")
+    return carriers.pop() if carriers else None
+
+
+def geometry_notes(train: GearTrain, tolerance: float = 0.02) -> list[str]:
+    """Meshes whose pitch radii do not fit the distance between their axes (where both axes
+    are known in one frame: both fixed, or both on the same carrier)."""
+    notes = []
+    for mesh in train.meshes:
+        (a, b), (ra, rb) = mesh.members, mesh.radii
+        ma, mb = train.members[a], train.members[b]
+        central = {m for m in (ma, mb) if m.carrier is None and m.axis == 0}
+        if mesh.bevel or not (ma.carrier == mb.carrier or central):
+            continue  # the two axes are not both known in one plane of the drawing
+        distance = abs(ma.axis - mb.axis)
+        expected = abs(ra - rb) if mesh.internal is not None else ra + rb
+        if abs(distance - expected) > tolerance * max(expected, 1e-12):
+            notes.append(f"mesh {a}–{b}: the axes are {distance:.4g} m apart, but the pitch radii "
+                         f"{ra:.4g} m and {rb:.4g} m need {expected:.4g} m")
+    return notes
+
+
+def equations(train: GearTrain, with_inputs: bool = True) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """Rows of A·ω = b over the members, and a description of each row."""
+    index = {m: i for i, m in enumerate(train.members)}
+    rows, rhs, what = [], [], []
+
+    def row() -> np.ndarray:
+        return np.zeros(len(index))
+
+    for mesh in train.meshes:
+        (a, b), (ra, rb) = mesh.members, mesh.radii
+        sign = 1.0 if mesh.internal is not None else -1.0
+        eq = row()
+        eq[index[a]] += ra
+        eq[index[b]] -= sign * rb
+        carrier = mesh_carrier(train, a, b)
+        if carrier is not None:
+            eq[index[carrier]] += -ra + sign * rb
+        rows.append(eq)
+        rhs.append(0.0)
+        what.append(f"mesh {a}–{b}")
+    for shaft in train.shafts:
+        for other in shaft[1:]:
+            eq = row()
+            eq[index[shaft[0]]], eq[index[other]] = 1.0, -1.0
+            rows.append(eq)
+            rhs.append(0.0)
+            what.append(f"shaft {shaft[0]}={other}")
+    for m in train.fixed:
+        eq = row()
+        eq[index[m]] = 1.0
+        rows.append(eq)
+        rhs.append(0.0)
+        what.append(f"member {m} fixed")
+    if with_inputs:
+        for inp in train.inputs:
+            eq = row()
+            eq[index[inp.member]] = 1.0
+            rows.append(eq)
+            rhs.append(inp.omega)
+            what.append(f"input ω{inp.member}")
+    return np.array(rows).reshape(-1, len(index)), np.array(rhs), what
+
+
+def solve_train(train: GearTrain) -> TrainSolution:
+    members = list(train.members)
+    a0, _, _ = equations(train, with_inputs=False)
+    dof = int(len(members) - (np.linalg.matrix_rank(a0) if len(a0) else 0))
+    a, b, _ = equations(train)
+    scale = max(1.0, float(np.abs(b).max(initial=0.0)))
+    rank = np.linalg.matrix_rank(a) if len(a) else 0
+    if rank < len(members):
+        _, _, vt = np.linalg.svd(a) if len(a) else (None, None, np.eye(len(members)))
+        null = vt[rank:]
+        free = tuple(m for i, m in enumerate(members) if np.abs(null[:, i]).max() > 1e-9)
+        x, *_ = np.linalg.lstsq(a, b, rcond=None) if len(a) else (np.zeros(len(members)),)
+        known = {m: float(x[i]) for i, m in enumerate(members) if m not in free}
+        return TrainSolution(train, known, dof, "under", free,
+                             f"the train has {dof} degree(s) of freedom but {len(train.inputs)} "
+                             f"input(s): members {', '.join(map(str, free))} stay undetermined; "
+                             f"give {dof - len(train.inputs)} more input(s)")
+    x, *_ = np.linalg.lstsq(a, b, rcond=None)
+    residual = float(np.abs(a @ x - b).max())
+    if residual > 1e-9 * scale:
+        return TrainSolution(train, {}, dof, "over", (),
+                             f"the train has {dof} degree(s) of freedom but {len(train.inputs)} "
+                             "input(s), and they contradict each other")
+    x[np.abs(x) <= 1e-12 * scale] = 0.0  # a member at rest is at rest, not at 1e-15 rad/s
+    return TrainSolution(train, {m: float(x[i]) + 0.0 for i, m in enumerate(members)}, dof,
+                         "solved")

@@ -1,0 +1,29 @@
+"""Chapter 6 page (AppTest): every book train renders; inputs change the answer; no tracebacks."""
+
+import pytest
+
+from mechanisms import preset_ids
+
+from .test_pages import page
+
+
+@pytest.mark.parametrize("pid", preset_ids("gears"))
+@pytest.mark.parametrize("tab", ["Train in half-section", "Velocity diagram (Kutzbach)"])
+def test_every_train_draws_its_views(pid, tab):
+    at = page("pages/planetary_gears.py", lang="en", scene=pid, tab=tab)
+    assert not at.exception
+    assert len(at.get("plotly_chart")) == 1
+
+
+def test_doubling_the_input_doubles_every_speed():
+    at = page("pages/planetary_gears.py", lang="en", scene="zbirka-6.8")
+    before = at.dataframe[1].value
+    at.number_input(key="in5-zbirka-6.8").set_value(200.0).run()
+    after = at.dataframe[1].value
+    for b, a in zip(before["ω [s⁻¹]"], after["ω [s⁻¹]"]):
+        assert float(a) == pytest.approx(2 * float(b), rel=1e-4)
+
+
+def test_a_degenerate_ratio_reads_as_infinite():
+    at = page("pages/planetary_gears.py", lang="en", scene="zbirka-6.4", ra=4, rb=3)
+    assert "does not rotate" in [m.value for m in at.metric][0]
