@@ -66,6 +66,11 @@ def _list(args) -> int:
     return 0
 
 
+def _print_json(data: dict) -> int:
+    print(json.dumps(data, indent=1, ensure_ascii=False))
+    return 0
+
+
 def _solve_rotor(rotor: Rotor, as_json: bool) -> int:
     try:
         result = balance(rotor)
@@ -75,8 +80,7 @@ def _solve_rotor(rotor: Rotor, as_json: bool) -> int:
         print(f"note: {note}", file=sys.stderr)
     data = rotor_json(result)
     if as_json:
-        print(json.dumps(data, indent=1, ensure_ascii=False))
-        return 0
+        return _print_json(data)
     print(f"{rotor.id} — {rotor.title}\n")
     print(f"{'plane':7s}{'mass kg':>12s}{'radius m':>12s}{'angle °':>10s}")
     for plane, c in data["corrections"].items():
@@ -92,8 +96,7 @@ def _solve_gears(train: GearTrain, as_json: bool) -> int:
         raise Unsolvable(solution.message)
     data = gears_json(solution)
     if as_json:
-        print(json.dumps(data, indent=1, ensure_ascii=False))
-        return 0
+        return _print_json(data)
     print(f"{train.id} — {train.title}\n\ndegrees of freedom: {data['dof']}\n")
     print(f"{'member':8s}{'ω rad/s':>14s}")
     for m, w in data["members"].items():
@@ -118,8 +121,7 @@ def _solve(args) -> int:
               file=sys.stderr)
     data = motion_json(motion)
     if args.json:
-        print(json.dumps(data, indent=1, ensure_ascii=False))
-        return 0
+        return _print_json(data)
     unit = "°" if scene.driver.kind == "rotating" else " m"
     print(f"{scene.id} — {scene.title}\nat {data['at']:.6g}{unit}\n")
     print(f"{'point':6s}{'x m':>11s}{'y m':>11s}{'vx m/s':>11s}{'vy m/s':>11s}"
