@@ -156,13 +156,12 @@ def _structure(args) -> int:
                         "order": g.order} for g in st.groups],
             "formula": st.formula}
     if args.json:
-        print(json.dumps(data, indent=1, ensure_ascii=False))
-    else:
-        print(f"n = {st.moving_members} moving members, p₅ = {st.lower_pairs}, "
-              f"p₄ = {st.higher_pairs}, W = 3n − 2p₅ − p₄ = {st.dof}")
-        print(f"structural formula: {st.formula}")
-        for g in st.groups:
-            print(f"  class {g.cls} group of members {sorted(g.members)}: {g.kind}, order {g.order}")
+        return _print_json(data)
+    print(f"n = {st.moving_members} moving members, p₅ = {st.lower_pairs}, "
+          f"p₄ = {st.higher_pairs}, W = 3n − 2p₅ − p₄ = {st.dof}")
+    print(f"structural formula: {st.formula}")
+    for g in st.groups:
+        print(f"  class {g.cls} group of members {sorted(g.members)}: {g.kind}, order {g.order}")
     return 0
 
 
