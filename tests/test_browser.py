@@ -182,3 +182,20 @@ def test_the_gear_page_draws_the_train_and_its_velocity_diagram(app_url, browser
     shot = tmp_path / "gears-velocity-diagram.png"
     page.locator("[data-testid='stPlotlyChart']").first.screenshot(path=str(shot))
     keep(shot)
+
+
+def test_uploading_a_broken_scene_shows_the_rule_and_the_page_keeps_working(app_url, browser, tmp_path):
+    bad = tmp_path / "broken.toml"
+    bad.write_text('[frame]\nO = [0, 0]\n[members.2]\npoints = ["O", "A"]\nlength = -0.2\n')
+    page = open_page(browser, f"{app_url}/trajectories?lang=en&scene=four-bar-crank-rocker")
+    page.get_by_text("About this scene").first.click()
+    page.locator("[data-testid='stFileUploader'] input[type='file']").set_input_files(str(bad))
+    page.get_by_text("broken.toml: members.2.length must be > 0, got -0.2").wait_for(timeout=30_000)
+    assert page.locator("[data-testid='stException']").count() == 0
+    good = tmp_path / "mine.toml"
+    good.write_text((ROOT / "mechanisms" / "presets" / "slider-crank.toml").read_text()
+                    .replace('id = "slider-crank"', 'id = "mine"'))
+    page.locator("[data-testid='stFileUploader'] input[type='file']").set_input_files(str(good))
+    page.wait_for_url(re.compile(r"scene=upload"), timeout=30_000)
+    wait_idle(page)
+    assert page.locator("[data-testid='stException']").count() == 0
