@@ -47,3 +47,13 @@ def test_numbers_use_the_languages_decimal_separator_and_inputs_accept_both():
     assert parse_number("0,25") == parse_number("0.25") == 0.25
     with pytest.raises(ValueError):
         parse_number("abc")
+
+
+def test_roman_numerals_and_single_letters_stay_latin_in_cyrillic():
+    """A class or plane number (III, II) must not turn into ИИИ."""
+    for key, text in table("sr").items():
+        for word in re.findall(r"[^\s⟨⟩{}\[\]()]+", KEEP_OUT.sub("", text)):
+            assert not re.fullmatch(r"(I{1,3}|IV|V|VI{1,3})[.,]?", word), (key, word)
+
+
+KEEP_OUT = re.compile(r"⟨[^⟩]*⟩|\{[^}]*\}|\[[^\]]*\]")
