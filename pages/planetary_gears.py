@@ -7,7 +7,7 @@ import streamlit as st
 
 from figures.gears import schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
-from solvers.gears import TrainError, geometry_notes, solve_train
+from solvers.gears import TrainError, geometry_notes, solve_train, willis_table
 from ui.chapters import page_title
 from ui.export import chart, csv_button
 from ui.i18n import num, t
@@ -88,4 +88,12 @@ with main:
     for name, (m, r) in train.points.items():
         st.metric(t("gears.point_velocity", point=name, member=m), f"{num(solution.velocity(m, r), 5)} m/s")
     csv_button(results, f"{train.id}-omega.csv", key="csv")
+    with st.expander(t("gears.willis_title")):
+        st.dataframe(pd.DataFrame([{
+            t("gears.col_mesh"): f"{w.a}–{w.b}",
+            t("gears.col_carrier"): t("gears.frame") if w.carrier is None else str(w.carrier),
+            t("gears.col_equation"): (f"(ω{w.a} − ω{w.carrier})/(ω{w.b} − ω{w.carrier})"
+                                      if w.carrier is not None else f"ω{w.a}/ω{w.b}"),
+            t("gears.col_radii"): num(w.ratio, 5), t("gears.col_solved"): num(w.check(solution.omega), 5)}
+            for w in willis_table(train)]), hide_index=True)
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")

@@ -57,6 +57,29 @@ def mesh_carrier(train: GearTrain, a: int, b: int) -> int | None:
     return carriers.pop() if carriers else None
 
 
+@dataclass(frozen=True)
+class Willis:
+    """One mesh's Willis relation: i^c_ab = (ω_a − ω_c)/(ω_b − ω_c) = ∓R_b/R_a."""
+
+    a: int
+    b: int
+    carrier: int | None  # None: fixed axes (ω_c = 0)
+    ratio: float  # ∓R_b/R_a from the radii
+
+    def check(self, omega: dict[int, float]) -> float:
+        """The same ratio from the solved speeds (NaN when the member is at the carrier's speed)."""
+        c = 0.0 if self.carrier is None else omega[self.carrier]
+        below = omega[self.b] - c
+        scale = max(abs(w) for w in omega.values()) or 1.0
+        return (omega[self.a] - c) / below if abs(below) > 1e-9 * scale else math.nan
+
+
+def willis_table(train: GearTrain) -> list[Willis]:
+    return [Willis(*mesh.members, mesh_carrier(train, *mesh.members),
+                   (1.0 if mesh.internal is not None else -1.0) * mesh.radii[1] / mesh.radii[0])
+            for mesh in train.meshes]
+
+
 def geometry_notes(train: GearTrain, tolerance: float = 0.02) -> list[str]:
     """Meshes whose pitch radii do not fit the distance between their axes (where both axes
     are known in one frame: both fixed, or both on the same carrier)."""

@@ -126,3 +126,14 @@ def test_radii_that_do_not_fit_the_axes_are_pointed_out():
     wrong = train.with_(meshes=(Mesh((2, 3), (0.08, 0.05)),) + train.meshes[1:])
     (note,) = geometry_notes(wrong)
     assert "mesh 2–3" in note and "0.13" in note
+
+
+@pytest.mark.parametrize("pid", preset_ids("gears"))
+def test_every_willis_relation_holds_for_the_solved_speeds(pid):
+    from solvers.gears import willis_table
+
+    solution = solve_train(load_preset(pid))
+    for w in willis_table(solution.train):
+        solved = w.check(solution.omega)
+        if not math.isnan(solved):
+            assert solved == pytest.approx(w.ratio, rel=1e-9), (w.a, w.b)
