@@ -17,8 +17,8 @@ from dataclasses import dataclass, field
 
 from .loader import SceneError, _Reader, book_notes
 
-TOP_KEYS = {"id", "kind", "title", "source", "note", "members", "meshes", "shafts", "fixed",
-            "inputs", "points", "book", "book_notes"}
+TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "members", "meshes", "shafts",
+            "fixed", "inputs", "points", "book", "book_notes"}
 MEMBER_KEYS = {"label", "carrier", "axis", "x"}
 MESH_KEYS = {"members", "radii", "teeth", "module", "internal", "bevel"}
 INPUT_KEYS = {"member", "omega", "velocity", "radius"}
@@ -63,6 +63,7 @@ class GearTrain:
     points: dict[str, tuple[int, float]] = field(default_factory=dict)  # name → (member, radius)
     book: dict[str, float] = field(default_factory=dict)
     book_notes: dict[str, str] = field(default_factory=dict)
+    title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
 
     def with_(self, **changes) -> GearTrain:
         return dataclasses.replace(self, **changes)
@@ -158,7 +159,7 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
         members=dict(sorted(members.items())), meshes=tuple(meshes), shafts=shafts, fixed=fixed,
         inputs=tuple(inputs), points=points,
         book={k: r.number(raw.get("book", {}), k, "book") for k in raw.get("book", {})},
-        book_notes=book_notes(raw, r))
+        book_notes=book_notes(raw, r), title_sr=r.text(raw, "title_sr", "", default=""))
 
 
 __all__ = ["GearMember", "GearTrain", "Input", "Mesh", "SceneError", "parse_gears"]

@@ -19,8 +19,8 @@ from .schema import DRIVER, FRAME, Driver, Force, Member, Moment, Pair, Scene, T
 PRESETS = Path(__file__).parent / "presets"
 MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before parsing
 
-TOP_KEYS = {"id", "kind", "title", "source", "note", "gravity", "pairs", "frame", "driver",
-            "members", "assembly", "forces", "moments", "book", "travel", "book_notes"}
+TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "gravity", "pairs", "frame",
+            "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes"}
 TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
 PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "angle",
@@ -203,6 +203,7 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         gravity=r.number(raw, "gravity", "", default=0.0, non_negative=True),
         book=_book(raw, r),
         book_notes=book_notes(raw, r),
+        title_sr=r.text(raw, "title_sr", "", default=""),
     )
     if "travel" in raw:
         scene = scene.with_(travel=_travel(raw, r, driver))

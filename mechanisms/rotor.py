@@ -15,8 +15,8 @@ from .loader import SceneError, _Reader, book_notes
 
 PLANES = ("I", "II")
 QUANTITIES = ("mass", "radius", "angle")
-TOP_KEYS = {"id", "kind", "title", "source", "note", "omega", "mode", "planes", "masses",
-            "corrections", "bearings", "book", "book_notes"}
+TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "omega", "mode", "planes",
+            "masses", "corrections", "bearings", "book", "book_notes"}
 
 
 @dataclass(frozen=True)
@@ -54,6 +54,7 @@ class Rotor:
     bearings: dict[str, float] = field(default_factory=dict)  # axial positions A, B, m
     book: dict[str, float] = field(default_factory=dict)
     book_notes: dict[str, str] = field(default_factory=dict)
+    title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
 
     def with_(self, **changes) -> Rotor:
         return dataclasses.replace(self, **changes)
@@ -103,6 +104,7 @@ def parse_rotor(raw: dict, source: str, default_id: str) -> Rotor:
         bearings={k: r.number(bearings, k, "bearings") for k in bearings},
         book={k: r.number(raw.get("book", {}), k, "book") for k in raw.get("book", {})},
         book_notes=book_notes(raw, r),
+        title_sr=r.text(raw, "title_sr", "", default=""),
     )
 
 

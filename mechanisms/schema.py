@@ -154,6 +154,7 @@ class Scene:
     book: dict[str, float] = field(default_factory=dict)  # the book's printed values
     travel: Travel | None = None
     book_notes: dict[str, str] = field(default_factory=dict)  # why a printed value is off
+    title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
 
     def pair(self, name: str) -> Pair:
         for p in self.pairs:

@@ -27,8 +27,8 @@ def _v(z: complex) -> str:
 
 
 def to_toml(scene: Scene) -> str:
-    out = [f"id = {_s(scene.id)}", f"title = {_s(scene.title)}", f"source = {_s(scene.source)}",
-           f"note = {_s(scene.note)}"]
+    out = [f"id = {_s(scene.id)}", f"title = {_s(scene.title)}", f"title_sr = {_s(scene.title_sr)}",
+           f"source = {_s(scene.source)}", f"note = {_s(scene.note)}"]
     if scene.gravity:
         out.append(f"gravity = {_n(scene.gravity)}")
     out.append("\npairs = [")
@@ -96,6 +96,7 @@ def _book(book: dict[str, float], notes: dict[str, str]) -> list[str]:
 
 def rotor_to_toml(rotor: Rotor) -> str:
     out = ['kind = "rotor"', f"id = {_s(rotor.id)}", f"title = {_s(rotor.title)}",
+           f"title_sr = {_s(rotor.title_sr)}",
            f"source = {_s(rotor.source)}", f"note = {_s(rotor.note)}", f'mode = "{rotor.mode}"']
     if rotor.omega is not None:
         out.append(f"omega = {_n(rotor.omega)}")
@@ -119,6 +120,7 @@ def rotor_to_toml(rotor: Rotor) -> str:
 
 def gears_to_toml(train: GearTrain) -> str:
     out = ['kind = "gears"', f"id = {_s(train.id)}", f"title = {_s(train.title)}",
+           f"title_sr = {_s(train.title_sr)}",
            f"source = {_s(train.source)}", f"note = {_s(train.note)}", "", "meshes = ["]
     for m in train.meshes:
         ring = f", internal = {m.internal}" if m.internal is not None else ""

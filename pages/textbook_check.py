@@ -10,7 +10,7 @@ from solvers.diagnostics import Unsolvable
 from solvers.textbook import BookRow, check
 from ui.chapters import page_for
 from ui.export import csv_button
-from ui.i18n import num, t
+from ui.i18n import num, t, title_of
 
 VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs",
             "missing": "check.missing"}
@@ -47,7 +47,7 @@ for col, verdict in zip(cols, ("agrees", "close", "differs")):
 table = []
 for pid in sorted(checks, key=order):
     scene = load_preset(pid)
-    st.subheader(f"{pid} — {scene.title}")
+    st.subheader(f"{pid} — {title_of(scene)}")
     st.page_link(page_for(pid), label=t("check.open"), icon=":material/open_in_new:",
                  query_params={"scene": pid})
     rows = checks[pid]

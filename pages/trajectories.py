@@ -17,7 +17,7 @@ from solvers.paths import (animation_order, cycle_time, cycle_values, field_path
 from ui.cache import BY_REPR, solved
 from ui.chapters import page_title
 from ui.export import chart, csv_button
-from ui.i18n import current, num, t
+from ui.i18n import current, num, t, title_of
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -40,7 +40,7 @@ def animation(scene: Scene, steps: int, points: tuple[str, ...], language: str, 
     fine = solved(scene, tuple(cycle_values(scene, steps)), order=1)
     order = animation_order(fine.feasible)
     frames = order[::-(-len(order) // MAX_FRAMES)]  # at most MAX_FRAMES frames
-    return animation_figure(fine, frames, list(points), scene.title, t, look_)
+    return animation_figure(fine, frames, list(points), title_of(scene), t, look_)
 
 
 controls, main = st.columns([1, 3], gap="large")
@@ -123,7 +123,7 @@ with main:
         started = time.perf_counter()
         numbered = list(dict.fromkeys([crank_pin(scene), *points]))
         fig = construction_figure(construction, fine if view == "smooth" else None, numbered,
-                                  scene.title, t, look())
+                                  title_of(scene), t, look())
         figure_ms = (time.perf_counter() - started) * 1e3
         with tab_paths:
             chart(fig, f"{scene.id}-paths", key="paths")

@@ -57,3 +57,14 @@ def test_roman_numerals_and_single_letters_stay_latin_in_cyrillic():
 
 
 KEEP_OUT = re.compile(r"⟨[^⟩]*⟩|\{[^}]*\}|\[[^\]]*\]")
+
+
+def test_every_preset_has_a_serbian_title_and_cyrillic_keeps_its_notation():
+    from mechanisms import load_preset, preset_ids
+    from ui.i18n import _to_cyrillic
+
+    for pid in preset_ids():
+        scene = load_preset(pid)
+        assert scene.title_sr, pid
+    cyr = _to_cyrillic(load_preset("zbirka-1.3").title_sr)
+    assert "⟨E⟩" in cyr and "Превртач" in cyr

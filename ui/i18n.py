@@ -77,3 +77,11 @@ def language_picker() -> str:
     return url_choice(st.sidebar.selectbox, "Language · Jezik · Језик", list(LANGUAGES), "lang",
                       default=default_language(), format_func=LANGUAGES.get,
                       label_visibility="collapsed")
+
+
+def title_of(scene) -> str:
+    """A scene's title in the current language (Serbian titles are data in the presets)."""
+    language = current()
+    if not language.startswith("sr") or not scene.title_sr:
+        return scene.title
+    return KEEP.sub(r"\1", _to_cyrillic(scene.title_sr) if language == "sr-cyrl" else scene.title_sr)

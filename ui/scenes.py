@@ -9,7 +9,7 @@ from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
 from mechanisms.writer import gears_to_toml, rotor_to_toml, to_toml
 from ui.cache import preset
-from ui.i18n import t
+from ui.i18n import t, title_of
 from ui.url import url_choice
 
 UPLOADED = "upload"
@@ -44,7 +44,7 @@ def scene_picker(kind: str = "linkage"):
 
     def label(pid: str) -> str:
         scene = uploaded if pid == UPLOADED else preset(pid)
-        return f"{pid} — {scene.title}"
+        return f"{pid} — {title_of(scene)}"
 
     choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", format_func=label)
     scene = uploaded if choice == UPLOADED else preset(choice)
