@@ -5,6 +5,7 @@ from __future__ import annotations
 import pandas as pd
 import streamlit as st
 
+from figures.style import nice_scale
 from figures.gears import schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
 from solvers.gears import TrainError, geometry_notes, solve_train, willis_table
@@ -16,6 +17,7 @@ from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 
 page_title("pages/planetary_gears.py")
+
 controls, main = st.columns([1, 3], gap="large")
 
 with controls:
@@ -30,9 +32,15 @@ with controls:
             v = st.number_input(t("gears.input_velocity", member=inp.member, radius=num(inp.radius)),
                                 value=inp.velocity, key=f"in{inp.member}-{base.id}", format="%.4g")
             inputs.append(Input(inp.member, v / inp.radius, v, inp.radius))
-    pole = st.number_input(t("gears.pole_distance"), min_value=1e-4,
-                           value=0.25 * max(r for m in base.meshes for r in m.radii),
-                           key=f"H-{base.id}", format="%.4g")
+    reach = max(r for m in base.meshes for r in m.radii)
+    u_l = st.number_input(t("gears.scale_length"), min_value=1e-6, value=nice_scale(reach / 8),
+                          key=f"UL-{base.id}", format="%.4g")
+    fastest = max((abs(i.omega) for i in base.inputs), default=1.0) * reach
+    u_v = st.number_input(t("gears.scale_velocity"), min_value=1e-6, value=nice_scale(fastest / 8),
+                          key=f"Uv-{base.id}", format="%.4g")
+    h = st.number_input(t("gears.pole_distance"), min_value=0.1, value=2.0, key=f"H-{base.id}",
+                        format="%.3g")
+    pole = h * u_l  # the pole's distance below the axis, in metres of the drawing's scale
 
 with main:
     st.markdown(f"**{t('gears.meshes')}**")
@@ -70,7 +78,12 @@ with main:
         with tab_v:
             chart(velocity_figure(solution, pole, t("gears.velocity_diagram"), t, look()),
                   f"{train.id}-velocities", key="velocities")
-            st.caption(t("gears.pole_note", H=num(pole, 3)))
+            st.caption(t("gears.pole_note", H=num(h, 3)))
+            u_omega = u_v / (h * u_l)
+            st.markdown(t("gears.u_omega", value=num(u_omega, 4)))
+            st.dataframe(pd.DataFrame([
+                {t("gears.col_member"): m, t("gears.col_intercept"): num(w / u_omega, 4),
+                 "ω = x·U_ω [s⁻¹]": num(w, 5)} for m, w in solution.omega.items()]), hide_index=True)
     rows = []
     for m, w in solution.omega.items():
         book = train.book.get(f"members.{m}.omega")

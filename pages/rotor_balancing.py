@@ -7,6 +7,7 @@ import math
 import pandas as pd
 import streamlit as st
 
+from figures.style import nice_scale
 from figures.balancing import end_view_figure, polygon_figure, rotor_3d_figure
 from mechanisms.rotor import PLANES, Correction, Mass, Rotor
 from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
@@ -24,13 +25,6 @@ COLUMNS = ("m [kg]", "r [mm]", "φ [°]", "x [mm]")
 page_title("pages/rotor_balancing.py")
 controls, main = st.columns([1, 3], gap="large")
 
-
-def nice(value: float) -> float:
-    """A round drawing scale (1, 2 or 5 × 10ⁿ) at or above ``value``."""
-    if value <= 0:
-        return 1.0
-    power = 10 ** math.floor(math.log10(value))
-    return float(next(k * power for k in (1, 2, 5, 10) if k * power >= value))
 
 
 def defaults(base: Rotor) -> dict[str, object]:
@@ -111,7 +105,7 @@ def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> Non
     x_ref = rotor.planes[reference]
     vs = [u * (m.x - x_ref) * MM for u, m in zip(us, rotor.masses)]  # kg·mm²
     v_fix = found[other] * (rotor.planes[other] - x_ref) * MM
-    scale = nice(max(abs(sum(vs[:k + 1])) for k in range(len(vs))) / 8)
+    scale = nice_scale(max(abs(sum(vs[:k + 1])) for k in range(len(vs))) / 8)
     scale = st.number_input(t("rotor.scale_v"), min_value=1e-6, value=scale,
                             key=f"UV{reference}-{rotor.id}", format="%.4g")
     chart(polygon_figure([(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)],
@@ -159,7 +153,7 @@ with main:
     tab_v, tab_u, tab_end, tab_3d = st.tabs([t("rotor.tab_v"), t("rotor.tab_u"), t("rotor.tab_end"),
                                              t("rotor.tab_3d")], key="tab", on_change="rerun")
     scale_key = f"UU-{rotor.id}"
-    scale_u = st.session_state.get(scale_key) or nice(
+    scale_u = st.session_state.get(scale_key) or nice_scale(
         max(abs(sum(us[:k + 1])) for k in range(len(us))) / 8)
     if tab_u.open:
         with tab_u:

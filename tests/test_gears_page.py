@@ -27,3 +27,15 @@ def test_doubling_the_input_doubles_every_speed():
 def test_a_degenerate_ratio_reads_as_infinite():
     at = page("pages/planetary_gears.py", lang="en", scene="zbirka-6.4", ra=4, rb=3)
     assert "does not rotate" in [m.value for m in at.metric][0]
+
+
+def test_angular_velocities_are_read_off_the_pole_rays_as_in_the_book():
+    """U_ω = U_v/(H·U_L): with 0.1 m/cm, 1 m/s per cm and H = 2 cm, 5 s⁻¹ per cm of intercept."""
+    at = page("pages/planetary_gears.py", lang="en", scene="zbirka-6.8",
+              tab="Velocity diagram (Kutzbach)")
+    at.number_input(key="UL-zbirka-6.8").set_value(0.1).run()
+    at.number_input(key="Uv-zbirka-6.8").set_value(1.0).run()
+    at.number_input(key="H-zbirka-6.8").set_value(2.0).run()
+    table = next(d.value for d in at.dataframe if "intercept x [cm]" in d.value.columns)
+    carrier = table[table["member"] == 5].iloc[0]
+    assert float(carrier["intercept x [cm]"]) == pytest.approx(100.0 / 5.0)
