@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass, field
 
-from .loader import SceneError, _Reader, book_notes
+from .loader import SceneError, _Reader, identity
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "members", "meshes", "shafts",
             "fixed", "inputs", "points", "book", "book_notes"}
@@ -154,12 +154,9 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
         points[name] = (member(value[0], f"points.{name}"),
                         r.number({"r": value[1]}, "r", f"points.{name}", non_negative=True))
     return GearTrain(
-        id=r.text(raw, "id", "", default=default_id), title=r.text(raw, "title", "", default=default_id),
-        source=r.text(raw, "source", "", default=""), note=r.text(raw, "note", "", default=""),
+        **identity(raw, r, default_id),
         members=dict(sorted(members.items())), meshes=tuple(meshes), shafts=shafts, fixed=fixed,
-        inputs=tuple(inputs), points=points,
-        book={k: r.number(raw.get("book", {}), k, "book") for k in raw.get("book", {})},
-        book_notes=book_notes(raw, r), title_sr=r.text(raw, "title_sr", "", default=""))
+        inputs=tuple(inputs), points=points)
 
 
 __all__ = ["GearMember", "GearTrain", "Input", "Mesh", "SceneError", "parse_gears"]

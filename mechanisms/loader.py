@@ -189,10 +189,7 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
     pairs = _pairs(raw, r, frame, members)
     driver = _driver(raw, r, members, pairs)
     scene = Scene(
-        id=r.text(raw, "id", "", default=default_id),
-        title=r.text(raw, "title", "", default=default_id),
-        source=r.text(raw, "source", "", default=""),
-        note=r.text(raw, "note", "", default=""),
+        **identity(raw, r, default_id),
         frame=frame,
         members=members,
         pairs=pairs,
@@ -201,9 +198,6 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         forces=_forces(raw, r, members, frame),
         moments=_moments(raw, r, members),
         gravity=r.number(raw, "gravity", "", default=0.0, non_negative=True),
-        book=_book(raw, r),
-        book_notes=book_notes(raw, r),
-        title_sr=r.text(raw, "title_sr", "", default=""),
     )
     if "travel" in raw:
         scene = scene.with_(travel=_travel(raw, r, driver))
@@ -425,19 +419,22 @@ def _travel(raw: dict, r: _Reader, driver: Driver) -> Travel:
                   angle=math.radians(r.number(spec, "angle", "travel", default=0.0)))
 
 
-def book_notes(raw: dict, r: _Reader) -> dict[str, str]:
-    """One-line reasons why printed values differ, keyed like ``[book]``."""
-    table = raw.get("book_notes", {})
-    if not isinstance(table, dict):
-        raise r.fail("book_notes", "must be a table of strings keyed like [book]")
-    return {k: r.text(table, k, "book_notes") for k in table}
-
-
-def _book(raw: dict, r: _Reader) -> dict[str, float]:
-    table = raw.get("book", {})
-    if not isinstance(table, dict):
+def identity(raw: dict, r: _Reader, default_id: str) -> dict:
+    """What every kind of scene has: id, titles, source, note, and the book's printed values
+    with the reasons some of them differ (``[book]``, ``[book_notes]``)."""
+    book = raw.get("book", {})
+    if not isinstance(book, dict):
         raise r.fail("book", "must be a table of printed values, e.g. \"members.4.omega\" = 8.148")
-    return {k: r.number(table, k, "book") for k in table}
+    notes = raw.get("book_notes", {})
+    if not isinstance(notes, dict):
+        raise r.fail("book_notes", "must be a table of strings keyed like [book]")
+    return dict(id=r.text(raw, "id", "", default=default_id),
+                title=r.text(raw, "title", "", default=default_id),
+                title_sr=r.text(raw, "title_sr", "", default=""),
+                source=r.text(raw, "source", "", default=""),
+                note=r.text(raw, "note", "", default=""),
+                book={k: r.number(book, k, "book") for k in book},
+                book_notes={k: r.text(notes, k, "book_notes") for k in notes})
 
 
 def _check_shared_points_are_joints(scene: Scene, r: _Reader) -> None:

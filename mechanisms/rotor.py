@@ -11,7 +11,7 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 
-from .loader import SceneError, _Reader, book_notes
+from .loader import SceneError, _Reader, identity
 
 PLANES = ("I", "II")
 QUANTITIES = ("mass", "radius", "angle")
@@ -95,16 +95,10 @@ def parse_rotor(raw: dict, source: str, default_id: str) -> Rotor:
     bearings = r.check_keys(raw.get("bearings", {}), {"A", "B"}, "bearings")
     omega = raw.get("omega")
     return Rotor(
-        id=r.text(raw, "id", "", default=default_id),
-        title=r.text(raw, "title", "", default=default_id),
-        source=r.text(raw, "source", "", default=""),
-        note=r.text(raw, "note", "", default=""),
+        **identity(raw, r, default_id),
         masses=tuple(masses), planes=positions, corrections=corrections, mode=mode,
         omega=None if omega is None else r.number(raw, "omega", "", positive=True),
         bearings={k: r.number(bearings, k, "bearings") for k in bearings},
-        book={k: r.number(raw.get("book", {}), k, "book") for k in raw.get("book", {})},
-        book_notes=book_notes(raw, r),
-        title_sr=r.text(raw, "title_sr", "", default=""),
     )
 
 

@@ -26,9 +26,14 @@ def _v(z: complex) -> str:
     return f"[{_n(z.real)}, {_n(z.imag)}]"
 
 
+def _identity(scene) -> list[str]:
+    """The top-level keys every kind of scene shares."""
+    return [f"id = {_s(scene.id)}", f"title = {_s(scene.title)}", f"title_sr = {_s(scene.title_sr)}",
+            f"source = {_s(scene.source)}", f"note = {_s(scene.note)}"]
+
+
 def to_toml(scene: Scene) -> str:
-    out = [f"id = {_s(scene.id)}", f"title = {_s(scene.title)}", f"title_sr = {_s(scene.title_sr)}",
-           f"source = {_s(scene.source)}", f"note = {_s(scene.note)}"]
+    out = _identity(scene)
     if scene.gravity:
         out.append(f"gravity = {_n(scene.gravity)}")
     out.append("\npairs = [")
@@ -95,9 +100,7 @@ def _book(book: dict[str, float], notes: dict[str, str]) -> list[str]:
 
 
 def rotor_to_toml(rotor: Rotor) -> str:
-    out = ['kind = "rotor"', f"id = {_s(rotor.id)}", f"title = {_s(rotor.title)}",
-           f"title_sr = {_s(rotor.title_sr)}",
-           f"source = {_s(rotor.source)}", f"note = {_s(rotor.note)}", f'mode = "{rotor.mode}"']
+    out = ['kind = "rotor"', *_identity(rotor), f'mode = "{rotor.mode}"']
     if rotor.omega is not None:
         out.append(f"omega = {_n(rotor.omega)}")
     out.append("\n[planes]")
@@ -119,9 +122,7 @@ def rotor_to_toml(rotor: Rotor) -> str:
 
 
 def gears_to_toml(train: GearTrain) -> str:
-    out = ['kind = "gears"', f"id = {_s(train.id)}", f"title = {_s(train.title)}",
-           f"title_sr = {_s(train.title_sr)}",
-           f"source = {_s(train.source)}", f"note = {_s(train.note)}", "", "meshes = ["]
+    out = ['kind = "gears"', *_identity(train), "", "meshes = ["]
     for m in train.meshes:
         ring = f", internal = {m.internal}" if m.internal is not None else ""
         bevel = ", bevel = true" if m.bevel else ""
