@@ -136,3 +136,12 @@ def test_a_downloaded_scene_uploads_again_unchanged(pid):
     a, b = solve(scene), solve(again)
     for name, p in a.points.items():
         assert complex(b.points[name].z[0]) == pytest.approx(complex(p.z[0]), abs=1e-12)
+
+
+@pytest.mark.parametrize("pid", preset_ids("gears"))
+def test_a_downloaded_gear_train_uploads_again_unchanged(pid):
+    from mechanisms import parse_document
+    from mechanisms.writer import gears_to_toml
+
+    train = load_preset(pid)
+    assert parse_document(gears_to_toml(train)) == train
