@@ -68,3 +68,11 @@ def test_every_preset_has_a_serbian_title_and_cyrillic_keeps_its_notation():
         assert scene.title_sr, pid
     cyr = _to_cyrillic(load_preset("zbirka-1.3").title_sr)
     assert "⟨E⟩" in cyr and "Превртач" in cyr
+
+
+def test_units_in_brackets_hold_no_words():
+    """[…] stays Latin in Cyrillic, so it may hold units only, never a Serbian word."""
+    for key, text in table("sr").items():
+        for inside in re.findall(r"\[([^\]]*)\]", text):
+            units = re.sub(r"\{\w+\}|rad", "", inside)  # placeholders are filled with units
+            assert not re.search(r"[a-zčćšđž]{3,}", units), (key, inside)
