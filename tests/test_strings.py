@@ -74,5 +74,5 @@ def test_units_in_brackets_hold_no_words():
     """[…] stays Latin in Cyrillic, so it may hold units only, never a Serbian word."""
     for key, text in table("sr").items():
         for inside in re.findall(r"\[([^\]]*)\]", text):
-            rest = re.sub(r"\{\w+\}|\b(rad|cm|mm|kg|ms|m|s|N)\b", "", inside)  # units, placeholders
+            rest = re.sub(r"\{\w+\}|(?<![A-Za-z])(rad|cm|mm|kg|ms|m|s|N)(?![A-Za-z])", "", inside)
             assert not re.search(r"[A-Za-zčćšđžČĆŠĐŽ]", rest), (key, inside)
