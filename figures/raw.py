@@ -31,9 +31,6 @@ class RawFigure(go.Figure):
             spec["frames"] = self._raw_frames
         return spec
 
-    def to_plotly_json(self) -> dict:
-        return self.to_dict()
-
     def add_frames(self, frames: list[dict]) -> None:
         """Animation frames as plain dicts: ``{"name", "data", "traces"}``."""
         self._raw_frames.extend(frames)

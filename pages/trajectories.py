@@ -155,9 +155,9 @@ with main:
                        speed=num(slowest, 3)))
 
 with controls:
+    lengths = {p: path_length(fine.points[p].z) for p in points}
     answers = [Quantity(t("traj.time_per_cycle"), cycle_time(scene), "s")]
-    answers += [Quantity(t("traj.path_length", point=p), path_length(fine.points[p].z), "m")
-                for p in points]
+    answers += [Quantity(t("traj.path_length", point=p), length, "m") for p, length in lengths.items()]
     if scene.travel:
         tr = scene.travel
         answers += [Quantity(t("traj.omega_b"), tr.crank_omega, "s⁻¹"),
@@ -166,7 +166,7 @@ with controls:
     answer_box(answers, key="self")
     st.metric(t("traj.time_per_cycle"), f"{num(cycle_time(scene))} s")
     for name in points:
-        st.metric(t("traj.path_length", point=name), f"{num(path_length(fine.points[name].z))} m")
+        st.metric(t("traj.path_length", point=name), f"{num(lengths[name])} m")
     for name, stroke in strokes(fine).items():
         st.metric(t("traj.stroke", pair=name), f"{num(stroke)} m")
     for number, (low, high) in swings(fine).items():

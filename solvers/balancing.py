@@ -39,8 +39,6 @@ class Balance:
     rotor: Rotor
     corrections: dict[str, Found]
     u_needed: dict[str, complex]  # the U each plane must add (kg·m)
-    unbalance: complex  # Σ U of the masses alone (kg·m)
-    moment: complex  # Σ U·(x − x_II) of the masses alone (kg·m²)
     residual_force: float  # |Σ U| after correction (kg·m)
     residual_moment: float  # |Σ U·(x − x_II)| after correction (kg·m²)
     notes: tuple[str, ...] = ()
@@ -101,8 +99,7 @@ def balance(rotor: Rotor) -> Balance:
     if rotor.mode == "dynamic":
         x2 = rotor.planes["II"]
         moment_after = moment + found["I"].u * (rotor.planes["I"] - x2)
-    return Balance(rotor, found, needed, total, moment, abs(after), abs(moment_after),
-                   tuple(notes))
+    return Balance(rotor, found, needed, abs(after), abs(moment_after), tuple(notes))
 
 
 def _complete(plane: str, known: Correction, u: complex, notes: list) -> Found:

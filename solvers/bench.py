@@ -16,7 +16,7 @@ import numpy as np
 from mechanisms.schema import DRIVER, FRAME, Scene
 
 from .kinematics import solve
-from .structure import decompose
+from .structure import Structure, decompose
 
 
 def fourbar_closed_form(o, d, r2, r3, r4, phi2, omega2, eps2, sign):
@@ -45,9 +45,9 @@ def fourbar_closed_form(o, d, r2, r3, r4, phi2, omega2, eps2, sign):
     return phi3, phi4, w3, w4, e3, e4
 
 
-def _fourbar_of(scene: Scene):
+def _fourbar_of(scene: Scene, structure: Structure):
     """The four-bar data of the scene's first group, or None when it is not a four-bar."""
-    group = decompose(scene).groups[0]
+    group = structure.groups[0]
     if group.kind != "RRR" or group.attached_to != {FRAME, DRIVER}:
         return None
     crank = scene.members[DRIVER]
@@ -97,7 +97,7 @@ def measure(scene: Scene, steps: int, repeat: int) -> BenchResult:
     """Time the solver over ``steps`` positions and compare it with the closed form."""
     phi = np.linspace(0.0, 2 * math.pi, steps, endpoint=False)
     structure = decompose(scene)
-    fb = _fourbar_of(scene)
+    fb = _fourbar_of(scene, structure)
     wanted = [fb["point"]] if fb else None
     t_pos = _median_time(lambda: solve(scene, phi, order=0, points=wanted, structure=structure), repeat)
     t_all = _median_time(lambda: solve(scene, phi, order=2, points=wanted, structure=structure), repeat)

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import sys
 
 from mechanisms import SceneError, Scene, load_any, load_preset, preset_ids

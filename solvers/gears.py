@@ -17,8 +17,6 @@ import numpy as np
 
 from mechanisms.gears import GearTrain
 
-FRAME = 1  # the frame is member 1 in the course; it never appears among the unknowns
-
 
 class TrainError(ValueError):
     """The train's structure is wrong (a mesh between planets of different carriers, …)."""

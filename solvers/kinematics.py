@@ -105,7 +105,6 @@ class Motion:
 def driver_body(scene: Scene, at: np.ndarray) -> Body:
     d = scene.driver
     pair = scene.pair(d.pair)
-    n = np.ones_like(at)
     if d.kind == "rotating":
         return Body(rot=unit(at), z=scene.frame[pair.point], ref=0j, omega=d.speed, v=0j,
                     epsilon=d.accel, a=0j, angle=at)

@@ -9,7 +9,6 @@ import numpy as np
 
 from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
-from mechanisms.schema import Scene
 
 from .balancing import Balance, balance
 from .diagnostics import Unsolvable, solve_instant

@@ -4,8 +4,6 @@ import pytest
 
 from mechanisms import SceneError, load_preset, parse_scene, preset_ids
 
-from . import scenes
-
 
 
 def fourbar_text(**changes) -> str:
