@@ -1,0 +1,359 @@
+"""The velocity and acceleration plans of chapters 2–3, built from the exact solution.
+
+A student draws a plan by walking the mechanism the way it is built: the driver first,
+then each Assur group, where two vector equations meet at the group's inner point
+(``v⃗_C = v⃗_B + v⃗_CB = v⃗_D + v⃗_CD``), and last every third point of a member by
+similarity. This module lays out the same walk as data — the equations, and for each
+term the arrow it draws on the plan — taking every vector's value from the solver's
+exact motion, so the drawn plan closes to solver precision.
+
+Images are labelled like the book: the image of point C is ``c``; the coincident point
+of member 4 under a slider at B (method of extension) is ``B4`` with image ``b4``;
+construction points of the acceleration plan are ``n1, n2, …`` (between a normal and a
+tangential component) and ``k1, k2, …`` (after a Coriolis component). The pole is ``p``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from mechanisms.schema import DRIVER, FRAME, Pair, Scene
+
+from .kinematics import Motion
+from .structure import Group
+
+POLE = "p"
+KINDS = ("absolute", "relative", "normal", "tangential", "sliding", "coriolis")
+
+
+@dataclass(frozen=True)
+class Arrow:
+    """One vector of a plan, from image ``tail`` to image ``head`` (m/s or m/s²).
+
+    ``symbol`` is its LaTeX name (``v_{CB}``, ``a^n_{CB}``); ``rule`` is what the student
+    knows about its direction before drawing (a token and the points it refers to).
+    """
+
+    kind: str
+    tail: str
+    head: str
+    value: complex
+    symbol: str
+    rule: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Step:
+    """One vector equation of the construction: each side runs from a known image to
+    ``target``; a group's step has two sides that meet there."""
+
+    target: str
+    sides: tuple[tuple[str, tuple[Arrow, ...]], ...]  # (start image, arrows)
+    latex: str
+    group: str  # "driver", a group label such as "II(3,4)", or "similarity"
+
+
+@dataclass
+class Plan:
+    quantity: str  # "velocity" or "acceleration"
+    images: dict[str, complex]  # image label → vector from the pole
+    steps: list[Step] = field(default_factory=list)
+
+    @property
+    def arrows(self) -> list[Arrow]:
+        return [a for st in self.steps for _, side in st.sides for a in side]
+
+    def closure(self) -> float:
+        """Largest mismatch between a side's sum and its target image (should be ~0)."""
+        worst = 0.0
+        for st in self.steps:
+            for start, side in st.sides:
+                total = self.images[start] + sum(a.value for a in side)
+                worst = max(worst, abs(total - self.images[st.target]))
+        return worst
+
+
+@dataclass(frozen=True)
+class Station:
+    """A point as the plan uses it: the point ``letter`` carried by ``member``."""
+
+    member: int
+    letter: str
+    coincident: bool = False  # the guide's point under a slider (B₄)
+
+    @property
+    def name(self) -> str:
+        return f"{self.letter}{self.member}" if self.coincident else self.letter
+
+    @property
+    def image(self) -> str:
+        return self.name.lower()
+
+    @property
+    def tex(self) -> str:
+        return f"{self.letter}_{{{self.member}}}" if self.coincident else self.letter
+
+
+@dataclass
+class Plans:
+    velocity: Plan
+    acceleration: Plan
+    positions: dict[str, complex]  # mechanism position of every station, m
+    members: dict[int, tuple[float, float]]  # member → (ω, ε) at the instant
+    sliders: dict[str, tuple[float, float, complex]]  # pair → (v_rel, a_rel, a_Coriolis)
+
+
+def build(motion: Motion, i: int = 0) -> Plans:
+    """Both plans at position ``i`` of a motion solved with ``order=2``."""
+    return _Builder(motion, i).run()
+
+
+class _Builder:
+    def __init__(self, motion: Motion, i: int):
+        if motion.order < 2:
+            raise ValueError("plans need accelerations: solve with order=2")
+        self.m, self.i, self.scene = motion, i, motion.scene
+        self.vel = Plan("velocity", {POLE: 0j})
+        self.acc = Plan("acceleration", {POLE: 0j})
+        self.pos: dict[str, complex] = {}
+        self.n_count = self.k_count = 0
+
+    # --- the state of a station at the instant ------------------------------------------
+    def _omega(self, member: int) -> tuple[float, float]:
+        if member == FRAME:
+            return 0.0, 0.0
+        mm = self.m.members[member]
+        return float(mm.omega[self.i]), float(mm.epsilon[self.i])
+
+    def _state(self, st: Station, z: complex | None = None) -> tuple[complex, complex, complex]:
+        """Position, velocity, acceleration of the station (rigid-body rule from a named
+        point of its member for a coincident point)."""
+        if not st.coincident:
+            p = self.m.points[st.letter]
+            return complex(p.z[self.i]), complex(p.v[self.i]), complex(p.a[self.i])
+        ref = next(iter(self.scene.points_of(st.member)))
+        zr, vr, ar = self._state(Station(st.member, ref))
+        w, e = self._omega(st.member)
+        r = z - zr
+        return z, vr + 1j * w * r, ar + (1j * e - w * w) * r
+
+    def _place(self, st: Station, z: complex | None = None) -> None:
+        z, v, a = self._state(st, z)
+        self.pos[st.name] = z
+        self.vel.images[st.image] = v
+        self.acc.images[st.image] = a
+
+    def _known(self, st: Station) -> bool:
+        return st.image in self.vel.images
+
+    # --- the three kinds of move along a chain -------------------------------------------
+    def _rigid(self, member: int, frm: Station, to: Station) -> tuple[Arrow, list[Arrow]]:
+        """to = frm + relative (⊥ frm–to); in accelerations normal (toward frm) + tangential."""
+        w, e = self._omega(member)
+        r = self.pos[to.name] - self.pos[frm.name]
+        sub = f"{to.tex}{frm.tex}"
+        v = Arrow("relative", frm.image, to.image, 1j * w * r, f"v_{{{sub}}}",
+                  ("perp", frm.name, to.name))
+        self.n_count += 1
+        n = f"n{self.n_count}"
+        self.acc.images[n] = self.acc.images[frm.image] - w * w * r
+        acc = [Arrow("normal", frm.image, n, -w * w * r, f"a^n_{{{sub}}}",
+                     ("toward", to.name, frm.name)),
+               Arrow("tangential", n, to.image, 1j * e * r, f"a^t_{{{sub}}}",
+                     ("perp", frm.name, to.name))]
+        return v, acc
+
+    def _slide(self, pair: Pair, frm: Station, to: Station) -> tuple[Arrow, list[Arrow]]:
+        """Across a prismatic pair at one place: to = frm + sliding (∥ guide);
+        in accelerations Coriolis 2·ω_guide × v_rel, then the relative sliding part."""
+        guide = pair.members[0]
+        w, _ = self._omega(guide)
+        v_rel = self.vel.images[to.image] - self.vel.images[frm.image]
+        a_rel = self.acc.images[to.image] - self.acc.images[frm.image]
+        along = ("along", pair.name)
+        if guide == FRAME:  # a fixed guide: the motion is absolute and has no Coriolis part
+            name = (to if frm.member == FRAME else frm).tex
+            return (Arrow("sliding", frm.image, to.image, v_rel, f"v_{{{name}}}", along),
+                    [Arrow("sliding", frm.image, to.image, a_rel, f"a_{{{name}}}", along)])
+        coriolis = 2j * w * v_rel
+        sub = f"{to.tex}{frm.tex}"
+        v = Arrow("sliding", frm.image, to.image, v_rel, f"v_{{{sub}}}", along)
+        self.k_count += 1
+        k = f"k{self.k_count}"
+        self.acc.images[k] = self.acc.images[frm.image] + coriolis
+        acc = [Arrow("coriolis", frm.image, k, coriolis, f"a^k_{{{sub}}}",
+                     ("coriolis", str(guide))),
+               Arrow("sliding", k, to.image, a_rel - coriolis, f"a^r_{{{sub}}}", along)]
+        return v, acc
+
+    # --- the walk --------------------------------------------------------------------------
+    def run(self) -> Plans:
+        scene = self.scene
+        for letter in scene.frame:
+            self.pos[letter] = scene.frame[letter]
+            self.vel.images[letter.lower()] = 0j
+            self.acc.images[letter.lower()] = 0j
+        self._driver()
+        for group in self.m.structure.groups:
+            if all(m in self.m.members for m in group.members):
+                self._group(group)
+        for member in [DRIVER, *(m for g in self.m.structure.groups for m in g.members)]:
+            if member in self.m.members:
+                self._similar(member)
+        return Plans(self.vel, self.acc, self.pos,
+                     {n: self._omega(n) for n in self.m.members},
+                     {name: (float(s.v[self.i]), float(s.a[self.i]), complex(s.coriolis[self.i]))
+                      for name, s in self.m.sliders.items()})
+
+    def _driver(self) -> None:
+        pair = self.scene.pair(self.scene.driver.pair)
+        own = self.scene.points_of(DRIVER)
+        tip = next((p for p in own if p != pair.point), pair.point)
+        if pair.kind == "revolute":
+            centre = Station(FRAME, pair.point)
+            target = Station(DRIVER, tip)
+            self._place(target)
+            v, acc = self._rigid(DRIVER, centre, target)
+            self._record("driver", target, [(centre, [v], acc)])
+            return
+        target = Station(DRIVER, pair.point)
+        self._place(target)
+        v = self.vel.images[target.image]
+        a = self.acc.images[target.image]
+        self._record("driver", target, [(None, [Arrow("absolute", POLE, target.image, v,
+                                                      f"v_{{{target.tex}}}", ("along", pair.name))],
+                                         [Arrow("absolute", POLE, target.image, a,
+                                                f"a_{{{target.tex}}}", ("along", pair.name))])])
+
+    def _group(self, group: Group) -> None:
+        """Two chains, one from each outer pair, that meet at the inner pair."""
+        j, k = group.members
+        outer_j, inner, outer_k = group.pairs
+        if inner.kind == "revolute":
+            meet = {j: Station(j, inner.point), k: Station(k, inner.point)}
+            target = meet[j]
+        else:
+            guide, slider = inner.members
+            meet = {guide: Station(guide, inner.point, coincident=True),
+                    slider: Station(slider, inner.point)}
+            target = meet[guide]
+        if inner.kind == "prismatic":  # B₄ sits where the slider's point is
+            self._place(meet[slider])
+            self._place(target, self.pos[meet[slider].name])
+        chains = [self._chain(member, outer, meet[member])
+                  for member, outer in ((j, outer_j), (k, outer_k))]
+        if inner.kind == "prismatic":  # the slider's chain continues across the pair
+            side = 0 if slider == j else 1
+            start, v_arrows, a_arrows = chains[side]
+            v, acc = self._slide(inner, meet[slider], target)
+            chains[side] = (start, [*v_arrows, v], [*a_arrows, *acc])
+        self._record(group.label(), target, chains)
+
+    def _chain(self, member: int, outer: Pair, meet: Station):
+        """From the known side of ``outer`` into ``member`` and on to ``meet``."""
+        known = outer.other(member)
+        v_arrows: list[Arrow] = []
+        a_arrows: list[Arrow] = []
+        if outer.kind == "revolute":
+            start = entry = Station(known, outer.point)
+            if not self._known(start):  # a third point of a known member
+                self._similar(known)
+        elif member == outer.members[1]:  # member slides on a known guide
+            entry = Station(member, outer.point)
+            start = Station(known, outer.point, coincident=True)
+            self._place(entry)
+            self._carried(start, self.pos[entry.name])
+            v, acc = self._slide(outer, start, entry)
+            v_arrows.append(v)
+            a_arrows += acc
+        else:  # member is the guide of a known slider
+            start = Station(known, outer.point)
+            entry = Station(member, outer.point, coincident=True)
+            self._place(entry, self.pos[start.name])
+            v, acc = self._slide(outer, start, entry)
+            v_arrows.append(v)
+            a_arrows += acc
+        if meet.name != entry.name:
+            if not meet.coincident:
+                self._place(meet)
+            v, acc = self._rigid(member, entry, meet)
+            v_arrows.append(v)
+            a_arrows += acc
+        return start, v_arrows, a_arrows
+
+    def _carried(self, st: Station, z: complex) -> None:
+        """A known guide's point under a slider, by similarity from a named point."""
+        self._place(st, z)
+        if st.member != FRAME:
+            base = Station(st.member, self._first_known(st.member))
+            v, acc = self._rigid(st.member, base, st)
+            self._record("similarity", st, [(base, [v], acc)])
+
+    def _first_known(self, member: int) -> str:
+        return next(p for p in self.scene.points_of(member) if self._known(Station(member, p)))
+
+    def _similar(self, member: int) -> None:
+        """Third points of a member: their images by similarity to the member's shape."""
+        own = self.scene.points_of(member)
+        base = Station(member, self._first_known(member))
+        for letter in own:
+            st = Station(member, letter)
+            if self._known(st):
+                continue
+            self._place(st)
+            v, acc = self._rigid(member, base, st)
+            self._record("similarity", st, [(base, [v], acc)])
+
+    def _record(self, group: str, target: Station, chains) -> None:
+        v_sides, a_sides = [], []
+        for start, v_arrows, a_arrows in chains:
+            head = POLE if start is None else start.image
+            v_sides.append((head, tuple(v_arrows)))
+            a_sides.append((head, tuple(a_arrows)))
+        starts = [s for s, _, _ in chains]
+        self.vel.steps.append(Step(target.image, tuple(v_sides),
+                                   self._latex("v", target, starts, v_sides), group))
+        self.acc.steps.append(Step(target.image, tuple(a_sides),
+                                   self._latex("a", target, starts, a_sides), group))
+
+    def _latex(self, q: str, target: Station, starts, sides) -> str:
+        """``\\vec v_{C} = \\vec v_{B} + \\vec v_{CB} = …`` for one step; a point on the
+        frame adds nothing, and a slide along a fixed guide is stated as a direction."""
+        head = f"\\vec {q}_{{{target.tex}}}"
+        if starts == [None]:  # a linear driver's own motion
+            return head + r"\ \text{(given)}"
+        parts, notes = [], []
+        for start, (_, arrows) in zip(starts, sides):
+            if start.member == FRAME and [a.kind for a in arrows] == ["sliding"]:
+                notes.append(f"\\vec {arrows[0].symbol} \\parallel {_guide_tex(self.scene, arrows[0])}")
+                continue
+            fixed = start.member == FRAME or (start.letter in self.scene.frame
+                                               and not start.coincident)
+            terms = [] if fixed else [f"\\vec {q}_{{{start.tex}}}"]
+            terms += [f"\\vec {a.symbol}" for a in arrows]
+            parts.append(" + ".join(terms) if terms else "0")
+        return ",\\quad ".join([head + " = " + " = ".join(parts), *notes])
+
+
+def _guide_tex(scene: Scene, arrow: Arrow) -> str:
+    pair = scene.pair(arrow.rule[1])
+    return f"\\overline{{{pair.through or pair.point}{pair.point}}}"
+
+
+def describe(rule: tuple[str, ...], scene: Scene) -> str:
+    """The direction rule in words with the book's symbols: ⊥ BC, ∥ guide, …"""
+    kind, *args = rule
+    if kind == "perp":
+        return f"⊥ {args[0]}{args[1]}"
+    if kind == "toward":
+        return f"∥ {args[0]}{args[1]}, → {args[1]}"
+    if kind == "along":
+        pair = scene.pair(args[0])
+        return f"∥ {pair.through or pair.point}–{pair.point} ({pair.members[0]})"
+    return f"⊥ v_rel, ω{args[0]}"
+
+
+def magnitudes(plan: Plan) -> dict[str, float]:
+    """|vector| of every named image (points, not construction points)."""
+    return {k: abs(v) for k, v in plan.images.items()
+            if k != POLE and not (k[0] in "nk" and k[1:].isdigit())}
