@@ -20,7 +20,9 @@ PRESETS = Path(__file__).parent / "presets"
 MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before parsing
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "gravity", "pairs", "frame",
-            "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes"}
+            "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes",
+            "scales"}
+SCALE_KEYS = {"L", "v", "a", "F"}
 TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
 PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "angle",
@@ -198,6 +200,7 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         forces=_forces(raw, r, members, frame),
         moments=_moments(raw, r, members),
         gravity=r.number(raw, "gravity", "", default=0.0, non_negative=True),
+        scales=_scales(raw, r),
     )
     if "travel" in raw:
         scene = scene.with_(travel=_travel(raw, r, driver))
@@ -408,6 +411,12 @@ def _moments(raw: dict, r: _Reader, members: dict[int, Member]) -> tuple[Moment,
     return tuple(Moment(_member_ref(spec.get("member"), r, f"{where}.member", members),
                         r.number(spec, "value", where))
                  for where, spec in _tables(raw, r, "moments", MOMENT_KEYS))
+
+
+def _scales(raw: dict, r: _Reader) -> dict[str, float]:
+    """The book's drawing scales: how much one centimetre of the drawing stands for."""
+    spec = r.check_keys(raw.get("scales", {}), SCALE_KEYS, "scales")
+    return {k: r.number(spec, k, "scales", positive=True) for k in spec}
 
 
 def _travel(raw: dict, r: _Reader, driver: Driver) -> Travel:

@@ -155,6 +155,8 @@ class Scene:
     travel: Travel | None = None
     book_notes: dict[str, str] = field(default_factory=dict)  # why a printed value is off
     title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
+    # the book's drawing scales per cm of drawing: L in m, v in m/s, a in m/s², F in N
+    scales: dict[str, float] = field(default_factory=dict)
 
     def pair(self, name: str) -> Pair:
         for p in self.pairs:

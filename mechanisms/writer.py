@@ -84,6 +84,9 @@ def to_toml(scene: Scene) -> str:
                 f"follows_member = {'true' if f.follows_member else 'false'}"]
     for m in scene.moments:
         out += ["\n[[moments]]", f"member = {m.member}", f"value = {_n(m.value)}"]
+    if scene.scales:
+        out.append("\n[scales]")
+        out += [f"{k} = {_n(v)}" for k, v in scene.scales.items()]
     out += _book(scene.book, scene.book_notes)
     return "\n".join(out) + "\n"
 

@@ -8,12 +8,10 @@ import streamlit as st
 from mechanisms import load_preset, preset_ids
 from solvers.diagnostics import Unsolvable
 from solvers.textbook import BookRow, check
+from ui.book import VERDICTS, book_table
 from ui.chapters import page_for
 from ui.export import csv_button
-from ui.i18n import num, t, title_of
-
-VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs",
-            "missing": "check.missing"}
+from ui.i18n import t, title_of
 
 
 @st.cache_data(max_entries=4)
@@ -54,13 +52,7 @@ for pid in sorted(checks, key=order):
     if isinstance(rows, str):
         st.error(rows)
         continue
-    frame = pd.DataFrame([{
-        t("check.col_quantity"): r.key, t("check.col_book"): num(r.book, 6),
-        t("check.col_exact"): "—" if r.exact is None else num(r.exact, 6),
-        t("check.col_difference"): "—" if r.difference is None else num(r.difference, 3),
-        t("check.col_verdict"): t(VERDICTS[r.verdict]), t("check.col_note"): r.note}
-        for r in rows])
-    st.dataframe(frame, hide_index=True)
+    st.dataframe(book_table(rows), hide_index=True)
     table += [dict(preset=pid, key=r.key, book=r.book, exact=r.exact, verdict=r.verdict,
                    note=r.note) for r in rows]
 csv_button(pd.DataFrame(table), "textbook-check.csv", key="csv")

@@ -1,5 +1,189 @@
-"""Chapter page placeholder (its issue is not done yet)."""
+"""Chapters 2–3 — velocity and acceleration plans, step by step, beside the complex-number method."""
 
-from ui.chapters import coming_soon
+from __future__ import annotations
 
-coming_soon("pages/velocity_plans.py")
+import math
+
+import pandas as pd
+import streamlit as st
+
+from figures.plans import layout_plan, mechanism_figure, plain, plan_figure, plan_svg
+from figures.style import nice_scale
+from mechanisms.schema import Scene
+from solvers.analytic import equations, solved_values
+from solvers.diagnostics import Unsolvable, solve_instant
+from solvers.plans import Plans, build, describe, readings
+from solvers.textbook import check
+from ui.cache import BY_REPR
+from ui.book import book_table
+from ui.chapters import page_title
+from ui.export import chart, csv_button
+from ui.i18n import num, t, title_of
+from ui.present import look
+from ui.scenes import scene_download, scene_picker
+from ui.selfcheck import Quantity, answer_box
+from ui.url import seed
+
+page_title("pages/velocity_plans.py")
+
+
+@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
+def solved_plans(scene: Scene) -> Plans:
+    """Both plans at the scene's instant (raises Unsolvable with the reason)."""
+    return build(solve_instant(scene, None))
+
+
+def auto_scales(scene: Scene) -> dict[str, float]:
+    """The book's scales when the preset has them, else round ones that fit a 12 cm plan."""
+    try:
+        plans = solved_plans(scene)
+        reach = {"v": max(map(abs, plans.velocity.images.values())),
+                 "a": max(map(abs, plans.acceleration.images.values()))}
+    except Unsolvable:
+        reach = {"v": 1.0, "a": 10.0}
+    spans = [abs(z) for m in scene.members.values() for z in m.points.values()]
+    reach["L"] = max(spans or [1.0])
+    return {k: scene.scales.get(k, nice_scale(reach[k] / 12)) for k in ("L", "v", "a")}
+
+
+def defaults(base: Scene) -> dict[str, object]:
+    rotating = base.driver.kind == "rotating"
+    values: dict[str, object] = {"at": math.degrees(base.driver.at) if rotating else base.driver.at,
+                                 "omega": float(base.driver.speed), "prec": 0.5}
+    scales = auto_scales(base)
+    values.update(UL=scales["L"], Uv=scales["v"], Ua=scales["a"])
+    return values
+
+
+def driver_inputs(base: Scene) -> Scene:
+    if base.driver.kind == "rotating":
+        at = st.slider(t("plans.phi"), 0.0, 360.0, step=0.5, key="at", bind="query-params")
+        speed = st.slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega", bind="query-params")
+        return base.with_(at=math.radians(at), speed=speed)
+    reach = max(abs(base.driver.at), 0.1)
+    at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3), step=round(reach / 100, 4),
+                   key="at", bind="query-params")
+    speed = st.slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", bind="query-params")
+    return base.with_(at=at, speed=speed)
+
+
+def scale_inputs() -> dict[str, float]:
+    with st.expander(t("plans.scales"), expanded=True):
+        st.caption(t("plans.scales_hint"))
+        scales = {k: st.number_input(t(f"plans.U{k}"), min_value=1e-9, format="%.4g", key=f"U{k}",
+                                     bind="query-params")
+                  for k in ("L", "v", "a")}
+        precision = st.slider(t("plans.precision"), 0.1, 2.0, step=0.1, key="prec",
+                              bind="query-params")
+    return {"L": scales["L"], "v": scales["v"], "a": scales["a"], "precision_cm": precision / 10}
+
+
+controls, main = st.columns([1, 3], gap="large")
+
+with controls:
+    base = scene_picker()
+    seed(defaults(base), st.session_state["scene"])
+    scene = driver_inputs(base)
+    scales = scale_inputs()
+    scene_download(scene)
+
+try:
+    plans = solved_plans(scene)
+except Unsolvable as exc:
+    with main:
+        st.error(t("plans.unsolvable", reason=str(exc)))
+    st.stop()
+
+steps = plans.velocity.steps
+with main:
+    st.caption(title_of(scene))
+    if st.session_state.get("step", 0) > len(steps):
+        st.session_state["step"] = len(steps)
+    step = st.slider(t("plans.step"), 1, len(steps), value=len(steps), key="step",
+                     bind="query-params")
+    tab_plans, tab_loops, tab_accuracy = st.tabs(
+        [t("plans.tab_plans"), t("plans.tab_analytic"), t("plans.tab_accuracy")],
+        key="tab", on_change="rerun")
+
+
+def step_table(index: int) -> pd.DataFrame:
+    """The vectors of one step in both plans: name, kind, direction, plan length, value."""
+    rows = []
+    for plan, key, unit in ((plans.velocity, "v", "m/s"), (plans.acceleration, "a", "m/s²")):
+        for _, side in plan.steps[index].sides:
+            for a in side:
+                rows.append({t("plans.col_vector"): plain(a.symbol), t("plans.col_kind"): t(f"plans.kind_{a.kind}"),
+                             t("plans.col_direction"): describe(a.rule, scene),
+                             t("plans.col_plan"): num(abs(a.value) / scales[key], 3),
+                             t("plans.col_value"): f"{num(abs(a.value), 4)} {unit}"})
+    return pd.DataFrame(rows)
+
+
+if tab_plans.open:
+    with tab_plans:
+        index = step - 1
+        st.latex(steps[index].latex)
+        st.latex(plans.acceleration.steps[index].latex)
+        left, right = st.columns(2)
+        for column, plan, key, title in ((left, plans.velocity, "v", "plans.velocity_title"),
+                                         (right, plans.acceleration, "a", "plans.acceleration_title")):
+            drawing = layout_plan(plan, scales[key], index)
+            with column:
+                chart(plan_figure(drawing, t(title, scale=num(scales[key], 4)), t, look()),
+                      f"{scene.id}-{plan.quantity}-plan", key=f"fig_{key}")
+                caption = t(f"plans.svg_caption_{key}", scene=scene.id, scale=num(scales[key], 4))
+                st.download_button(t("plans.svg"), plan_svg(layout_plan(plan, scales[key]), caption),
+                                   f"{scene.id}-{plan.quantity}-plan.svg", mime="image/svg+xml",
+                                   key=f"svg_{key}", on_click="ignore", icon=":material/print:")
+        st.dataframe(step_table(index), hide_index=True)
+        members = pd.DataFrame([{t("plans.col_member"): n, t("plans.col_omega"): num(w, 5),
+                                 t("plans.col_epsilon"): num(e, 5),
+                                 t("plans.col_sense"): t("plans.ccw" if w > 0 else "plans.cw" if w < 0 else "plans.still")}
+                                for n, (w, e) in sorted(plans.members.items())])
+        st.dataframe(members, hide_index=True)
+        chart(mechanism_figure(solve_instant(scene, None), plans,
+                               t("plans.mechanism_title", at=num(st.session_state["at"], 4)), t, look()),
+              f"{scene.id}-mechanism", key="fig_mech")
+
+if tab_loops.open:
+    with tab_loops:
+        st.write(t("plans.analytic_intro"))
+        for group in solve_instant(scene, None).structure.groups:
+            eq = equations(scene, group)
+            st.markdown(f"**{eq.group} · {eq.kind}** — {t('plans.unknowns')}: "
+                        + ", ".join(f"${u}$" for u in eq.unknowns))
+            st.latex(eq.position)
+            st.latex(r"\text{B:}\ " + eq.velocity)
+            st.latex(r"\text{C:}\ " + eq.acceleration)
+        units = {"member": ("°", "s⁻¹", "s⁻²"), "slide": ("m", "m/s", "m/s²")}
+        rows = [{t("plans.col_quantity"): t(f"plans.row_{r['kind']}", name=r["name"]),
+                 t("plans.col_position"): f"{num(r['position'], 6)} {units[r['kind']][0]}",
+                 t("plans.col_rate"): f"{num(r['rate'], 6)} {units[r['kind']][1]}",
+                 t("plans.col_acc"): f"{num(r['acceleration'], 6)} {units[r['kind']][2]}"}
+                for r in solved_values(solve_instant(scene, None))]
+        st.dataframe(pd.DataFrame(rows), hide_index=True)
+        st.success(t("plans.agreement", v=f"{plans.velocity.closure():.1e}",
+                     a=f"{plans.acceleration.closure():.1e}"))
+
+values = readings(plans, scales, scales["precision_cm"])
+if tab_accuracy.open:
+    with tab_accuracy:
+        st.write(t("plans.accuracy_intro", precision=num(scales["precision_cm"] * 10, 2)))
+        table = pd.DataFrame([{t("plans.col_vector"): plain(r.symbol),
+                               t("plans.col_value"): f"{num(r.exact, 5)} {r.unit}",
+                               t("plans.col_plan"): "—" if r.plan_cm is None else num(r.plan_cm, 3),
+                               t("plans.col_uncertainty"): f"± {num(r.uncertainty, 2)} {r.unit}",
+                               t("plans.col_relative"): f"{num(100 * r.uncertainty / r.exact, 2)} %"
+                               if r.exact else "—"} for r in values])
+        st.dataframe(table, hide_index=True)
+        csv_button(table, f"{scene.id}-readings.csv", key="csv_readings")
+        if scene.book:
+            st.subheader(t("plans.book_title"))
+            if scene == base:
+                st.dataframe(book_table(check(scene)), hide_index=True)
+            else:
+                st.info(t("plans.book_changed"))
+
+with controls:
+    answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty)
+                for r in values], key="self")

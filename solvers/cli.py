@@ -1,4 +1,4 @@
-"""Command line: ``python -m solvers list | solve | structure | bench`` (see docs/cli.md).
+"""Command line: ``python -m solvers list | solve | plan | structure | bench`` (see docs/cli.md).
 
 Exit codes: 0 done; 2 the scene or the command is wrong; 3 the mechanism cannot be in
 the asked position (the message says why and where it can be).
@@ -18,7 +18,8 @@ from mechanisms.rotor import Rotor
 from .balancing import BalanceError, balance
 from .diagnostics import Unsolvable, explain_singular, solve_instant
 from .gears import TrainError, solve_train
-from .report import gears_json, motion_json, rotor_json
+from .plans import build
+from .report import gears_json, motion_json, plan_json, rotor_json
 from .structure import StructureError, decompose
 
 
@@ -46,6 +47,11 @@ def _parser() -> argparse.ArgumentParser:
                                              "driver, s in metres for a linear one")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.set_defaults(run=_solve)
+    p = sub.add_parser("plan", help="the velocity and acceleration plans at one instant")
+    p.add_argument("scene")
+    p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver")
+    p.add_argument("--json", action="store_true", help="print JSON (SI units)")
+    p.set_defaults(run=_plan)
     p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
     p.add_argument("scene")
     p.add_argument("--json", action="store_true")
@@ -143,12 +149,29 @@ def _solve(args) -> int:
     return 0
 
 
-def _structure(args) -> int:
-    scene = load_any(args.scene)
+def _linkage(name: str) -> Scene:
+    scene = load_any(name)
     if not isinstance(scene, Scene):
-        raise SceneError(f"{args.scene} is a {type(scene).__name__.lower()}, not a linkage: "
-                         "it has no Assur groups")
-    st = decompose(scene)
+        raise SceneError(f"{name} is a {type(scene).__name__.lower()}, not a linkage")
+    return scene
+
+
+def _plan(args) -> int:
+    data = plan_json(build(solve_instant(_linkage(args.scene), args.at)))
+    if args.json:
+        return _print_json(data)
+    for quantity in ("velocity", "acceleration"):
+        print(f"{quantity} plan (pole p; images in {'m/s' if quantity == 'velocity' else 'm/s²'})")
+        for step in data[quantity]["steps"]:
+            print(f"  {step['equation']}")
+            for c in step["components"]:
+                print(f"    {c['kind']:11s} {c['from']:>4s} → {c['to']:4s} "
+                      f"({c['x']:.5g}, {c['y']:.5g})  |{c['symbol']}| = {c['magnitude']:.5g}")
+    return 0
+
+
+def _structure(args) -> int:
+    st = decompose(_linkage(args.scene))
     data = {"dof": st.dof, "members": st.moving_members, "lower_pairs": st.lower_pairs,
             "higher_pairs": st.higher_pairs,
             "groups": [{"members": sorted(g.members), "class": g.cls, "kind": g.kind,

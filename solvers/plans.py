@@ -17,6 +17,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from mechanisms.schema import DRIVER, FRAME, Pair, Scene
 
 from .kinematics import Motion
@@ -40,6 +42,8 @@ class Arrow:
     value: complex
     symbol: str
     rule: tuple[str, ...]
+    member: int = 0  # the member a relative, normal or tangential part turns with
+    lever: float = 0.0  # |XY| in m for those parts (ω = v_XY/|XY|, ε = a^t_XY/|XY|)
 
 
 @dataclass(frozen=True)
@@ -152,15 +156,16 @@ class _Builder:
         w, e = self._omega(member)
         r = self.pos[to.name] - self.pos[frm.name]
         sub = f"{to.tex}{frm.tex}"
+        lever = abs(r)
         v = Arrow("relative", frm.image, to.image, 1j * w * r, f"v_{{{sub}}}",
-                  ("perp", frm.name, to.name))
+                  ("perp", frm.name, to.name), member, lever)
         self.n_count += 1
         n = f"n{self.n_count}"
         self.acc.images[n] = self.acc.images[frm.image] - w * w * r
         acc = [Arrow("normal", frm.image, n, -w * w * r, f"a^n_{{{sub}}}",
-                     ("toward", to.name, frm.name)),
+                     ("toward", to.name, frm.name), member, lever),
                Arrow("tangential", n, to.image, 1j * e * r, f"a^t_{{{sub}}}",
-                     ("perp", frm.name, to.name))]
+                     ("perp", frm.name, to.name), member, lever)]
         return v, acc
 
     def _slide(self, pair: Pair, frm: Station, to: Station) -> tuple[Arrow, list[Arrow]]:
@@ -324,7 +329,7 @@ class _Builder:
             return head + r"\ \text{(given)}"
         parts, notes = [], []
         for start, (_, arrows) in zip(starts, sides):
-            if start.member == FRAME and [a.kind for a in arrows] == ["sliding"]:
+            if [a.kind for a in arrows] == ["sliding"] and _fixed_guide(self.scene, arrows[0]):
                 notes.append(f"\\vec {arrows[0].symbol} \\parallel {_guide_tex(self.scene, arrows[0])}")
                 continue
             fixed = start.member == FRAME or (start.letter in self.scene.frame
@@ -333,6 +338,10 @@ class _Builder:
             terms += [f"\\vec {a.symbol}" for a in arrows]
             parts.append(" + ".join(terms) if terms else "0")
         return ",\\quad ".join([head + " = " + " = ".join(parts), *notes])
+
+
+def _fixed_guide(scene: Scene, arrow: Arrow) -> bool:
+    return scene.pair(arrow.rule[1]).members[0] == FRAME
 
 
 def _guide_tex(scene: Scene, arrow: Arrow) -> str:
@@ -353,7 +362,48 @@ def describe(rule: tuple[str, ...], scene: Scene) -> str:
     return f"⊥ v_rel, ω{args[0]}"
 
 
-def magnitudes(plan: Plan) -> dict[str, float]:
-    """|vector| of every named image (points, not construction points)."""
-    return {k: abs(v) for k, v in plan.images.items()
-            if k != POLE and not (k[0] in "nk" and k[1:].isdigit())}
+@dataclass(frozen=True)
+class Reading:
+    """A value a student reads off the plans, and how well a drawing can give it."""
+
+    symbol: str  # LaTeX-like name: v_{C}, \omega_{4}
+    exact: float
+    unit: str
+    plan_cm: float | None  # its length on the plan (None for a derived value)
+    uncertainty: float  # ± in ``unit``, from the drawing precision at the scales
+
+
+def is_construction(image: str) -> bool:
+    return image[0] in "nk" and image[1:].isdigit()
+
+
+def readings(plans: Plans, scales: dict[str, float], precision_cm: float) -> list[Reading]:
+    """Speeds and accelerations of the points (|Pv x|·U_v, |Pa x|·U_a), then ω and ε of each
+    member from its longest relative part (ω = v_XY/XY, ε = a^t_XY/XY), with the error a
+    drawing made to ``precision_cm`` brings: δ·U for a length read off, and for a ratio
+    the sum of the relative errors of its plan length and of the link length at U_L."""
+    out = []
+    for plan, key, unit in ((plans.velocity, "v", "m/s"), (plans.acceleration, "a", "m/s²")):
+        u = scales[key]
+        for image, value in plan.images.items():
+            if image == POLE or is_construction(image) or abs(value) < 1e-12:
+                continue
+            name = image.upper()
+            tex = f"{name[0]}_{{{name[1:]}}}" if len(name) > 1 else name
+            out.append(Reading(f"{key}_{{{tex}}}", abs(value), unit, abs(value) / u,
+                               precision_cm * u))
+    for member in sorted(plans.members):
+        for plan, kind, key, symbol, unit in (
+                (plans.velocity, "relative", "v", "\\omega", "s⁻¹"),
+                (plans.acceleration, "tangential", "a", "\\varepsilon", "s⁻²")):
+            parts = [a for a in plan.arrows if a.kind == kind and a.member == member and a.lever]
+            if not parts:
+                continue
+            best = max(parts, key=lambda a: (a.lever, abs(a.value)))
+            exact = abs(best.value) / best.lever
+            u = scales[key]
+            relative = (precision_cm * u / abs(best.value) if abs(best.value) > 1e-12 else np.inf)
+            relative += precision_cm * scales["L"] / best.lever
+            out.append(Reading(f"{symbol}_{{{member}}}", exact, unit, None,
+                               exact * relative if np.isfinite(relative) else precision_cm * u / best.lever))
+    return out

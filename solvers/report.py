@@ -14,6 +14,7 @@ from .balancing import Balance, balance
 from .diagnostics import Unsolvable, solve_instant
 from .gears import TrainSolution, solve_train
 from .kinematics import Motion
+from .plans import Plans, is_construction
 
 
 def motion_json(motion: Motion) -> dict:
@@ -24,7 +25,7 @@ def motion_json(motion: Motion) -> dict:
         "scene": scene.id,
         "at": math.degrees(at) if scene.driver.kind == "rotating" else at,
         "points": {name: {"x": p.x[0], "y": p.y[0], "vx": p.vx[0], "vy": p.vy[0],
-                          "ax": p.ax[0], "ay": p.ay[0]}
+                          "ax": p.ax[0], "ay": p.ay[0], "v": abs(p.v[0]), "a": abs(p.a[0])}
                    for name, p in sorted(motion.points.items())},
         "members": {str(n): {"angle_deg": math.degrees(m.angle[0]) % 360.0,
                              "omega": m.omega[0], "epsilon": m.epsilon[0]}
@@ -39,6 +40,32 @@ def motion_json(motion: Motion) -> dict:
                           "cycle_time": tr.cycle_time, "step_time": tr.step_time(),
                           "step_distance": tr.step_distance()}
     return clean(data)
+
+
+def plan_json(plans: Plans) -> dict:
+    """Both plans: every image (``velocity_image``/``acceleration_image`` per point, m/s and
+    m/s²), and per step the components with the two images each joins."""
+    data = {"points": {}}
+    for name in plans.positions:
+        image = name.lower()
+        data["points"][name] = {"velocity_image": _xy(plans.velocity.images[image]),
+                                "acceleration_image": _xy(plans.acceleration.images[image])}
+    for plan in (plans.velocity, plans.acceleration):
+        data[plan.quantity] = {
+            "construction_points": {k: _xy(z) for k, z in plan.images.items()
+                                    if is_construction(k)},
+            "steps": [{"target": step.target, "group": step.group, "equation": step.latex,
+                       "components": [{"kind": a.kind, "from": a.tail, "to": a.head,
+                                       "symbol": a.symbol, "x": a.value.real, "y": a.value.imag,
+                                       "magnitude": abs(a.value)}
+                                      for _, side in step.sides for a in side]}
+                      for step in plan.steps]}
+    data["members"] = {str(n): {"omega": w, "epsilon": e} for n, (w, e) in plans.members.items()}
+    return clean(data)
+
+
+def _xy(z: complex) -> list[float]:
+    return [z.real, z.imag]
 
 
 def rotor_json(result: Balance) -> dict:

@@ -20,7 +20,8 @@ class Chapter:
 
 CHAPTERS = (
     Chapter("pages/trajectories.py", "ch1.title", "ch1.summary", ":material/timeline:", ready=True),
-    Chapter("pages/velocity_plans.py", "ch2.title", "ch2.summary", ":material/straighten:"),
+    Chapter("pages/velocity_plans.py", "ch2.title", "ch2.summary", ":material/straighten:",
+            ready=True),
     Chapter("pages/assur_groups.py", "ch4.title", "ch4.summary", ":material/account_tree:"),
     Chapter("pages/kinetostatics.py", "ch5.title", "ch5.summary", ":material/balance:"),
     Chapter("pages/planetary_gears.py", "ch6.title", "ch6.summary", ":material/settings:",

@@ -1,0 +1,211 @@
+"""Velocity and acceleration plans drawn as a student draws them: in centimetres at a scale.
+
+``layout_plan`` turns a plan (``solvers.plans``) and a scale U (units per cm) into drawn
+arrows and labels up to a step of the construction; ``plan_figure`` shows that in Plotly
+and ``plan_svg`` writes it as an SVG whose centimetre is a centimetre on paper.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import plotly.graph_objects as go
+
+from solvers.kinematics import Motion
+from solvers.plans import POLE, Arrow, Plan, Plans
+
+from .linkage import Text, mechanism_traces, pose
+from .style import NORMAL, Look, plane_layout
+
+SUPERSCRIPT = {"n": "ⁿ", "t": "ᵗ", "k": "ᵏ", "r": "ʳ"}
+KIND_COLOURS = {"absolute": "#222222", "relative": "#1f5fbf", "normal": "#2a9d3a",
+                "tangential": "#e07b00", "sliding": "#8e44ad", "coriolis": "#d62728"}
+PX_PER_CM = 96 / 2.54  # CSS pixels: what a browser prints at 100 %
+
+
+@dataclass(frozen=True)
+class Drawn:
+    arrow: Arrow
+    tail: complex  # cm on the plan
+    head: complex
+    current: bool  # belongs to the highlighted step
+
+
+@dataclass(frozen=True)
+class PlanDrawing:
+    arrows: list[Drawn]
+    labels: dict[str, complex]  # image label → cm
+    scale: float  # units per cm
+    unit: str
+
+
+GREEK = {"\\omega": "ω", "\\varepsilon": "ε"}
+
+
+def _parts(symbol: str) -> tuple[str, str, str]:
+    """``a^n_{C_{4}B}`` → ("a", "n", "C4B"); ``b4`` → ("b", "", "4"); ``\\omega_{4}`` → ("ω", "", "4")."""
+    for tex, letter in GREEK.items():
+        symbol = symbol.replace(tex, letter)
+    m = re.fullmatch(r"(\w)(?:\^(\w))?(?:_\{(.*)\})?", symbol) or re.fullmatch(r"(\D)()(\d+)", symbol)
+    if m is None:
+        return symbol, "", ""
+    return m[1], m[2] or "", re.sub(r"[_{}]", "", m[3] or "")
+
+
+def html(symbol: str) -> str:
+    """``a^n_{C_{4}B}`` → ``a<sup>n</sup><sub>C4B</sub>``; ``b4`` → ``b<sub>4</sub>``."""
+    base, sup, sub = _parts(symbol)
+    return base + (f"<sup>{sup}</sup>" if sup else "") + (f"<sub>{sub}</sub>" if sub else "")
+
+
+def plain(symbol: str) -> str:
+    """``a^n_{C_{4}B}`` → ``aⁿ_C4B``, for tables and widgets."""
+    base, sup, sub = _parts(symbol)
+    return base + SUPERSCRIPT.get(sup, sup) + (f"_{sub}" if sub else "")
+
+
+def mechanism_figure(motion: Motion, plans: Plans, title: str, t: Text,
+                     look: Look = NORMAL) -> go.Figure:
+    """The mechanism at the plans' instant, with the coincident points (B₄) marked."""
+    fig = plane_layout(go.Figure(), title, look)
+    positions, rotations = pose(motion, 0)
+    fig.add_traces(mechanism_traces(motion.scene, positions, rotations, t, look))
+    extra = {k: z for k, z in plans.positions.items() if k not in positions}
+    fig.add_trace(go.Scatter(x=[z.real for z in extra.values()], y=[z.imag for z in extra.values()],
+                             mode="text", text=[html(k.lower()).upper() for k in extra],
+                             textposition="bottom left", showlegend=False, hoverinfo="skip",
+                             textfont=dict(size=look.font)))
+    return fig
+
+
+def layout_plan(plan: Plan, scale: float, upto: int | None = None) -> PlanDrawing:
+    """Arrows of steps 0…``upto`` (all when None) in cm, the last step marked current;
+    absolute vectors from the pole to every image reached so far."""
+    steps = plan.steps if upto is None else plan.steps[:upto + 1]
+    last = len(steps) - 1
+    cm = {k: v / scale for k, v in plan.images.items()}
+    q = plan.quantity[0]
+    arrows: list[Drawn] = []
+    labels = {POLE: 0j}
+    for index, step in enumerate(steps):
+        current = upto is not None and index == last
+        for _, side in step.sides:
+            for a in side:
+                arrows.append(Drawn(a, cm[a.tail], cm[a.head], current))
+                labels[a.tail], labels[a.head] = cm[a.tail], cm[a.head]
+        target = step.target
+        absolute = Arrow("absolute", POLE, target, plan.images[target], f"{q}_{{{target.upper()}}}", ())
+        arrows.append(Drawn(absolute, 0j, cm[target], current))
+        labels[target] = cm[target]
+    unit = "m/s" if plan.quantity == "velocity" else "m/s²"
+    return PlanDrawing(arrows, labels, scale, unit)
+
+
+def _merged(labels: dict[str, complex]) -> dict[tuple[str, ...], complex]:
+    """Images that coincide (the pole and the fixed points) share one label: P ≡ o ≡ d."""
+    groups: dict[tuple[float, float], list[str]] = {}
+    for name, z in labels.items():
+        groups.setdefault((round(z.real, 6), round(z.imag, 6)), []).append(name)
+    return {tuple(sorted(names, key=lambda n: n != POLE)): complex(*xy) for xy, names in groups.items()}
+
+
+def _bounds(points: list[complex], pad: float = 1.0) -> tuple[float, float, float, float]:
+    xs = [p.real for p in points] or [0.0]
+    ys = [p.imag for p in points] or [0.0]
+    return min(xs) - pad, max(xs) + pad, min(ys) - pad, max(ys) + pad
+
+
+def _visible(d: Drawn) -> bool:
+    return abs(d.head - d.tail) > 1e-9
+
+
+def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) -> go.Figure:
+    """The plan on a 1-cm grid, arrows coloured by kind (legend), labels like the book's,
+    and a hover on each arrow with its length on the plan and its value."""
+    fig = go.Figure()
+    faded = any(d.current for d in drawing.arrows)
+    hover_x, hover_y, hover_text = [], [], []
+    annotations = []
+    for d in drawing.arrows:
+        if not _visible(d):
+            continue
+        width = (3.0 if d.current else 1.8) * look.line
+        annotations.append(dict(
+            x=d.head.real, y=d.head.imag, ax=d.tail.real, ay=d.tail.imag, xref="x", yref="y",
+            axref="x", ayref="y", showarrow=True, arrowhead=2, arrowsize=1, standoff=0,
+            arrowwidth=width, arrowcolor=KIND_COLOURS[d.arrow.kind],
+            opacity=1.0 if d.current or not faded else 0.45, text=""))
+        mid = (d.head + d.tail) / 2
+        length = abs(d.head - d.tail)
+        hover_x.append(mid.real)
+        hover_y.append(mid.imag)
+        hover_text.append(t("plans.hover", name=html(d.arrow.symbol), cm=f"{length:.2f}",
+                            value=f"{length * drawing.scale:.4g}", unit=drawing.unit,
+                            kind=t(f"plans.kind_{d.arrow.kind}")))
+    fig.add_trace(go.Scatter(x=hover_x, y=hover_y, mode="markers", hoverinfo="text",
+                             hovertext=hover_text, showlegend=False,
+                             marker=dict(size=10 * look.line, color="rgba(0,0,0,0)")))
+    for kind, colour in KIND_COLOURS.items():  # legend entries for the arrow colours
+        if any(d.arrow.kind == kind and _visible(d) for d in drawing.arrows):
+            fig.add_trace(go.Scatter(x=[None], y=[None], mode="lines", name=t(f"plans.kind_{kind}"),
+                                     line=dict(color=colour, width=3 * look.line)))
+    pole = "P<sub>v</sub>" if drawing.unit == "m/s" else "P<sub>a</sub>"
+    places = _merged(drawing.labels)
+    fig.add_trace(go.Scatter(
+        x=[z.real for z in places.values()], y=[z.imag for z in places.values()],
+        mode="markers+text", text=[" ≡ ".join(pole if n == POLE else html(n) for n in names)
+                                   for names in places],
+        textposition="top right", hoverinfo="skip", showlegend=False,
+        textfont=dict(size=look.font + 2), marker=dict(size=5 * look.line, color="black")))
+    x0, x1, y0, y1 = _bounds(list(drawing.labels.values()))
+    fig.update_layout(annotations=annotations, title=dict(text=title, font=dict(size=look.font + 4)),
+                      height=look.height, margin=dict(l=10, r=10, t=60, b=10),
+                      plot_bgcolor="white", font=dict(size=look.font, color="black"),
+                      legend=dict(orientation="h", yanchor="top", y=-0.08, x=0.0))
+    grid = dict(showgrid=True, gridcolor="#e5e5e5", dtick=1, zeroline=False, showline=True,
+                linecolor="black", mirror=True)
+    fig.update_xaxes(range=[x0, x1], title_text="[cm]", **grid)
+    fig.update_yaxes(range=[y0, y1], title_text="[cm]", scaleanchor="x", scaleratio=1, **grid)
+    return fig
+
+
+def plan_svg(drawing: PlanDrawing, caption: str) -> str:
+    """The whole plan as SVG at true scale (1 cm of plan = 1 cm of paper when printed at
+    100 %), with a 1-cm grid and the scale written under it."""
+    x0, x1, y0, y1 = _bounds(list(drawing.labels.values()))
+    w, h = x1 - x0, y1 - y0 + 1.0  # one extra cm for the caption
+
+    def xy(z: complex) -> tuple[float, float]:
+        return z.real - x0, y1 - z.imag
+
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3f}cm" height="{h:.3f}cm" '
+           f'viewBox="0 0 {w:.3f} {h:.3f}" font-family="sans-serif">',
+           '<defs>' + "".join(
+               f'<marker id="{k}" viewBox="0 0 10 10" refX="10" refY="5" markerWidth="0.35" '
+               f'markerHeight="0.35" markerUnits="userSpaceOnUse" orient="auto">'
+               f'<path d="M0,0 L10,5 L0,10 z" fill="{c}"/></marker>'
+               for k, c in KIND_COLOURS.items()) + '</defs>']
+    for gx in range(int(w) + 1):
+        out.append(f'<line x1="{gx}" y1="0" x2="{gx}" y2="{h - 1:.3f}" stroke="#ddd" stroke-width="0.01"/>')
+    for gy in range(int(h - 1) + 1):
+        out.append(f'<line x1="0" y1="{gy}" x2="{w:.3f}" y2="{gy}" stroke="#ddd" stroke-width="0.01"/>')
+    for d in drawing.arrows:
+        if not _visible(d):
+            continue
+        (ax, ay), (bx, by) = xy(d.tail), xy(d.head)
+        colour = KIND_COLOURS[d.arrow.kind]
+        out.append(f'<line x1="{ax:.4f}" y1="{ay:.4f}" x2="{bx:.4f}" y2="{by:.4f}" '
+                   f'stroke="{colour}" stroke-width="0.03" marker-end="url(#{d.arrow.kind})"/>')
+    for names, z in _merged(drawing.labels).items():
+        px, py = xy(z)
+        text = " ≡ ".join("P" if n == POLE else re.sub(
+            r"(\d+)$", r'<tspan font-size="0.2" baseline-shift="sub">\1</tspan>', n) for n in names)
+        out.append(f'<circle cx="{px:.4f}" cy="{py:.4f}" r="0.04"/>'
+                   f'<text x="{px + 0.08:.4f}" y="{py - 0.08:.4f}" font-size="0.3">{text}</text>')
+    out.append(f'<text x="0.2" y="{h - 0.35:.3f}" font-size="0.3">{_escape(caption)}</text></svg>')
+    return "\n".join(out)
+
+
+def _escape(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
