@@ -25,7 +25,9 @@ def test_solve_json_has_exactly_the_documented_layout_and_exact_values():
     assert list(data) == ["scene", "at", "points", "members", "sliders"]
     assert data["scene"] == "analitika-2.1" and data["at"] == 55.0
     assert set(data["points"]) == {"O", "A", "B", "C", "D", "E", "M"}
-    assert set(data["points"]["M"]) == {"x", "y", "vx", "vy", "ax", "ay"}
+    assert set(data["points"]["M"]) == {"x", "y", "vx", "vy", "ax", "ay", "v", "a"}
+    m = data["points"]["M"]
+    assert m["v"] == pytest.approx(math.hypot(m["vx"], m["vy"]))
     assert set(data["members"]["4"]) == {"angle_deg", "omega", "epsilon"}
     assert set(data["sliders"]["5-6"]) == {"s", "v", "a", "coriolis"}
     ref = fourbar_2_1(math.radians(55))
@@ -122,3 +124,27 @@ def test_gear_train_json():
     ring = -8.0 * 0.05 / 0.45  # pinion 2 inside ring 3
     k = 0.356 / 0.182  # Willis: (ω₇ − ω₆)/(ω₄ − ω₆) = −R₄/R₇
     assert json.loads(out.stdout)["members"]["6"]["omega"] == pytest.approx((12.0 + k * ring) / (1 + k))
+
+
+def test_plan_json_gives_images_and_components_that_close():
+    out = run("plan", "analitika-2.1", "--json")
+    assert out.returncode == 0, out.stderr
+    data = json.loads(out.stdout)
+    solved = json.loads(run("solve", "analitika-2.1", "--json").stdout)
+    for name, p in solved["points"].items():
+        assert data["points"][name]["velocity_image"] == pytest.approx([p["vx"], p["vy"]], abs=1e-12)
+        assert data["points"][name]["acceleration_image"] == pytest.approx([p["ax"], p["ay"]], abs=1e-12)
+    kinds = {c["kind"] for s in data["acceleration"]["steps"] for c in s["components"]}
+    assert {"normal", "tangential", "coriolis", "sliding"} <= kinds
+    images = {k.lower(): v["acceleration_image"] for k, v in data["points"].items()}
+    images |= data["acceleration"]["construction_points"] | {"p": [0.0, 0.0], "e5": None}
+    for step in data["acceleration"]["steps"]:
+        for c in step["components"]:
+            if images.get(c["from"]) and images.get(c["to"]):
+                assert [images[c["to"]][0] - images[c["from"]][0],
+                        images[c["to"]][1] - images[c["from"]][1]] == pytest.approx([c["x"], c["y"]], abs=1e-9)
+
+
+def test_plan_of_a_gear_train_is_refused_with_exit_2():
+    out = run("plan", "zbirka-6.1")
+    assert out.returncode == 2 and "not a linkage" in out.stderr and "Traceback" not in out.stderr

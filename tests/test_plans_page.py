@@ -1,0 +1,82 @@
+"""Chapters 2–3 page as a student drives it (AppTest)."""
+
+import pytest
+
+from mechanisms import preset_ids
+
+from .test_pages import chart, page
+
+PAGE = "pages/velocity_plans.py"
+
+
+def plan_page(**state):
+    return page(PAGE, lang="en", **state)
+
+
+def arrows(at, key: str) -> list[tuple]:
+    spec = chart(at, key)
+    return [(a["ax"], a["ay"], a["x"], a["y"]) for a in spec["layout"]["annotations"]]
+
+
+@pytest.mark.parametrize("pid", [p for p in preset_ids("linkage") if not p.startswith("zbirka-1.3")])
+def test_every_linkage_preset_draws_both_plans(pid):
+    at = plan_page(scene=pid)
+    assert not at.exception
+    assert not at.error, [e.value for e in at.error]
+    assert len(at.get("plotly_chart")) == 3  # mechanism, velocity plan, acceleration plan
+
+
+def test_moving_the_crank_changes_the_plan():
+    at = plan_page(scene="analitika-2.1")
+    before = arrows(at, "fig_v")
+    at.slider(key="at").set_value(70.0).run()
+    assert not at.exception
+    assert arrows(at, "fig_v") != before
+
+
+def test_the_step_slider_shows_that_step_s_equation_and_fewer_arrows():
+    at = plan_page(scene="analitika-2.1")
+    full = len(arrows(at, "fig_a"))
+    at.slider(key="step").set_value(1).run()
+    assert at.latex[0].value.strip("$\n") == r"\vec v_{A} = \vec v_{AO}"
+    assert len(arrows(at, "fig_a")) < full
+    at.slider(key="step").set_value(2).run()
+    assert at.latex[0].value.strip("$\n").startswith(r"\vec v_{C} = \vec v_{A} + \vec v_{CA}")
+
+
+def test_a_coarser_velocity_scale_draws_a_smaller_plan():
+    at = plan_page(scene="analitika-2.1", Uv=0.5)
+    small = arrows(at, "fig_v")
+    at.number_input(key="Uv").set_value(1.0).run()
+    halved = arrows(at, "fig_v")
+    assert [round(2 * c[2], 6) for c in halved] == [round(c[2], 6) for c in small]
+
+
+def test_an_unreachable_position_says_why_instead_of_a_traceback():
+    at = plan_page(scene="analitika-2.1")
+    at.slider(key="at").set_value(140.0).run()
+    assert not at.exception
+    assert "cannot" in at.error[0].value
+
+
+@pytest.mark.parametrize("tab", ["Complex-number method", "Reading the plans: accuracy and book values"])
+def test_the_other_tabs_render(tab):
+    at = plan_page(scene="analitika-2.1", tab=tab)
+    assert not at.exception
+    text = " ".join(m.value for m in at.markdown) + " ".join(s.value for s in at.success)
+    if tab.startswith("Complex"):
+        assert any(r"\text{B:}" in x.value for x in at.latex)
+        assert "Both methods agree" in text
+    else:
+        assert any("Book vs exact" in h.value for h in at.subheader)
+
+
+def test_self_check_accepts_a_value_within_drawing_precision():
+    at = plan_page(scene="analitika-2.1", Uv=0.5, prec=0.5)
+    box = at.selectbox(key="self_quantity")
+    index = next(i for i, o in enumerate(box.options) if o.startswith("v_C "))
+    box.set_value(index).run()
+    at.text_input(key="self_value").input("1,98").run()  # exact 1.959 m/s; ±0.025 m/s
+    assert at.info and "drawing" in at.info[0].value
+    at.text_input(key="self_value").input("2,2").run()
+    assert at.warning
