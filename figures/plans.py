@@ -21,6 +21,9 @@ from .style import NORMAL, Look, plane_layout
 SUPERSCRIPT = {"n": "ⁿ", "t": "ᵗ", "k": "ᵏ", "r": "ʳ"}
 KIND_COLOURS = {"absolute": "#222222", "relative": "#1f5fbf", "normal": "#2a9d3a",
                 "tangential": "#e07b00", "sliding": "#8e44ad", "coriolis": "#d62728"}
+KIND_KEYS = {"absolute": "plans.kind_absolute", "relative": "plans.kind_relative",
+             "normal": "plans.kind_normal", "tangential": "plans.kind_tangential",
+             "sliding": "plans.kind_sliding", "coriolis": "plans.kind_coriolis"}
 PX_PER_CM = 96 / 2.54  # CSS pixels: what a browser prints at 100 %
 
 
@@ -142,13 +145,13 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         hover_y.append(mid.imag)
         hover_text.append(t("plans.hover", name=html(d.arrow.symbol), cm=f"{length:.2f}",
                             value=f"{length * drawing.scale:.4g}", unit=drawing.unit,
-                            kind=t(f"plans.kind_{d.arrow.kind}")))
+                            kind=t(KIND_KEYS[d.arrow.kind])))
     fig.add_trace(go.Scatter(x=hover_x, y=hover_y, mode="markers", hoverinfo="text",
                              hovertext=hover_text, showlegend=False,
                              marker=dict(size=10 * look.line, color="rgba(0,0,0,0)")))
     for kind, colour in KIND_COLOURS.items():  # legend entries for the arrow colours
         if any(d.arrow.kind == kind and _visible(d) for d in drawing.arrows):
-            fig.add_trace(go.Scatter(x=[None], y=[None], mode="lines", name=t(f"plans.kind_{kind}"),
+            fig.add_trace(go.Scatter(x=[None], y=[None], mode="lines", name=t(KIND_KEYS[kind]),
                                      line=dict(color=colour, width=3 * look.line)))
     pole = "P<sub>v</sub>" if drawing.unit == "m/s" else "P<sub>a</sub>"
     places = _merged(drawing.labels)

@@ -7,7 +7,7 @@ import math
 import pandas as pd
 import streamlit as st
 
-from figures.plans import layout_plan, mechanism_figure, plain, plan_figure, plan_svg
+from figures.plans import KIND_KEYS, layout_plan, mechanism_figure, plain, plan_figure, plan_svg
 from figures.style import nice_scale
 from mechanisms.schema import Scene
 from solvers.analytic import equations, solved_values
@@ -23,6 +23,8 @@ from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
+
+SVG_CAPTIONS = {"v": "plans.svg_caption_v", "a": "plans.svg_caption_a"}
 
 page_title("pages/velocity_plans.py")
 
@@ -70,9 +72,10 @@ def driver_inputs(base: Scene) -> Scene:
 def scale_inputs() -> dict[str, float]:
     with st.expander(t("plans.scales"), expanded=True):
         st.caption(t("plans.scales_hint"))
-        scales = {k: st.number_input(t(f"plans.U{k}"), min_value=1e-9, format="%.4g", key=f"U{k}",
+        labels = {"L": "plans.UL", "v": "plans.Uv", "a": "plans.Ua"}
+        scales = {k: st.number_input(t(label), min_value=1e-9, format="%.4g", key=f"U{k}",
                                      bind="query-params")
-                  for k in ("L", "v", "a")}
+                  for k, label in labels.items()}
         precision = st.slider(t("plans.precision"), 0.1, 2.0, step=0.1, key="prec",
                               bind="query-params")
     return {"L": scales["L"], "v": scales["v"], "a": scales["a"], "precision_cm": precision / 10}
@@ -112,7 +115,7 @@ def step_table(index: int) -> pd.DataFrame:
     for plan, key, unit in ((plans.velocity, "v", "m/s"), (plans.acceleration, "a", "m/s²")):
         for _, side in plan.steps[index].sides:
             for a in side:
-                rows.append({t("plans.col_vector"): plain(a.symbol), t("plans.col_kind"): t(f"plans.kind_{a.kind}"),
+                rows.append({t("plans.col_vector"): plain(a.symbol), t("plans.col_kind"): t(KIND_KEYS[a.kind]),
                              t("plans.col_direction"): describe(a.rule, scene),
                              t("plans.col_plan"): num(abs(a.value) / scales[key], 3),
                              t("plans.col_value"): f"{num(abs(a.value), 4)} {unit}"})
@@ -131,7 +134,7 @@ if tab_plans.open:
             with column:
                 chart(plan_figure(drawing, t(title, scale=num(scales[key], 4)), t, look()),
                       f"{scene.id}-{plan.quantity}-plan", key=f"fig_{key}")
-                caption = t(f"plans.svg_caption_{key}", scene=scene.id, scale=num(scales[key], 4))
+                caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
                 st.download_button(t("plans.svg"), plan_svg(layout_plan(plan, scales[key]), caption),
                                    f"{scene.id}-{plan.quantity}-plan.svg", mime="image/svg+xml",
                                    key=f"svg_{key}", on_click="ignore", icon=":material/print:")
@@ -156,7 +159,8 @@ if tab_loops.open:
             st.latex(r"\text{B:}\ " + eq.velocity)
             st.latex(r"\text{C:}\ " + eq.acceleration)
         units = {"member": ("°", "s⁻¹", "s⁻²"), "slide": ("m", "m/s", "m/s²")}
-        rows = [{t("plans.col_quantity"): t(f"plans.row_{r['kind']}", name=r["name"]),
+        names = {"member": "plans.row_member", "slide": "plans.row_slide"}
+        rows = [{t("plans.col_quantity"): t(names[r["kind"]], name=r["name"]),
                  t("plans.col_position"): f"{num(r['position'], 6)} {units[r['kind']][0]}",
                  t("plans.col_rate"): f"{num(r['rate'], 6)} {units[r['kind']][1]}",
                  t("plans.col_acc"): f"{num(r['acceleration'], 6)} {units[r['kind']][2]}"}
