@@ -116,7 +116,7 @@ def _merged(labels: dict[str, complex]) -> dict[tuple[str, ...], complex]:
 def _bounds(points: list[complex], pad: float = 1.0) -> tuple[float, float, float, float]:
     xs = [p.real for p in points] or [0.0]
     ys = [p.imag for p in points] or [0.0]
-    return min(xs) - pad, max(xs) + pad, min(ys) - pad, max(ys) + pad
+    return min(xs) - pad, max(xs) + 2.5 * pad, min(ys) - pad, max(ys) + pad  # labels sit right
 
 
 def _visible(d: Drawn) -> bool:

@@ -199,3 +199,31 @@ def test_uploading_a_broken_scene_shows_the_rule_and_the_page_keeps_working(app_
     page.wait_for_url(re.compile(r"scene=upload"), timeout=30_000)
     wait_idle(page)
     assert page.locator("[data-testid='stException']").count() == 0
+
+
+def annotations(page, which: int) -> list:
+    return page.evaluate("i => document.querySelectorAll('.js-plotly-plot')[i].layout.annotations"
+                         ".map(a => [a.ax, a.ay, a.x, a.y])", which)
+
+
+def test_the_book_plans_of_task_2_1_step_by_step(app_url, browser, tmp_path):
+    """A shared link opens zbirka-2.1 at the book's scales; stepping back redraws both plans."""
+    page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=zbirka-2.1", size=(1600, 1000))
+    page.wait_for_function("() => document.querySelectorAll('.js-plotly-plot').length >= 3")
+    assert page.locator("[data-testid='stNumberInput'] input").nth(1).input_value() == "0.5"
+    full_v, full_a = annotations(page, 0), annotations(page, 1)
+    assert len(full_a) > len(full_v) > 4
+    step = page.locator("[data-testid='stSlider'] input[type='range'][aria-label^='Construction']").first
+    step.focus()
+    step.press("Home")
+    page.wait_for_url(re.compile(r"step=1"), timeout=10_000)
+    wait_idle(page)
+    page.wait_for_function("n => document.querySelectorAll('.js-plotly-plot')[1].layout.annotations"
+                           ".length < n", arg=len(full_a), timeout=30_000)
+    step.press("End")
+    wait_idle(page)
+    page.wait_for_function("n => document.querySelectorAll('.js-plotly-plot')[1].layout.annotations"
+                           ".length == n", arg=len(full_a), timeout=30_000)
+    shot = tmp_path / "velocity-acceleration-plans.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
