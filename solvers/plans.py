@@ -392,7 +392,7 @@ def readings(plans: Plans, scales: dict[str, float], precision_cm: float) -> lis
             tex = f"{name[0]}_{{{name[1:]}}}" if len(name) > 1 else name
             out.append(Reading(f"{key}_{{{tex}}}", abs(value), unit, abs(value) / u,
                                precision_cm * u))
-    for member in sorted(plans.members):
+    for member in sorted(m for m in plans.members if m != DRIVER):  # ω₂, ε₂ are given
         for plan, kind, key, symbol, unit in (
                 (plans.velocity, "relative", "v", "\\omega", "s⁻¹"),
                 (plans.acceleration, "tangential", "a", "\\varepsilon", "s⁻²")):
