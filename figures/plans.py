@@ -24,7 +24,6 @@ KIND_COLOURS = {"absolute": "#222222", "relative": "#1f5fbf", "normal": "#2a9d3a
 KIND_KEYS = {"absolute": "plans.kind_absolute", "relative": "plans.kind_relative",
              "normal": "plans.kind_normal", "tangential": "plans.kind_tangential",
              "sliding": "plans.kind_sliding", "coriolis": "plans.kind_coriolis"}
-PX_PER_CM = 96 / 2.54  # CSS pixels: what a browser prints at 100 %
 
 
 @dataclass(frozen=True)

@@ -25,7 +25,6 @@ from .kinematics import Motion
 from .structure import Group
 
 POLE = "p"
-KINDS = ("absolute", "relative", "normal", "tangential", "sliding", "coriolis")
 
 
 @dataclass(frozen=True)

@@ -9,7 +9,7 @@ import re
 import numpy as np
 import pytest
 
-from figures.plans import PX_PER_CM, layout_plan, plan_svg
+from figures.plans import layout_plan, plan_svg
 from mechanisms import load_preset, preset_ids
 from mechanisms.schema import Scene
 from solvers.analytic import equations
@@ -175,7 +175,6 @@ def test_svg_prints_one_plan_centimetre_as_one_centimetre():
     lengths = sorted(math.dist((float(a), float(b)), (float(c), float(d))) for a, b, c, d in lines)
     expected = sorted(abs(a.value) / scale for a in plans.velocity.arrows if a.kind == "relative")
     assert lengths == pytest.approx(expected, abs=1e-3)
-    assert PX_PER_CM == pytest.approx(37.795, abs=1e-3)
 
 
 def test_a_step_limits_the_drawing_and_marks_its_arrows():
