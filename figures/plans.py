@@ -165,8 +165,9 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
                       height=look.height, margin=dict(l=10, r=10, t=60, b=10),
                       plot_bgcolor="white", font=dict(size=look.font, color="black"),
                       legend=dict(orientation="h", yanchor="top", y=-0.08, x=0.0))
-    grid = dict(showgrid=True, gridcolor="#e5e5e5", dtick=1, zeroline=False, showline=True,
-                linecolor="black", mirror=True)
+    span = max(x1 - x0, y1 - y0)
+    grid = dict(showgrid=True, gridcolor="#e5e5e5", dtick=1 if span <= 25 else 5 if span <= 125 else None,
+                zeroline=False, showline=True, linecolor="black", mirror=True)
     fig.update_xaxes(range=[x0, x1], title_text="[cm]", **grid)
     fig.update_yaxes(range=[y0, y1], title_text="[cm]", scaleanchor="x", scaleratio=1, **grid)
     return fig

@@ -76,3 +76,12 @@ def test_units_in_brackets_hold_no_words():
         for inside in re.findall(r"\[([^\]]*)\]", text):
             rest = re.sub(r"\{\w+\}|(?<![A-Za-z])(rad|cm|mm|kg|ms|m|s|N)(?![A-Za-z])", "", inside)
             assert not re.search(r"[A-Za-zčćšđžČĆŠĐŽ]", rest), (key, inside)
+
+
+def test_point_letters_in_serbian_titles_are_marked_as_notation():
+    """A bare "CD" in a title would turn into Cyrillic "ЦД"; notation must sit in ⟨…⟩."""
+    from mechanisms import load_preset, preset_ids
+
+    for pid in preset_ids():
+        title = re.sub(r"⟨[^⟩]*⟩", "", load_preset(pid).title_sr)
+        assert not re.search(r"\b[A-Z]{1,4}\d*\b", title), (pid, title)
