@@ -102,8 +102,10 @@ with main:
     st.caption(title_of(scene))
     if st.session_state.get("step", 0) > len(steps):
         st.session_state["step"] = len(steps)
-    step = st.slider(t("plans.step"), 1, len(steps), value=len(steps), key="step",
-                     bind="query-params")
+    step = len(steps)
+    if len(steps) > 1:  # a crank alone has one step and nothing to step through
+        step = st.slider(t("plans.step"), 1, len(steps), value=len(steps), key="step",
+                         bind="query-params")
     tab_plans, tab_loops, tab_accuracy = st.tabs(
         [t("plans.tab_plans"), t("plans.tab_analytic"), t("plans.tab_accuracy")],
         key="tab", on_change="rerun")

@@ -80,3 +80,24 @@ def test_self_check_accepts_a_value_within_drawing_precision():
     assert at.info and "drawing" in at.info[0].value
     at.text_input(key="self_value").input("2,2").run()
     assert at.warning
+
+
+def test_a_crank_alone_has_one_step_and_no_stepper():
+    from mechanisms.loader import parse_scene
+
+    crank = parse_scene("""
+pairs = [{ type = "revolute", members = [1, 2], point = "O" }]
+[frame]
+O = [0.0, 0.0]
+[driver]
+type = "rotating"
+at = 30.0
+omega = 5.0
+[members.2]
+points = ["O", "A"]
+length = 0.2
+""", default_id="crank")
+    at = plan_page(uploaded_scene=crank, scene="upload")
+    assert not at.exception
+    assert not [s for s in at.slider if s.key == "step"]
+    assert at.latex[0].value.strip("$\n") == r"\vec v_{A} = \vec v_{AO}"
