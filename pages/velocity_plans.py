@@ -12,6 +12,7 @@ from figures.style import nice_scale
 from mechanisms.schema import Scene
 from solvers.analytic import equations, solved_values
 from solvers.diagnostics import Unsolvable, solve_instant
+from solvers.kinematics import Motion
 from solvers.plans import Plans, build, describe, readings
 from solvers.textbook import check
 from ui.cache import BY_REPR
@@ -30,9 +31,15 @@ page_title("pages/velocity_plans.py")
 
 
 @st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
+def instant(scene: Scene) -> Motion:
+    """The scene solved at its own instant (raises Unsolvable with the reason)."""
+    return solve_instant(scene, None)
+
+
+@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
 def solved_plans(scene: Scene) -> Plans:
-    """Both plans at the scene's instant (raises Unsolvable with the reason)."""
-    return build(solve_instant(scene, None))
+    """Both plans at the scene's instant."""
+    return build(instant(scene))
 
 
 def auto_scales(scene: Scene) -> dict[str, float]:
@@ -146,14 +153,14 @@ if tab_plans.open:
                                  t("plans.col_sense"): t("plans.ccw" if w > 0 else "plans.cw" if w < 0 else "plans.still")}
                                 for n, (w, e) in sorted(plans.members.items())])
         st.dataframe(members, hide_index=True)
-        chart(mechanism_figure(solve_instant(scene, None), plans,
+        chart(mechanism_figure(instant(scene), plans,
                                t("plans.mechanism_title", at=num(st.session_state["at"], 4)), t, look()),
               f"{scene.id}-mechanism", key="fig_mech")
 
 if tab_loops.open:
     with tab_loops:
         st.write(t("plans.analytic_intro"))
-        for group in solve_instant(scene, None).structure.groups:
+        for group in instant(scene).structure.groups:
             eq = equations(scene, group)
             st.markdown(f"**{eq.group} · {eq.kind}** — {t('plans.unknowns')}: "
                         + ", ".join(f"${u}$" for u in eq.unknowns))
@@ -166,7 +173,7 @@ if tab_loops.open:
                  t("plans.col_position"): f"{num(r['position'], 6)} {units[r['kind']][0]}",
                  t("plans.col_rate"): f"{num(r['rate'], 6)} {units[r['kind']][1]}",
                  t("plans.col_acc"): f"{num(r['acceleration'], 6)} {units[r['kind']][2]}"}
-                for r in solved_values(solve_instant(scene, None))]
+                for r in solved_values(instant(scene))]
         st.dataframe(pd.DataFrame(rows), hide_index=True)
         st.success(t("plans.agreement", v=f"{plans.velocity.closure():.1e}",
                      a=f"{plans.acceleration.closure():.1e}"))

@@ -103,7 +103,6 @@ class Plans:
     acceleration: Plan
     positions: dict[str, complex]  # mechanism position of every station, m
     members: dict[int, tuple[float, float]]  # member → (ω, ε) at the instant
-    sliders: dict[str, tuple[float, float, complex]]  # pair → (v_rel, a_rel, a_Coriolis)
 
 
 def build(motion: Motion, i: int = 0) -> Plans:
@@ -204,10 +203,7 @@ class _Builder:
         for member in [DRIVER, *(m for g in self.m.structure.groups for m in g.members)]:
             if member in self.m.members:
                 self._similar(member)
-        return Plans(self.vel, self.acc, self.pos,
-                     {n: self._omega(n) for n in self.m.members},
-                     {name: (float(s.v[self.i]), float(s.a[self.i]), complex(s.coriolis[self.i]))
-                      for name, s in self.m.sliders.items()})
+        return Plans(self.vel, self.acc, self.pos, {n: self._omega(n) for n in self.m.members})
 
     def _driver(self) -> None:
         pair = self.scene.pair(self.scene.driver.pair)
