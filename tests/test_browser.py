@@ -6,7 +6,6 @@ browser is a failure, never a silent skip.
 
 import json
 import os
-import re
 import shutil
 import socket
 import subprocess
@@ -103,14 +102,29 @@ def open_page(browser, url: str, size=(1400, 900)):
     return page
 
 
+def wait_url(page, pattern: str, timeout: int = 30_000) -> None:
+    """Wait until the address bar matches: Streamlit rewrites it with history.replaceState,
+    which is no navigation, so Page.wait_for_url (waiting for a "load") is the wrong tool."""
+    page.wait_for_function("p => new RegExp(p).test(location.href)", arg=pattern, timeout=timeout)
+
+
+def slide_to(slider, target: float, key: str) -> None:
+    """Press `key` until the slider shows `target`: a rerun that lands between presses may
+    re-render the widget and drop a press, so count the value, not the presses."""
+    for _ in range(200):
+        if abs(float(slider.input_value()) - target) < 1e-9:
+            return
+        slider.focus()
+        slider.press(key)
+    raise AssertionError(f"the slider never reached {target}")
+
+
 def test_turning_the_crank_the_other_way_renumbers_the_positions(app_url, browser, tmp_path):
     page = open_page(browser, f"{app_url}/trajectories?lang=en&scene=four-bar-crank-rocker")
     before = plot_x(page)
     omega = page.locator("[data-testid='stSlider'] input[type='range'][aria-label^='ω₂']").first
-    omega.focus()
-    for _ in range(25):  # 10 rad/s → −2.5 rad/s in steps of 0.5
-        omega.press("ArrowLeft")
-    page.wait_for_url(re.compile(r"omega=-2\.5"), timeout=10_000)  # the shareable link follows
+    slide_to(omega, -2.5, "ArrowLeft")  # 10 rad/s → −2.5 rad/s in steps of 0.5
+    wait_url(page, r"omega=-2\.5")  # the shareable link follows
     wait_idle(page)
     # the positions are numbered the other way round: the drawn data differ from before
     page.wait_for_function(
@@ -196,7 +210,7 @@ def test_uploading_a_broken_scene_shows_the_rule_and_the_page_keeps_working(app_
     good.write_text((ROOT / "mechanisms" / "presets" / "slider-crank.toml").read_text()
                     .replace('id = "slider-crank"', 'id = "mine"'))
     page.locator("[data-testid='stFileUploader'] input[type='file']").set_input_files(str(good))
-    page.wait_for_url(re.compile(r"scene=upload"), timeout=30_000)
+    wait_url(page, r"scene=upload")
     wait_idle(page)
     assert page.locator("[data-testid='stException']").count() == 0
 
@@ -216,7 +230,7 @@ def test_the_book_plans_of_task_2_1_step_by_step(app_url, browser, tmp_path):
     step = page.locator("[data-testid='stSlider'] input[type='range'][aria-label^='Construction']").first
     step.focus()
     step.press("Home")
-    page.wait_for_url(re.compile(r"step=1"), timeout=10_000)
+    wait_url(page, r"step=1")
     wait_idle(page)
     page.wait_for_function("n => document.querySelectorAll('.js-plotly-plot')[1].layout.annotations"
                            ".length < n", arg=len(full_a), timeout=30_000)
