@@ -52,20 +52,23 @@ def typical_length(scene: Scene) -> float:
 
 def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dict[int, complex],
                      t: Text, look: Look = NORMAL, opacity: float = 1.0,
-                     legend: bool = True, letters: bool = True) -> list[dict]:
+                     legend: bool = True, letters: bool = True,
+                     colour: Callable[[int], str] = member_colour,
+                     label: Callable[[int], str] | None = None) -> list[dict]:
     """Members as thick lines (a member with three or more points as a closed outline),
-    frame pivots as triangles, sliders as squares on dotted guide lines, point letters."""
+    frame pivots as triangles, sliders as squares on dotted guide lines, point letters.
+    ``colour`` and ``label`` per member number default to the member's own."""
     traces = []
     for number, member in scene.members.items():
         pts = [positions[p] for p in member.points if p in positions]
         if len(pts) > 2:
             pts = pts + pts[:1]
         x, y = _xy(pts)
-        label = f"{number} {member.label}".strip()
+        name = label(number) if label else f"{number} {member.label}".strip()
         traces.append(scatter(
-            x=x, y=y, mode="lines+markers", name=label, legendgroup=str(number),
+            x=x, y=y, mode="lines+markers", name=name, legendgroup=name,
             showlegend=legend, opacity=opacity, hoverinfo="name",
-            line=dict(color=member_colour(number), width=4 * look.line),
+            line=dict(color=colour(number), width=4 * look.line),
             marker=dict(size=7 * look.line)))
     guide_x: list = []
     guide_y: list = []

@@ -8,6 +8,7 @@ The format is documented in ``docs/scene-format.md``.
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import math
 import tomllib
@@ -21,7 +22,7 @@ MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "gravity", "pairs", "frame",
             "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes",
-            "scales"}
+            "scales", "guess", "special"}
 SCALE_KEYS = {"L", "v", "a", "F"}
 TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
@@ -201,7 +202,11 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         moments=_moments(raw, r, members),
         gravity=r.number(raw, "gravity", "", default=0.0, non_negative=True),
         scales=_scales(raw, r),
+        guess=_guess(raw, r),
+        special=_special(raw, r, members),
     )
+    if scene.guess:
+        scene = dataclasses.replace(scene, guess_at=driver.at)
     if "travel" in raw:
         scene = scene.with_(travel=_travel(raw, r, driver))
     _check_every_member_is_joined(scene, r)
@@ -417,6 +422,28 @@ def _scales(raw: dict, r: _Reader) -> dict[str, float]:
     """The book's drawing scales: how much one centimetre of the drawing stands for."""
     spec = r.check_keys(raw.get("scales", {}), SCALE_KEYS, "scales")
     return {k: r.number(spec, k, "scales", positive=True) for k in spec}
+
+
+def _guess(raw: dict, r: _Reader) -> dict[str, complex]:
+    table = raw.get("guess", {})
+    if not isinstance(table, dict):
+        raise r.fail("guess", "must be a table of sketched points, e.g. { C = [0.3, 0.2] }")
+    return {name: r.vector(v, f"guess.{name}") for name, v in table.items()}
+
+
+def _special(raw: dict, r: _Reader, members: dict[int, Member]) -> dict[str, tuple[int, int]]:
+    table = raw.get("special", {})
+    if not isinstance(table, dict):
+        raise r.fail("special", "must be a table such as { S = [3, 6] }")
+    out = {}
+    for name, value in table.items():
+        if (not isinstance(value, list) or len(value) != 2 or len(set(map(str, value))) != 2
+                or not all(isinstance(m, int) and not isinstance(m, bool) and m in members
+                           for m in value)):
+            raise r.fail(f"special.{name}", "must name two binary members of a class III "
+                                            f"group whose lines meet there, e.g. [3, 6]; got {value!r}")
+        out[name] = (value[0], value[1])
+    return out
 
 
 def _travel(raw: dict, r: _Reader, driver: Driver) -> Travel:

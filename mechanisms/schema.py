@@ -157,6 +157,13 @@ class Scene:
     title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
     # the book's drawing scales per cm of drawing: L in m, v in m/s, a in m/s², F in N
     scales: dict[str, float] = field(default_factory=dict)
+    # where the drawing puts some points at the scene's instant: picks a class III group's
+    # assembly (Newton starts there), as "assembly" picks a dyad's
+    guess: dict[str, complex] = field(default_factory=dict)
+    # special (Assur) points of class III groups: name -> the two binary members whose
+    # lines meet there
+    special: dict[str, tuple[int, int]] = field(default_factory=dict)
+    guess_at: float | None = None  # the driver value the guess was sketched at (the file's)
 
     def pair(self, name: str) -> Pair:
         for p in self.pairs:

@@ -87,6 +87,12 @@ def to_toml(scene: Scene) -> str:
     if scene.scales:
         out.append("\n[scales]")
         out += [f"{k} = {_n(v)}" for k, v in scene.scales.items()]
+    if scene.guess:
+        out.append("\n[guess]")
+        out += [f"{_s(k)} = {_v(z)}" for k, z in scene.guess.items()]
+    if scene.special:
+        out.append("\n[special]")
+        out += [f"{_s(k)} = [{a}, {b}]" for k, (a, b) in scene.special.items()]
     out += _book(scene.book, scene.book_notes)
     return "\n".join(out) + "\n"
 

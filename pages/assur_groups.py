@@ -1,5 +1,134 @@
-"""Chapter page placeholder (its issue is not done yet)."""
+"""Chapter 4 — structure: degrees of freedom, the driver and the Assur groups, special points S."""
 
-from ui.chapters import coming_soon
+from __future__ import annotations
 
-coming_soon("pages/assur_groups.py")
+import math
+
+import numpy as np
+import pandas as pd
+import streamlit as st
+
+from figures.assur import structure_figure
+from mechanisms.schema import Scene
+from solvers.diagnostics import (TOLERANCES, Unsolvable, format_range, newton_accuracy,
+                                 solve_instant, sweep_values)
+from solvers.kinematics import Motion, solve
+from solvers.structure import StructureError, decompose, degrees_of_freedom
+from ui.cache import BY_REPR
+from ui.chapters import page_title
+from ui.export import chart, csv_button
+from ui.i18n import num, t, title_of
+from ui.present import look
+from ui.scenes import scene_download, scene_picker
+from ui.url import seed
+
+page_title("pages/assur_groups.py")
+CYCLE = 360
+
+
+@st.cache_resource(max_entries=32, hash_funcs=BY_REPR)
+def cycle(scene: Scene, tol: float) -> Motion:
+    """A survey of the driver (``CYCLE`` positions) and, last, the scene's own instant."""
+    return solve(scene, np.append(sweep_values(scene, CYCLE), scene.driver.at), tol=tol)
+
+
+@st.cache_data(max_entries=16, hash_funcs=BY_REPR)
+def accuracy(scene: Scene) -> list[dict]:
+    return newton_accuracy(scene, sweep_values(scene, CYCLE))
+
+
+def driver_input(base: Scene) -> Scene:
+    if base.driver.kind == "rotating":
+        at = st.slider(t("plans.phi"), 0.0, 360.0, step=0.5, key="at", bind="query-params")
+        return base.with_(at=math.radians(at))
+    reach = max(abs(base.driver.at), 0.1)
+    at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3),
+                   step=round(reach / 100, 4), key="at", bind="query-params")
+    return base.with_(at=at)
+
+
+def counts(scene: Scene) -> None:
+    n, p5 = len(scene.members), len(scene.pairs)
+    cols = st.columns(4)
+    cols[0].metric(t("assur.n"), n)
+    cols[1].metric(t("assur.p5"), p5)
+    cols[2].metric(t("assur.p4"), 0)
+    cols[3].metric(t("assur.dof"), degrees_of_freedom(scene))
+    st.latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {degrees_of_freedom(scene)}")
+
+
+def groups_table(structure) -> pd.DataFrame:
+    return pd.DataFrame([{t("assur.col_group"): g.label(), t("assur.col_class"): g.cls,
+                          t("assur.col_kind"): g.kind, t("assur.col_order"): g.order,
+                          t("assur.col_members"): ", ".join(map(str, g.members))}
+                         for g in structure.groups])
+
+
+def special_table(motion: Motion, index: int) -> pd.DataFrame:
+    rows = []
+    for name, p in motion.special.items():
+        z = complex(p.z[index])
+        if not np.isfinite(z):
+            rows.append({t("assur.col_point"): name, "x [m]": t("assur.at_infinity")})
+            continue
+        rows.append({t("assur.col_point"): name, "x [m]": num(z.real, 4), "y [m]": num(z.imag, 4),
+                     "v [m/s]": num(abs(p.v[index]), 4), "a [m/s²]": num(abs(p.a[index]), 4)})
+    return pd.DataFrame(rows)
+
+
+controls, main = st.columns([1, 3], gap="large")
+with controls:
+    base = scene_picker(default="zbirka-4.1")
+    rotating = base.driver.kind == "rotating"
+    seed({"at": math.degrees(base.driver.at) if rotating else base.driver.at, "tol": 1e-10,
+          "upto": 99}, st.session_state["scene"])
+    scene = driver_input(base)
+    tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
+                           key="tol", format_func=lambda v: f"{v:.0e}", bind="query-params")
+    scene_download(scene)
+
+with main:
+    st.caption(title_of(scene))
+    counts(scene)
+    try:
+        structure = decompose(scene)
+    except StructureError as exc:
+        st.error(t("assur.no_structure", reason=str(exc)))
+        st.stop()
+    st.markdown(t("assur.formula", formula=structure.formula))
+    st.dataframe(groups_table(structure), hide_index=True)
+    groups = len(structure.groups)
+    upto = groups
+    if groups > 1:
+        st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
+        upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
+    try:
+        instant = solve_instant(scene, None)
+    except (Unsolvable, StructureError) as exc:
+        st.error(t("plans.unsolvable", reason=str(exc)))
+        st.stop()
+    survey = cycle(scene, tol)
+    chart(structure_figure(survey, CYCLE, upto, t("assur.fig_title"), t, look()),
+          f"{scene.id}-structure", key="structure")
+    for issue in survey.issues:
+        ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
+        key = "assur.open" if issue.problem == "open" else "assur.near_singular"
+        st.warning(t(key, group=issue.group, ranges=ranges))
+    if instant.special:
+        st.subheader(t("assur.special"))
+        st.caption(t("assur.special_hint"))
+        table = special_table(instant, 0)
+        st.dataframe(table, hide_index=True)
+        csv_button(table, f"{scene.id}-special-points.csv", key="special_csv")
+    if instant.newton:
+        with st.expander(t("assur.accuracy"), expanded=False):
+            st.caption(t("assur.accuracy_hint"))
+            report = next(iter(instant.newton.values()))
+            st.write(t("assur.instant_newton", iterations=int(report.iterations[0]),
+                       residual=f"{report.residual[0]:.1e}"))
+            rows = pd.DataFrame([{t("assur.col_tol"): f"{r['tol']:.0e}",
+                                  t("assur.col_iter"): f"{num(r['iterations_mean'], 2)} / {r['iterations_max']}",
+                                  t("assur.col_ms"): num(r["solve_ms"], 1),
+                                  t("assur.col_error"): f"{r['error_m']:.1e}"}
+                                 for r in accuracy(base)])
+            st.dataframe(rows, hide_index=True)

@@ -12,6 +12,7 @@ from figures.style import nice_scale
 from mechanisms.schema import Scene
 from solvers.analytic import equations, solved_values
 from solvers.diagnostics import Unsolvable, solve_instant
+from solvers.structure import StructureError
 from solvers.kinematics import Motion
 from solvers.plans import Plans, build, describe, readings
 from solvers.textbook import check
@@ -48,7 +49,7 @@ def auto_scales(scene: Scene) -> dict[str, float]:
         plans = solved_plans(scene)
         reach = {"v": max(map(abs, plans.velocity.images.values())),
                  "a": max(map(abs, plans.acceleration.images.values()))}
-    except Unsolvable:
+    except (Unsolvable, StructureError):
         reach = {"v": 1.0, "a": 10.0}
     spans = [abs(z) for m in scene.members.values() for z in m.points.values()]
     reach["L"] = max(spans or [1.0])
@@ -102,6 +103,11 @@ try:
 except Unsolvable as exc:
     with main:
         st.error(t("plans.unsolvable", reason=str(exc)))
+    st.stop()
+except StructureError as exc:
+    with main:
+        st.info(t("plans.not_drawn", reason=str(exc)))
+        st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
     st.stop()
 
 steps = plans.velocity.steps

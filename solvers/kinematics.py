@@ -9,6 +9,7 @@ only the groups those points depend on.
 from __future__ import annotations
 
 import cmath
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass, field
@@ -17,9 +18,10 @@ import numpy as np
 
 from mechanisms.schema import DRIVER, FRAME, Scene
 
-from .loops import build_loop, solve_dyad
+from .loops import build_loop, group_size, solve_dyad
 from .state import Body, unit
-from .structure import Structure, decompose
+from .structure import Group, Structure, StructureError, decompose
+from .triads import assemble, solve_triad
 
 NEAR_SINGULAR = 1e-3  # |sin| of the angle between a group's unknown directions
 SINGULAR = 1e-9
@@ -79,6 +81,16 @@ class GroupIssue:
 
 
 @dataclass
+class NewtonReport:
+    """How Newton's method went for a class III group: iterations and the final largest
+    constraint violation (m) at each position, for the tolerance asked."""
+
+    iterations: np.ndarray
+    residual: np.ndarray
+    tol: float
+
+
+@dataclass
 class Motion:
     scene: Scene
     structure: Structure
@@ -90,6 +102,9 @@ class Motion:
     feasible: np.ndarray  # False where some solved group cannot close
     transmission: dict[str, np.ndarray] = field(default_factory=dict)
     issues: list[GroupIssue] = field(default_factory=list)
+    newton: dict[str, NewtonReport] = field(default_factory=dict)  # per class III group
+    special: dict[str, PointMotion] = field(default_factory=dict)  # Assur points S, as points
+    # of the ternary member (NaN where the two lines are parallel: S at infinity)
 
     @property
     def condition(self) -> np.ndarray:
@@ -117,8 +132,11 @@ def driver_body(scene: Scene, at: np.ndarray) -> Body:
 
 
 def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = None,
-          structure: Structure | None = None) -> Motion:
-    """Solve the scene at driver value(s) ``at`` (rad or m; default: the scene's instant)."""
+          structure: Structure | None = None, tol: float = 1e-10) -> Motion:
+    """Solve the scene at driver value(s) ``at`` (rad or m; default: the scene's instant).
+
+    ``tol`` is Newton's stopping residual for class III groups, relative to the group's size.
+    """
     at = np.atleast_1d(np.asarray(scene.driver.at if at is None else at, dtype=float))
     structure = structure or decompose(scene)
     if points is None:
@@ -127,28 +145,112 @@ def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = N
         wanted = {m for m, mem in scene.members.items() if set(points) & set(mem.points)}
         groups = structure.groups_for(wanted)
     with np.errstate(invalid="ignore", divide="ignore"):  # open positions are NaN, and masked
-        return _solve_groups(scene, structure, groups, at, order, points)
+        solved = _Solved(scene, groups, at, order, tol)
+        motion = _collect(scene, structure, at, order, solved.bodies, solved.feasible,
+                          solved.transmission, solved.issues, points)
+        motion.newton = solved.newton
+        motion.special = _special_points(scene, groups, solved.bodies, order)
+        return motion
 
 
-def _solve_groups(scene, structure, groups, at, order, points) -> Motion:
-    bodies: dict[int, Body] = {FRAME: Body.frame(), DRIVER: driver_body(scene, at)}
-    feasible = np.ones(at.shape, dtype=bool)
-    transmission, issues = {}, []
-    for group in groups:
-        solution = solve_dyad(build_loop(scene, group), bodies, order)
-        bodies.update(solution.bodies)
-        opened = ~solution.closed & feasible
+class _Solved:
+    """The driver and the groups solved in order, each over the whole array ``at``."""
+
+    def __init__(self, scene: Scene, groups, at: np.ndarray, order: int, tol: float):
+        self.bodies: dict[int, Body] = {FRAME: Body.frame(), DRIVER: driver_body(scene, at)}
+        self.feasible = np.ones(at.shape, dtype=bool)
+        self.transmission: dict[str, np.ndarray] = {}
+        self.issues: list[GroupIssue] = []
+        self.newton: dict[str, NewtonReport] = {}
+        for i, group in enumerate(groups):
+            if group.cls == 2:
+                solution = solve_dyad(build_loop(scene, group), self.bodies, order)
+            else:
+                solution = self._triad(scene, group, groups[:i], at, order, tol)
+            self._add(group, solution, at)
+
+    def _triad(self, scene, group: Group, before, at, order, tol):
+        rate_scene = dataclasses.replace(
+            scene, driver=dataclasses.replace(scene.driver, speed=1.0, accel=0.0))
+
+        def known_at(values):  # the members the group hangs on, with rates per unit speed
+            return _Solved(rate_scene, before, np.asarray(values, dtype=float), 1, tol).bodies
+
+        size = group_size(scene, group)
+        a0 = scene.driver.at if scene.guess_at is None else scene.guess_at
+        start = assemble(scene, group, known_at(np.array([a0])), size)
+        if start is None:
+            raise StructureError(
+                f"group {group.label()} ({group.kind}) cannot be assembled at the scene's "
+                "own instant: its links do not reach (check the lengths and the [guess] points)")
+        solution = solve_triad(scene, group, at, self.bodies, order, (a0, *start), known_at,
+                               tol=tol, size=size)
+        self.newton[group.name] = NewtonReport(solution.iterations, solution.residual, tol)
+        return solution
+
+    def _add(self, group: Group, solution, at: np.ndarray) -> None:
+        self.bodies.update(solution.bodies)
+        opened = ~solution.closed & self.feasible
         if opened.any():
-            issues.append(GroupIssue(group.name, group.kind, "open", _ranges(at, opened)))
-        feasible &= solution.closed
+            self.issues.append(GroupIssue(group.name, group.kind, "open", _ranges(at, opened)))
+        self.feasible &= solution.closed
         if solution.transmission is not None:
-            t = np.where(feasible, solution.transmission, np.nan)
-            transmission[group.name] = t
-            weak = feasible & (t < NEAR_SINGULAR)
+            t = np.where(self.feasible, solution.transmission, np.nan)
+            self.transmission[group.name] = t
+            weak = self.feasible & (t < NEAR_SINGULAR)
             if weak.any():
-                issues.append(GroupIssue(group.name, group.kind, "near-singular",
-                                         _ranges(at, weak), float(1.0 / np.nanmin(t))))
-    return _collect(scene, structure, at, order, bodies, feasible, transmission, issues, points)
+                self.issues.append(GroupIssue(group.name, group.kind, "near-singular",
+                                              _ranges(at, weak), float(1.0 / np.nanmin(t))))
+
+
+def _special_points(scene: Scene, groups, bodies: dict[int, Body], order: int) -> dict:
+    """The special points S of the solved class III groups (see ``special_lines``)."""
+    wanted = dict(scene.special)
+    for group in groups:
+        if group.cls == 3 and not any(set(p) <= set(group.members) for p in wanted.values()):
+            name = "S" if "S" not in wanted else f"S{len(wanted) + 1}"
+            wanted[name] = tuple(group.members[1:3])
+    out = {}
+    for name, (b1, b2) in wanted.items():
+        group = next((g for g in groups if g.cls == 3 and {b1, b2} <= set(g.members[1:])), None)
+        if group is None:
+            continue
+        z = special_point(scene, group, bodies, b1, b2)
+        centre = bodies[group.members[0]]
+        local = (z - centre.z) / centre.rot + centre.ref
+        out[name] = PointMotion(z, centre.velocity(local) if order >= 1 else None,
+                                centre.acceleration(local) if order >= 2 else None)
+    return out
+
+
+def binary_line(scene: Scene, group: Group, member: int, bodies: dict[int, Body]):
+    """The line of a binary member of a triad: through its joint with the ternary member,
+    toward its other joint — or, for a slider on a guide, normal to the guide. Along this
+    line the member's joint moves, relative to the known member, at right angles.
+    Returns (point, direction), or None when the member's own joint slides."""
+    centre = group.members[0]
+    inner = next(p for p in group.pairs if set(p.members) == {member, centre})
+    outer = next(p for p in group.pairs if member in p.members and p is not inner)
+    if inner.kind != "revolute":
+        return None
+    body = bodies[member]
+    joint = body.position(scene.points_of(member)[inner.point])
+    if outer.kind == "revolute":
+        return joint, body.position(scene.points_of(member)[outer.point]) - joint
+    guide = bodies[outer.members[0]]
+    return joint, 1j * cmath.exp(1j * outer.angle) * guide.rot
+
+
+def special_point(scene: Scene, group: Group, bodies: dict[int, Body], b1: int, b2: int):
+    """Where the lines of binary members b1 and b2 meet (NaN where they are parallel)."""
+    l1, l2 = binary_line(scene, group, b1, bodies), binary_line(scene, group, b2, bodies)
+    if l1 is None or l2 is None:
+        return np.full(np.shape(bodies[group.members[0]].z), np.nan + 0j)
+    (p, d), (q, e) = l1, l2
+    det = d.real * e.imag - d.imag * e.real
+    parallel = np.abs(det) <= 1e-9 * np.abs(d) * np.abs(e)
+    t = ((q - p).real * e.imag - (q - p).imag * e.real) / np.where(parallel, np.nan, det)
+    return p + t * d
 
 
 def _collect(scene, structure, at, order, bodies, feasible, transmission, issues, wanted) -> Motion:

@@ -97,10 +97,10 @@ def build_loop(scene: Scene, group: Group) -> DyadLoop:
     slides = tuple(p.name for p in group.pairs if p.kind == "prismatic")
     branch = scene.assembly.get(tuple(sorted(group.members)), 1)
     return DyadLoop(group, start, tuple(steps), (body, at), angle_of, free, slides, branch,
-                    _size(scene, group))
+                    group_size(scene, group))
 
 
-def _size(scene: Scene, group: Group) -> float:
+def group_size(scene: Scene, group: Group) -> float:
     """The group's members' extent, or else the scene's (sliders alone have no length)."""
     own = [abs(c) for m in group.members for c in scene.members[m].points.values()]
     if max(own) > 0:

@@ -22,7 +22,7 @@ import numpy as np
 from mechanisms.schema import DRIVER, FRAME, Pair, Scene
 
 from .kinematics import Motion
-from .structure import Group
+from .structure import Group, StructureError
 
 POLE = "p"
 
@@ -106,7 +106,15 @@ class Plans:
 
 
 def build(motion: Motion, i: int = 0) -> Plans:
-    """Both plans at position ``i`` of a motion solved with ``order=2``."""
+    """Both plans at position ``i`` of a motion solved with ``order=2``.
+
+    Raises ``StructureError`` for a class III group: its plan starts from the special
+    point S (``Motion.special``), which this walk does not draw yet."""
+    for group in motion.structure.groups:
+        if group.cls == 3:
+            raise StructureError(f"the plans are drawn step by step for class II groups; "
+                                 f"{group.label()} is a class III group, solved through its "
+                                 "special point S on the Assur groups page")
     return _Builder(motion, i).run()
 
 

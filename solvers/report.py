@@ -24,9 +24,7 @@ def motion_json(motion: Motion) -> dict:
     data = {
         "scene": scene.id,
         "at": math.degrees(at) if scene.driver.kind == "rotating" else at,
-        "points": {name: {"x": p.x[0], "y": p.y[0], "vx": p.vx[0], "vy": p.vy[0],
-                          "ax": p.ax[0], "ay": p.ay[0], "v": abs(p.v[0]), "a": abs(p.a[0])}
-                   for name, p in sorted(motion.points.items())},
+        "points": {name: _point(p) for name, p in sorted(motion.points.items())},
         "members": {str(n): {"angle_deg": math.degrees(m.angle[0]) % 360.0,
                              "omega": m.omega[0], "epsilon": m.epsilon[0]}
                     for n, m in sorted(motion.members.items())},
@@ -34,12 +32,22 @@ def motion_json(motion: Motion) -> dict:
                            "coriolis": [s.coriolis[0].real, s.coriolis[0].imag]}
                     for name, s in motion.sliders.items()},
     }
+    if motion.special:
+        data["special_points"] = {name: _point(p) for name, p in motion.special.items()}
     if scene.travel:
         tr = scene.travel
         data["travel"] = {"wheel_omega": tr.wheel_omega, "crank_omega": tr.crank_omega,
                           "cycle_time": tr.cycle_time, "step_time": tr.step_time(),
                           "step_distance": tr.step_distance()}
     return clean(data)
+
+
+def _point(p) -> dict:
+    """x, y (m), vx, vy, v (m/s), ax, ay, a (m/s²); a special point at infinity is null."""
+    if not np.isfinite(p.z[0]):
+        return None
+    return {"x": p.x[0], "y": p.y[0], "vx": p.vx[0], "vy": p.vy[0], "ax": p.ax[0],
+            "ay": p.ay[0], "v": abs(p.v[0]), "a": abs(p.a[0])}
 
 
 def plan_json(plans: Plans) -> dict:

@@ -124,19 +124,29 @@ def _find_dyad(scene: Scene, known: set[int], remaining: set[int]) -> Group | No
 
 
 def _find_triad(scene: Scene, known: set[int], remaining: set[int]) -> Group | None:
-    """A class III group: a ternary member joined to three binary members (6 pairs)."""
+    """A class III group: a ternary member joined to three binary members (6 pairs).
+
+    Members are ``(ternary, *binaries)``; pairs go leg by leg, ``(outer, inner)`` for each
+    binary member; ``kind`` reads the legs the same way, e.g. ``RR-RR-PR`` (a slider on a
+    fixed guide as the third leg).
+    """
     for quad in combinations(sorted(remaining), 4):
         members = set(quad)
-        pairs = _pairs_between(scene, members, members | known)
-        if len(pairs) != 6:
+        if len(_pairs_between(scene, members, members | known)) != 6:
             continue
         inner = _pairs_between(scene, members, members)
         degree = {m: sum(m in p.members for p in inner) for m in quad}
         centre = max(quad, key=degree.get)
-        if degree[centre] == 3 and all(d == 1 for m, d in degree.items() if m != centre):
-            kind = "".join(p.letter for p in pairs)
-            order = len(pairs) - len(inner)
-            return Group((centre, *sorted(members - {centre})), tuple(pairs), kind, 3, order)
+        binaries = sorted(members - {centre})
+        if degree[centre] != 3 or any(degree[m] != 1 for m in binaries):
+            continue
+        legs = [(_pairs_between(scene, {b}, known), _pairs_between(scene, {b}, {centre}))
+                for b in binaries]
+        if any(len(outer) != 1 or len(mid) != 1 for outer, mid in legs):
+            continue
+        pairs = tuple(p for outer, mid in legs for p in (outer[0], mid[0]))
+        kind = "-".join(outer[0].letter + mid[0].letter for outer, mid in legs)
+        return Group((centre, *binaries), pairs, kind, 3, order=3)
     return None
 
 

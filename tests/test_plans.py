@@ -16,9 +16,15 @@ from solvers.analytic import equations
 from solvers.diagnostics import solve_instant
 from solvers.kinematics import solve
 from solvers.plans import POLE, build, readings
-from solvers.structure import decompose
+from solvers.structure import StructureError, decompose
 
-LINKAGES = [pid for pid in preset_ids("linkage")]
+CLASS_III = {"zbirka-4.1", "zbirka-4.2", "zbirka-4.3", "triad-full-turn"}  # no plan walk yet
+LINKAGES = [pid for pid in preset_ids("linkage") if pid not in CLASS_III]
+
+
+def test_a_class_iii_scene_is_refused_with_the_reason():
+    with pytest.raises(StructureError, match="class III group"):
+        build(solve(load_preset("zbirka-4.1")))
 
 
 def plans_of(scene: Scene, at=None):

@@ -2,9 +2,8 @@
 
 import pytest
 
-from mechanisms import preset_ids
-
 from .test_pages import chart, page
+from .test_plans import LINKAGES
 
 PAGE = "pages/velocity_plans.py"
 
@@ -18,7 +17,7 @@ def arrows(at, key: str) -> list[tuple]:
     return [(a["ax"], a["ay"], a["x"], a["y"]) for a in spec["layout"]["annotations"]]
 
 
-@pytest.mark.parametrize("pid", [p for p in preset_ids("linkage") if not p.startswith("zbirka-1.3")])
+@pytest.mark.parametrize("pid", [p for p in LINKAGES if not p.startswith("zbirka-1.3")])
 def test_every_linkage_preset_draws_both_plans(pid):
     at = plan_page(scene=pid)
     assert not at.exception

@@ -33,8 +33,9 @@ def _read_upload(kind: str) -> None:
         st.session_state["upload_error"] = str(exc)
 
 
-def scene_picker(kind: str = "linkage"):
-    """The scene select box (kept in the URL), an upload, and a download of the scene."""
+def scene_picker(kind: str = "linkage", default: str | None = None):
+    """The scene select box (kept in the URL; ``default`` when the link names none), an
+    upload, and a download of the scene."""
     options = preset_ids(kind)
     uploaded = st.session_state.get("uploaded_scene")
     if not isinstance(uploaded, KINDS[kind]):
@@ -46,7 +47,8 @@ def scene_picker(kind: str = "linkage"):
         scene = uploaded if pid == UPLOADED else preset(pid)
         return f"{pid} — {title_of(scene)}"
 
-    choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", format_func=label)
+    choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", default=default,
+                        format_func=label)
     scene = uploaded if choice == UPLOADED else preset(choice)
     with st.expander(t("scene.about")):
         st.caption(scene.source)

@@ -1,0 +1,105 @@
+"""Chapter 4 figure: the mechanism coloured by Assur group, added group by group, with the
+special points S of class III groups, their construction lines and their paths."""
+
+from __future__ import annotations
+
+import numpy as np
+import plotly.graph_objects as go
+
+from mechanisms.schema import DRIVER, FRAME
+from solvers.kinematics import Motion, binary_line
+from solvers.structure import Structure
+
+from .linkage import Text, mechanism_traces, pose, scatter
+from .style import NORMAL, Look, path_colour, plane_layout
+
+S_COLOUR = "#b8860b"
+
+
+def group_colours(structure: Structure) -> dict[int, str]:
+    """One colour per Assur group (the driver keeps the first)."""
+    colours = {DRIVER: path_colour(0)}
+    for i, group in enumerate(structure.groups, start=1):
+        colours.update(dict.fromkeys(group.members, path_colour(i)))
+    return colours
+
+
+def group_labels(structure: Structure, t: Text) -> dict[int, str]:
+    labels = {DRIVER: t("assur.driver_label")}
+    for group in structure.groups:
+        labels.update(dict.fromkeys(group.members, f"{group.label()} {group.kind}"))
+    return labels
+
+
+def structure_figure(motion: Motion, index: int, upto: int, title: str, t: Text,
+                     look: Look = NORMAL) -> go.Figure:
+    """The driver and the first ``upto`` groups at position ``index``; S where it is finite."""
+    scene, structure = motion.scene, motion.structure
+    shown = {FRAME, DRIVER} | {m for g in structure.groups[:upto] for m in g.members}
+    positions, rotations = pose(motion, index)
+    own = {p for m in shown - {FRAME} for p in scene.members[m].points} | set(scene.frame)
+    positions = {p: z for p, z in positions.items() if p in own}
+    rotations = {m: r for m, r in rotations.items() if m in shown}
+    colours, labels = group_colours(structure), group_labels(structure, t)
+    traces = mechanism_traces(scene, positions, rotations, t, look,
+                              colour=lambda m: colours[m], label=lambda m: labels[m])
+    seen = set()
+    for trace in traces:  # one legend entry per group
+        if trace.get("name") in seen:
+            trace["showlegend"] = False
+        seen.add(trace.get("name"))
+    for group in structure.groups[:upto]:
+        if group.cls == 3:
+            traces += special_traces(motion, group, index, look)
+    fig = go.Figure(traces)
+    return plane_layout(fig, title, look)
+
+
+def special_traces(motion: Motion, group, index: int, look: Look) -> list[dict]:
+    """The path of each special point of the group, its construction lines (from each binary
+    member's joint along the member's line to S) and S itself."""
+    traces = []
+    binaries = set(group.members[1:])
+    bodies = {m: _Body(motion, m, index) for m in [FRAME, *motion.members]}
+    for name, point in motion.special.items():
+        pair = next((p for n, p in motion.scene.special.items() if n == name), None)
+        pair = pair or tuple(group.members[1:3])
+        if not set(pair) <= binaries:
+            continue
+        path = point.z
+        traces.append(scatter(x=path.real, y=path.imag, mode="lines", name=f"{name}: path",
+                              hoverinfo="name", line=dict(color=S_COLOUR, width=1.5 * look.line,
+                                                          dash="dash")))
+        s = complex(path[index])
+        if not np.isfinite(s):
+            continue
+        xs, ys = [], []
+        for member in pair:
+            line = binary_line(motion.scene, group, member, bodies)
+            if line is None:
+                continue
+            joint = complex(line[0])
+            xs += [joint.real, s.real, None]
+            ys += [joint.imag, s.imag, None]
+        traces.append(scatter(x=xs, y=ys, mode="lines", showlegend=False, hoverinfo="skip",
+                              line=dict(color=S_COLOUR, width=1.2 * look.line, dash="dot")))
+        traces.append(scatter(x=[s.real], y=[s.imag], mode="markers+text", text=[name],
+                              textposition="bottom right", name=name, hoverinfo="name",
+                              marker=dict(symbol="x", size=12 * look.line, color=S_COLOUR),
+                              textfont=dict(size=look.font + 2, color=S_COLOUR)))
+    return traces
+
+
+class _Body:
+    """A member at one position, as ``binary_line`` reads it (position of local points)."""
+
+    def __init__(self, motion: Motion, member: int, index: int):
+        scene = motion.scene
+        points = scene.points_of(member)
+        self.rot = complex(motion.members[member].rot[index]) if member != FRAME else 1 + 0j
+        first = next(iter(points))
+        self.origin = complex(motion.points[first].z[index]) - points[first] * self.rot
+
+    def position(self, local: complex) -> complex:
+        return self.origin + local * self.rot
+

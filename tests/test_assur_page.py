@@ -1,0 +1,52 @@
+"""The chapter 4 page as a user meets it (AppTest through app.py)."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.test_pages import page
+
+PAGE = "pages/assur_groups.py"
+
+
+def texts(at) -> str:
+    return " ".join(m.value for m in at.markdown)
+
+
+def test_the_default_scene_is_task_4_1_with_its_structure_and_special_point():
+    at = page(PAGE, lang="en")
+    assert not at.exception
+    assert "I(1,2) → III(3,4,5,6)" in texts(at)
+    assert [m.value for m in at.metric] == ["5", "7", "0", "1"]
+    special = at.dataframe[1].value
+    assert list(special.iloc[:, 0]) == ["S"]
+    assert any("cannot close" in w.value for w in at.warning)  # the locked range, explained
+    assert len(at.get("plotly_chart")) == 1
+
+
+def test_two_dyads_in_series_step_through_group_by_group():
+    at = page(PAGE, lang="en", scene="zbirka-2.1")
+    assert "I(1,2) → II(3,4) → II(5,6)" in texts(at)
+    full = len(at.get("plotly_chart")[0].proto.spec)
+    at.slider(key="upto").set_value(1).run()
+    assert not at.exception
+    assert len(at.get("plotly_chart")[0].proto.spec) < full  # members 5, 6 not drawn yet
+
+
+@pytest.mark.parametrize("lang", ["sr", "en", "sr-cyrl"])
+def test_the_page_speaks_every_language(lang):
+    at = page(PAGE, lang=lang, scene="zbirka-4.2")
+    assert not at.exception and not at.error
+
+
+def test_a_position_the_group_cannot_reach_is_an_explanation_not_a_traceback():
+    at = page(PAGE, lang="en", scene="zbirka-4.1")
+    at.slider(key="at").set_value(90.0).run()
+    assert not at.exception
+    assert any("cannot be drawn" in e.value for e in at.error)
+
+
+def test_the_plans_page_sends_a_class_iii_scene_here():
+    at = page("pages/velocity_plans.py", lang="en", scene="zbirka-4.3")
+    assert not at.exception
+    assert any("class III" in i.value for i in at.info)
