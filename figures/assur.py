@@ -66,7 +66,7 @@ def special_traces(motion: Motion, group, index: int, look: Look) -> list[dict]:
         pair = pair or tuple(group.members[1:3])
         if not set(pair) <= binaries:
             continue
-        path = point.z
+        path = _near(point.z, motion, index)
         traces.append(scatter(x=path.real, y=path.imag, mode="lines", name=f"{name}: path",
                               hoverinfo="name", line=dict(color=S_COLOUR, width=1.5 * look.line,
                                                           dash="dash")))
@@ -88,6 +88,16 @@ def special_traces(motion: Motion, group, index: int, look: Look) -> list[dict]:
                               marker=dict(symbol="x", size=12 * look.line, color=S_COLOUR),
                               textfont=dict(size=look.font + 2, color=S_COLOUR)))
     return traces
+
+
+def _near(path: np.ndarray, motion: Motion, index: int) -> np.ndarray:
+    """The path where S stays within three mechanism sizes: near parallel lines it runs off
+    toward infinity, and drawing that would shrink the mechanism to a dot."""
+    points = np.array([complex(p.z[index]) for p in motion.points.values()])
+    centre = points.mean()
+    reach = 3 * max(np.abs(points - centre).max(), 1e-9)
+    with np.errstate(invalid="ignore"):
+        return np.where(np.abs(path - centre) < reach, path, np.nan)
 
 
 class _Body:
