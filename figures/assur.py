@@ -7,8 +7,9 @@ import numpy as np
 import plotly.graph_objects as go
 
 from mechanisms.schema import DRIVER, FRAME
-from solvers.kinematics import Motion, binary_line
-from solvers.structure import Structure
+from solvers.kinematics import Motion, binary_line, special_pairs
+from solvers.state import Body
+from solvers.structure import Group, Structure
 
 from .linkage import Text, mechanism_traces, pose, scatter
 from .style import NORMAL, Look, path_colour, plane_layout
@@ -48,45 +49,39 @@ def structure_figure(motion: Motion, index: int, upto: int, title: str, t: Text,
         if trace.get("name") in seen:
             trace["showlegend"] = False
         seen.add(trace.get("name"))
-    for group in structure.groups[:upto]:
-        if group.cls == 3:
-            traces += special_traces(motion, group, index, look)
+    shown_groups = structure.groups[:upto]
+    for name, (group, b1, b2) in special_pairs(scene, structure.groups).items():
+        if group in shown_groups:
+            traces += special_traces(motion, name, group, (b1, b2), index, look)
     fig = go.Figure(traces)
     return plane_layout(fig, title, look)
 
 
-def special_traces(motion: Motion, group, index: int, look: Look) -> list[dict]:
-    """The path of each special point of the group, its construction lines (from each binary
-    member's joint along the member's line to S) and S itself."""
-    traces = []
-    binaries = set(group.members[1:])
-    bodies = {m: _Body(motion, m, index) for m in [FRAME, *motion.members]}
-    for name, point in motion.special.items():
-        pair = next((p for n, p in motion.scene.special.items() if n == name), None)
-        pair = pair or tuple(group.members[1:3])
-        if not set(pair) <= binaries:
-            continue
-        path = _near(point.z, motion, index)
-        traces.append(scatter(x=path.real, y=path.imag, mode="lines", name=f"{name}: path",
-                              hoverinfo="name", line=dict(color=S_COLOUR, width=1.5 * look.line,
-                                                          dash="dash")))
-        s = complex(path[index])
-        if not np.isfinite(s):
-            continue
-        xs, ys = [], []
-        for member in pair:
-            line = binary_line(motion.scene, group, member, bodies)
-            if line is None:
-                continue
+def special_traces(motion: Motion, name: str, group: Group, pair: tuple[int, int], index: int,
+                   look: Look) -> list[dict]:
+    """The path of special point ``name``, its construction lines (from each binary member's
+    joint along the member's line to S) and S itself."""
+    path = _near(motion.special[name].z, motion, index)
+    traces = [scatter(x=path.real, y=path.imag, mode="lines", name=f"{name}: path",
+                      hoverinfo="name", line=dict(color=S_COLOUR, width=1.5 * look.line,
+                                                  dash="dash"))]
+    s = complex(path[index])
+    if not np.isfinite(s):
+        return traces
+    bodies = {m: _body(motion, m, index) for m in [FRAME, *motion.members]}
+    xs, ys = [], []
+    for member in pair:
+        line = binary_line(motion.scene, group, member, bodies)
+        if line is not None:
             joint = complex(line[0])
             xs += [joint.real, s.real, None]
             ys += [joint.imag, s.imag, None]
-        traces.append(scatter(x=xs, y=ys, mode="lines", showlegend=False, hoverinfo="skip",
-                              line=dict(color=S_COLOUR, width=1.2 * look.line, dash="dot")))
-        traces.append(scatter(x=[s.real], y=[s.imag], mode="markers+text", text=[name],
-                              textposition="bottom right", name=name, hoverinfo="name",
-                              marker=dict(symbol="x", size=12 * look.line, color=S_COLOUR),
-                              textfont=dict(size=look.font + 2, color=S_COLOUR)))
+    traces.append(scatter(x=xs, y=ys, mode="lines", showlegend=False, hoverinfo="skip",
+                          line=dict(color=S_COLOUR, width=1.2 * look.line, dash="dot")))
+    traces.append(scatter(x=[s.real], y=[s.imag], mode="markers+text", text=[name],
+                          textposition="bottom right", name=name, hoverinfo="name",
+                          marker=dict(symbol="x", size=12 * look.line, color=S_COLOUR),
+                          textfont=dict(size=look.font + 2, color=S_COLOUR)))
     return traces
 
 
@@ -100,16 +95,9 @@ def _near(path: np.ndarray, motion: Motion, index: int) -> np.ndarray:
         return np.where(np.abs(path - centre) < reach, path, np.nan)
 
 
-class _Body:
-    """A member at one position, as ``binary_line`` reads it (position of local points)."""
-
-    def __init__(self, motion: Motion, member: int, index: int):
-        scene = motion.scene
-        points = scene.points_of(member)
-        self.rot = complex(motion.members[member].rot[index]) if member != FRAME else 1 + 0j
-        first = next(iter(points))
-        self.origin = complex(motion.points[first].z[index]) - points[first] * self.rot
-
-    def position(self, local: complex) -> complex:
-        return self.origin + local * self.rot
-
+def _body(motion: Motion, member: int, index: int) -> Body:
+    """A member at one position, placed by its first point (enough for ``binary_line``)."""
+    points = motion.scene.points_of(member)
+    first = next(iter(points))
+    rot = complex(motion.members[member].rot[index]) if member != FRAME else 1 + 0j
+    return Body(rot=rot, z=complex(motion.points[first].z[index]), ref=points[first])

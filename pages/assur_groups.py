@@ -11,15 +11,15 @@ import streamlit as st
 from figures.assur import structure_figure
 from mechanisms.schema import Scene
 from solvers.diagnostics import (TOLERANCES, Unsolvable, format_range, newton_accuracy,
-                                 solve_instant, sweep_values)
+                                 sweep_values)
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
-from ui.cache import BY_REPR
+from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
 from ui.export import chart, csv_button
 from ui.i18n import num, t, title_of
 from ui.present import look
-from ui.scenes import scene_download, scene_picker
+from ui.scenes import driver_position, scene_download, scene_picker
 from ui.url import seed
 
 page_title("pages/assur_groups.py")
@@ -37,24 +37,14 @@ def accuracy(scene: Scene) -> list[dict]:
     return newton_accuracy(scene, sweep_values(scene, CYCLE))
 
 
-def driver_input(base: Scene) -> Scene:
-    if base.driver.kind == "rotating":
-        at = st.slider(t("plans.phi"), 0.0, 360.0, step=0.5, key="at", bind="query-params")
-        return base.with_(at=math.radians(at))
-    reach = max(abs(base.driver.at), 0.1)
-    at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3),
-                   step=round(reach / 100, 4), key="at", bind="query-params")
-    return base.with_(at=at)
-
-
 def counts(scene: Scene) -> None:
-    n, p5 = len(scene.members), len(scene.pairs)
+    n, p5, dof = len(scene.members), len(scene.pairs), degrees_of_freedom(scene)
     cols = st.columns(4)
     cols[0].metric(t("assur.n"), n)
     cols[1].metric(t("assur.p5"), p5)
     cols[2].metric(t("assur.p4"), 0)
-    cols[3].metric(t("assur.dof"), degrees_of_freedom(scene))
-    st.latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {degrees_of_freedom(scene)}")
+    cols[3].metric(t("assur.dof"), dof)
+    st.latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {dof}")
 
 
 def groups_table(structure) -> pd.DataFrame:
@@ -82,7 +72,7 @@ with controls:
     rotating = base.driver.kind == "rotating"
     seed({"at": math.degrees(base.driver.at) if rotating else base.driver.at, "tol": 1e-10,
           "upto": 99}, st.session_state["scene"])
-    scene = driver_input(base)
+    scene = driver_position(base)
     tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
                            key="tol", format_func=lambda v: f"{v:.0e}", bind="query-params")
     scene_download(scene)
@@ -103,7 +93,7 @@ with main:
         st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
         upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
     try:
-        instant = solve_instant(scene, None)
+        instant(scene)  # raises with the reason when the group cannot be at this instant
     except (Unsolvable, StructureError) as exc:
         st.error(t("plans.unsolvable", reason=str(exc)))
         st.stop()
@@ -114,18 +104,18 @@ with main:
         ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
         key = "assur.open" if issue.problem == "open" else "assur.near_singular"
         st.warning(t(key, group=issue.group, ranges=ranges))
-    if instant.special:
+    if survey.special:
         st.subheader(t("assur.special"))
         st.caption(t("assur.special_hint"))
-        table = special_table(instant, 0)
+        table = special_table(survey, CYCLE)
         st.dataframe(table, hide_index=True)
         csv_button(table, f"{scene.id}-special-points.csv", key="special_csv")
-    if instant.newton:
+    if survey.newton:
         with st.expander(t("assur.accuracy"), expanded=False):
             st.caption(t("assur.accuracy_hint"))
-            report = next(iter(instant.newton.values()))
-            st.write(t("assur.instant_newton", iterations=int(report.iterations[0]),
-                       residual=f"{report.residual[0]:.1e}"))
+            report = next(iter(survey.newton.values()))
+            st.write(t("assur.instant_newton", iterations=int(report.iterations[CYCLE]),
+                       residual=f"{report.residual[CYCLE]:.1e}"))
             rows = pd.DataFrame([{t("assur.col_tol"): f"{r['tol']:.0e}",
                                   t("assur.col_iter"): f"{num(r['iterations_mean'], 2)} / {r['iterations_max']}",
                                   t("assur.col_ms"): num(r["solve_ms"], 1),

@@ -11,30 +11,23 @@ from figures.plans import KIND_KEYS, layout_plan, mechanism_figure, plain, plan_
 from figures.style import nice_scale
 from mechanisms.schema import Scene
 from solvers.analytic import equations, solved_values
-from solvers.diagnostics import Unsolvable, solve_instant
-from solvers.structure import StructureError
-from solvers.kinematics import Motion
+from solvers.diagnostics import Unsolvable
 from solvers.plans import Plans, build, describe, readings
+from solvers.structure import StructureError
 from solvers.textbook import check
-from ui.cache import BY_REPR
+from ui.cache import BY_REPR, instant
 from ui.book import book_table
 from ui.chapters import page_title
 from ui.export import chart, csv_button
 from ui.i18n import num, t, title_of
 from ui.present import look
-from ui.scenes import scene_download, scene_picker
+from ui.scenes import driver_position, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
 SVG_CAPTIONS = {"v": "plans.svg_caption_v", "a": "plans.svg_caption_a"}
 
 page_title("pages/velocity_plans.py")
-
-
-@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
-def instant(scene: Scene) -> Motion:
-    """The scene solved at its own instant (raises Unsolvable with the reason)."""
-    return solve_instant(scene, None)
 
 
 @st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
@@ -66,15 +59,12 @@ def defaults(base: Scene) -> dict[str, object]:
 
 
 def driver_inputs(base: Scene) -> Scene:
+    scene = driver_position(base)
     if base.driver.kind == "rotating":
-        at = st.slider(t("plans.phi"), 0.0, 360.0, step=0.5, key="at", bind="query-params")
         speed = st.slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega", bind="query-params")
-        return base.with_(at=math.radians(at), speed=speed)
-    reach = max(abs(base.driver.at), 0.1)
-    at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3), step=round(reach / 100, 4),
-                   key="at", bind="query-params")
-    speed = st.slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", bind="query-params")
-    return base.with_(at=at, speed=speed)
+    else:
+        speed = st.slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", bind="query-params")
+    return scene.with_(speed=speed)
 
 
 def scale_inputs() -> dict[str, float]:

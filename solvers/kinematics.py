@@ -18,7 +18,7 @@ import numpy as np
 
 from mechanisms.schema import DRIVER, FRAME, Scene
 
-from .loops import build_loop, group_size, solve_dyad
+from .loops import build_loop, cross, group_size, solve_dyad
 from .state import Body, unit
 from .structure import Group, Structure, StructureError, decompose
 from .triads import assemble, solve_triad
@@ -83,11 +83,10 @@ class GroupIssue:
 @dataclass
 class NewtonReport:
     """How Newton's method went for a class III group: iterations and the final largest
-    constraint violation (m) at each position, for the tolerance asked."""
+    constraint violation (m) at each position."""
 
     iterations: np.ndarray
     residual: np.ndarray
-    tol: float
 
 
 @dataclass
@@ -185,7 +184,7 @@ class _Solved:
                 "own instant: its links do not reach (check the lengths and the [guess] points)")
         solution = solve_triad(scene, group, at, self.bodies, order, (a0, *start), known_at,
                                tol=tol, size=size)
-        self.newton[group.name] = NewtonReport(solution.iterations, solution.residual, tol)
+        self.newton[group.name] = NewtonReport(solution.iterations, solution.residual)
         return solution
 
     def _add(self, group: Group, solution, at: np.ndarray) -> None:
@@ -203,8 +202,10 @@ class _Solved:
                                               _ranges(at, weak), float(1.0 / np.nanmin(t))))
 
 
-def _special_points(scene: Scene, groups, bodies: dict[int, Body], order: int) -> dict:
-    """The special points S of the solved class III groups (see ``special_lines``)."""
+def special_pairs(scene: Scene, groups) -> dict[str, tuple[Group, int, int]]:
+    """Each special point's name with its class III group and the two binary members whose
+    lines meet there: the scene's ``[special]``, else ``S`` (``S2`` …) for the first two
+    binary members of every class III group the scene names none for."""
     wanted = dict(scene.special)
     for group in groups:
         if group.cls == 3 and not any(set(p) <= set(group.members) for p in wanted.values()):
@@ -213,8 +214,15 @@ def _special_points(scene: Scene, groups, bodies: dict[int, Body], order: int) -
     out = {}
     for name, (b1, b2) in wanted.items():
         group = next((g for g in groups if g.cls == 3 and {b1, b2} <= set(g.members[1:])), None)
-        if group is None:
-            continue
+        if group is not None:
+            out[name] = (group, b1, b2)
+    return out
+
+
+def _special_points(scene: Scene, groups, bodies: dict[int, Body], order: int) -> dict:
+    """The special points S as points of their group's ternary member."""
+    out = {}
+    for name, (group, b1, b2) in special_pairs(scene, groups).items():
         z = special_point(scene, group, bodies, b1, b2)
         centre = bodies[group.members[0]]
         local = (z - centre.z) / centre.rot + centre.ref
@@ -247,10 +255,9 @@ def special_point(scene: Scene, group: Group, bodies: dict[int, Body], b1: int, 
     if l1 is None or l2 is None:
         return np.full(np.shape(bodies[group.members[0]].z), np.nan + 0j)
     (p, d), (q, e) = l1, l2
-    det = d.real * e.imag - d.imag * e.real
+    det = cross(d, e)
     parallel = np.abs(det) <= 1e-9 * np.abs(d) * np.abs(e)
-    t = ((q - p).real * e.imag - (q - p).imag * e.real) / np.where(parallel, np.nan, det)
-    return p + t * d
+    return p + cross(q - p, e) / np.where(parallel, np.nan, det) * d
 
 
 def _collect(scene, structure, at, order, bodies, feasible, transmission, issues, wanted) -> Motion:

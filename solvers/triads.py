@@ -14,8 +14,8 @@ rates and corrected by Newton — and every requested position starts from its n
 march node. Velocities and accelerations need no iteration: differentiating the
 constraints gives linear systems with the same matrix (the Jacobian).
 
-Nothing here is specific to four members, so the same code solves a class II group —
-the tests use that to cross-check the closed-form dyads.
+Nothing here is specific to four members: the pairs and members of the group set the
+size of the system.
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ import numpy as np
 
 from mechanisms.schema import Pair, Scene
 
+from .loops import cross
 from .state import Body, cplx
 from .structure import Group
 
@@ -80,15 +81,15 @@ class _System:
             direction = np.exp(1j * pair.angle) * bp.rot
             d = bq.position(lq) - bp.position(lp)
             if level == 0:
-                line = _cross(direction, d)
+                line = cross(direction, d)
             else:
                 d1 = bq.velocity(lq) - bp.velocity(lp)
                 if level == 1:
-                    line = bp.omega * _cross(1j * direction, d) + _cross(direction, d1)
+                    line = bp.omega * cross(1j * direction, d) + cross(direction, d1)
                 else:
                     d2 = bq.acceleration(lq) - bp.acceleration(lp)
-                    line = (_cross((1j * bp.epsilon - bp.omega ** 2) * direction, d)
-                            + 2 * bp.omega * _cross(1j * direction, d1) + _cross(direction, d2))
+                    line = (cross((1j * bp.epsilon - bp.omega ** 2) * direction, d)
+                            + 2 * bp.omega * cross(1j * direction, d1) + cross(direction, d2))
             rows += [turn * self.size, line]
         shape = np.broadcast_shapes(*(np.shape(r) for r in rows))
         return np.stack([np.broadcast_to(r, shape) for r in rows], axis=-1)
@@ -117,16 +118,12 @@ class _System:
                 c = self.column[member]
                 jac[:, r, c + 2] = sign * self.size
                 arm = 1j * bodies[member].arm(self._local(pair, member))
-                jac[:, r + 1, c] = sign * _cross(direction, 1)
-                jac[:, r + 1, c + 1] = sign * _cross(direction, 1j)
-                jac[:, r + 1, c + 2] = sign * _cross(direction, arm)
+                jac[:, r + 1, c] = sign * cross(direction, 1)
+                jac[:, r + 1, c + 1] = sign * cross(direction, 1j)
+                jac[:, r + 1, c + 2] = sign * cross(direction, arm)
             if p in self.column:  # turning the guide turns its line
-                jac[:, r + 1, self.column[p] + 2] += _cross(1j * direction, d)
+                jac[:, r + 1, self.column[p] + 2] += cross(1j * direction, d)
         return jac
-
-
-def _cross(a, b):
-    return np.real(a) * np.imag(b) - np.imag(a) * np.real(b)
 
 
 def _solve(jac: np.ndarray, rhs: np.ndarray) -> np.ndarray:
@@ -178,10 +175,10 @@ def newton(system: _System, known: dict[int, Body], z, th, tol: float):
         active[idx[done | bad]] = False
         if bad.any():
             z[idx[bad]], th[idx[bad]] = np.nan, np.nan
-        step_idx = idx[~done & ~bad]
+        keep = ~done & ~bad
+        step_idx = idx[keep]
         if step_idx.size == 0:
             break
-        keep = ~done & ~bad
         step = _solve(system.jacobian({m: _take(b, np.flatnonzero(keep)) for m, b in sub.items()}),
                       -rows[keep])
         iterations[step_idx] += 1

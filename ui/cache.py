@@ -11,6 +11,7 @@ import streamlit as st
 
 from mechanisms import Scene, load_preset
 from solvers import Motion, solve
+from solvers.diagnostics import solve_instant
 
 BY_REPR = {Scene: repr}
 
@@ -24,3 +25,9 @@ def preset(preset_id: str) -> Scene:
 def solved(scene: Scene, values: tuple[float, ...], order: int = 0) -> Motion:
     """``solve`` for driver values given as a tuple (hashable)."""
     return solve(scene, list(values), order=order)
+
+
+@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
+def instant(scene: Scene) -> Motion:
+    """The scene solved at its own instant (raises Unsolvable with the reason)."""
+    return solve_instant(scene, None)

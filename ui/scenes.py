@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import streamlit as st
 
 from mechanisms import Scene, SceneError, parse_document, preset_ids
@@ -66,3 +68,15 @@ def scene_download(scene) -> None:
     text = writer(scene)
     st.download_button(t("scene.download"), text.encode("utf-8"), f"{scene.id}.toml",
                        mime="application/toml", on_click="ignore", icon=":material/download:")
+
+
+def driver_position(base: Scene) -> Scene:
+    """The driver's position slider (φ₂ in degrees, or s in m for a slider), kept in the URL
+    as ``at``; the scene at that position."""
+    if base.driver.kind == "rotating":
+        at = st.slider(t("plans.phi"), 0.0, 360.0, step=0.5, key="at", bind="query-params")
+        return base.with_(at=math.radians(at))
+    reach = max(abs(base.driver.at), 0.1)
+    at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3),
+                   step=round(reach / 100, 4), key="at", bind="query-params")
+    return base.with_(at=at)
