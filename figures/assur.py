@@ -52,17 +52,17 @@ def structure_figure(motion: Motion, index: int, upto: int, title: str, t: Text,
     shown_groups = structure.groups[:upto]
     for name, (group, b1, b2) in special_pairs(scene, structure.groups).items():
         if group in shown_groups:
-            traces += special_traces(motion, name, group, (b1, b2), index, look)
+            traces += special_traces(motion, name, group, (b1, b2), index, t, look)
     fig = go.Figure(traces)
     return plane_layout(fig, title, look)
 
 
 def special_traces(motion: Motion, name: str, group: Group, pair: tuple[int, int], index: int,
-                   look: Look) -> list[dict]:
+                   t: Text, look: Look) -> list[dict]:
     """The path of special point ``name``, its construction lines (from each binary member's
     joint along the member's line to S) and S itself."""
     path = _near(motion.special[name].z, motion, index)
-    traces = [scatter(x=path.real, y=path.imag, mode="lines", name=f"{name}: path",
+    traces = [scatter(x=path.real, y=path.imag, mode="lines", name=t("assur.s_path", name=name),
                       hoverinfo="name", line=dict(color=S_COLOUR, width=1.5 * look.line,
                                                   dash="dash"))]
     s = complex(path[index])

@@ -94,9 +94,10 @@ except Unsolvable as exc:
     with main:
         st.error(t("plans.unsolvable", reason=str(exc)))
     st.stop()
-except StructureError as exc:
+except StructureError:  # a class III group: plans.build draws class II groups only
     with main:
-        st.info(t("plans.not_drawn", reason=str(exc)))
+        group = next(g for g in instant(scene).structure.groups if g.cls == 3)
+        st.info(t("plans.not_drawn", group=group.label()))
         st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
     st.stop()
 

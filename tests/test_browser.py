@@ -247,7 +247,7 @@ def test_the_assur_page_draws_the_special_point_and_its_path(app_url, browser, t
     page = open_page(browser, f"{app_url}/assur_groups?lang=en&scene=triad-full-turn",
                      size=(1600, 1000))
     names = page.evaluate("() => document.querySelector('.js-plotly-plot').data.map(t => t.name)")
-    assert "S" in names and "S: path" in names and "III(3,4,5,6) RR-RR-PR" in names
+    assert "S" in names and "path of S" in names and "III(3,4,5,6) RR-RR-PR" in names
     assert page.locator("[data-testid='stException']").count() == 0
     shot = tmp_path / "assur-groups.png"
     page.screenshot(path=str(shot), full_page=True)
