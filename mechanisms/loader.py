@@ -29,7 +29,7 @@ MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label
 PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "angle",
              "slider_angle"}
 DRIVER_KEYS = {"member", "type", "at", "omega", "epsilon", "velocity", "acceleration"}
-FORCE_KEYS = {"member", "point", "magnitude", "angle", "follows_member"}
+FORCE_KEYS = {"member", "point", "magnitude", "angle", "follows_member", "label"}
 MOMENT_KEYS = {"member", "value"}
 
 
@@ -408,7 +408,8 @@ def _forces(raw: dict, r: _Reader, members: dict[int, Member], frame: dict) -> t
             raise r.fail(f"{where}.follows_member", f"must be true or false, got {follows!r}")
         point = _point_ref(spec.get("point"), member, r, f"{where}.point", frame, members)
         forces.append(Force(member, point, r.number(spec, "magnitude", where),
-                            math.radians(r.number(spec, "angle", where, default=0.0)), follows))
+                            math.radians(r.number(spec, "angle", where, default=0.0)), follows,
+                            r.text(spec, "label", where, default="")))
     return tuple(forces)
 
 

@@ -97,6 +97,7 @@ class Force:
     magnitude: float  # N
     angle: float  # rad, direction
     follows_member: bool = False  # direction measured in the member's frame
+    label: str = ""  # as the book names it (G_3 for a weight given as a force); default F_<member>
 
 
 @dataclass(frozen=True)

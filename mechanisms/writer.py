@@ -82,6 +82,8 @@ def to_toml(scene: Scene) -> str:
         out += ["\n[[forces]]", f"member = {f.member}", f"point = {_s(f.point)}",
                 f"magnitude = {_n(f.magnitude)}", f"angle = {_n(math.degrees(f.angle))}",
                 f"follows_member = {'true' if f.follows_member else 'false'}"]
+        if f.label:
+            out.append(f"label = {_s(f.label)}")
     for m in scene.moments:
         out += ["\n[[moments]]", f"member = {m.member}", f"value = {_n(m.value)}"]
     if scene.scales:

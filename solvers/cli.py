@@ -1,4 +1,4 @@
-"""Command line: ``python -m solvers list | solve | plan | structure | bench`` (see docs/cli.md).
+"""Command line: ``python -m solvers list | solve | plan | structure | forces | bench`` (see docs/cli.md).
 
 Exit codes: 0 done; 2 the scene or the command is wrong; 3 the mechanism cannot be in
 the asked position (the message says why and where it can be).
@@ -19,7 +19,8 @@ from .balancing import BalanceError, balance
 from .diagnostics import Unsolvable, explain_singular, solve_instant
 from .gears import TrainError, solve_train
 from .plans import build
-from .report import gears_json, motion_json, plan_json, rotor_json
+from .kinetostatics import analyse
+from .report import forces_json, gears_json, motion_json, plan_json, rotor_json
 from .structure import StructureError, decompose
 
 
@@ -56,6 +57,13 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("scene")
     p.add_argument("--json", action="store_true")
     p.set_defaults(run=_structure)
+    p = sub.add_parser("forces", help="joint reactions and the driving torque at one instant")
+    p.add_argument("scene")
+    p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver")
+    p.add_argument("--no-inertia", action="store_true",
+                   help="leave the inertia forces out (as tasks 5.1–5.2 do)")
+    p.add_argument("--json", action="store_true", help="print JSON (SI units)")
+    p.set_defaults(run=_forces)
     p = sub.add_parser("bench", help="time the solver against a closed-form numpy baseline")
     p.add_argument("scene")
     p.add_argument("--steps", type=int, default=3600, help="positions per cycle")
@@ -167,6 +175,30 @@ def _plan(args) -> int:
             for c in step["components"]:
                 print(f"    {c['kind']:11s} {c['from']:>4s} → {c['to']:4s} "
                       f"({c['x']:.5g}, {c['y']:.5g})  |{c['symbol']}| = {c['magnitude']:.5g}")
+    return 0
+
+
+def _forces(args) -> int:
+    scene = _linkage(args.scene)
+    data = forces_json(analyse(scene, motion=solve_instant(scene, args.at),
+                               inertia=not args.no_inertia))
+    if args.json:
+        return _print_json(data)
+    print(f"{scene.id} — {scene.title}\n")
+    print(f"{'F_pq':8s}{'x N':>11s}{'y N':>11s}{'|F| N':>11s}{'angle °':>10s}")
+    for key, r in data["reactions"].items():
+        p, q = key.split("-")
+        if int(p) < int(q):  # F_qp = −F_pq: one line per pair
+            print(f"F_{p}{q:6s} {r['x']:10.5g} {r['y']:10.5g} {r['magnitude']:10.5g} "
+                  f"{r['angle_deg']:9.2f}" + (f"  h = {r['offset']:.5g} m" if "offset" in r else ""))
+    d = data["driving"]
+    if d["torque"] is not None:
+        print(f"\nM_p = {d['torque']:.6g} N·m (Zhukovsky {d['torque_zhukovsky']:.6g}, "
+              f"power balance {d['torque_power_balance']:.6g}), F_p = M_p/AB = {d['force']:.6g} N")
+    else:
+        print(f"\nF_p = {d['force']:.6g} N (Zhukovsky {d['force_zhukovsky']:.6g}, "
+              f"power balance {d['force_power_balance']:.6g})")
+    print(f"P = {d['power']:.6g} W")
     return 0
 
 

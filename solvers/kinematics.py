@@ -104,6 +104,8 @@ class Motion:
     newton: dict[str, NewtonReport] = field(default_factory=dict)  # per class III group
     special: dict[str, PointMotion] = field(default_factory=dict)  # Assur points S, as points
     # of the ternary member (NaN where the two lines are parallel: S at infinity)
+    bodies: dict[int, Body] = field(default_factory=dict)  # every solved member's motion: any
+    # point of it (a centre of mass, a point of action) follows from its local coordinates
 
     @property
     def condition(self) -> np.ndarray:
@@ -148,6 +150,7 @@ def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = N
         motion = _collect(scene, structure, at, order, solved.bodies, solved.feasible,
                           solved.transmission, solved.issues, points)
         motion.newton = solved.newton
+        motion.bodies = solved.bodies
         motion.special = _special_points(scene, groups, solved.bodies, order)
         return motion
 

@@ -14,6 +14,7 @@ from .balancing import Balance, balance
 from .diagnostics import Unsolvable, solve_instant
 from .gears import TrainSolution, solve_train
 from .kinematics import Motion
+from .kinetostatics import Kinetostatics, analyse
 from .plans import Plans, is_construction
 
 
@@ -48,6 +49,46 @@ def _point(p) -> dict:
         return None
     return {"x": p.x[0], "y": p.y[0], "vx": p.vx[0], "vy": p.vy[0], "ax": p.ax[0],
             "ay": p.ay[0], "v": abs(p.v[0]), "a": abs(p.a[0])}
+
+
+def forces_json(k: Kinetostatics) -> dict:
+    """One instant (the first position) of the kinetostatics, SI units: reactions keyed "p-q"
+    (the force of member p on member q, both orders), the driving torque or force by the
+    three methods, and each member's inertia loads."""
+    scene = k.motion.scene
+    at = k.motion.at[0]
+    reactions = {}
+    for (p, q), r in sorted(k.reactions.items()):
+        f = r.force[0]
+        entry = {"x": f.real, "y": f.imag, "magnitude": abs(f),
+                 "angle_deg": math.degrees(math.atan2(f.imag, f.real)) % 360.0,
+                 "point": _xy(r.point[0])}
+        if r.pair.kind == "prismatic":
+            entry.update(couple=r.couple[0], offset=r.offset[0])
+        reactions[f"{p}-{q}"] = entry
+    rotating = k.rotating
+    kind = "torque" if rotating else "force"
+    driving = {"torque": k.driving[0] if rotating else None,
+               "force": k.crank_force[0] if rotating else k.driving[0],
+               "power": k.power[0],
+               f"{kind}_zhukovsky": k.driving_lever[0],
+               f"{kind}_power_balance": k.driving_power[0],
+               "power_balance_residual": k.power_residual[0]}
+    inertia = {str(n): {"force": _xy(i.force[0]), "moment": i.moment[0],
+                        "centre": _xy(i.centre[0]),
+                        "huygens_point": None if i.huygens is None else _xy(i.huygens[0])}
+               for n, i in sorted(k.inertia.items())}
+    loads = {ld.name: {"member": ld.member, "force": _xy(ld.force[0]), "point": _xy(ld.point[0]),
+                       "magnitude": abs(ld.force[0])} for ld in k.loads}
+    return clean({"scene": scene.id,
+                  "at": math.degrees(at) if rotating else at,
+                  "reactions": reactions, "driving": driving, "inertia": inertia, "loads": loads,
+                  "couples": {c.name: c.value[0] for c in k.couples}})
+
+
+def has_loads(scene) -> bool:
+    """Whether chapter 5 has anything to compute for the scene."""
+    return bool(scene.forces or scene.moments or any(m.mass > 0 for m in scene.members.values()))
 
 
 def plan_json(plans: Plans) -> dict:
@@ -136,4 +177,8 @@ def exact_values(scene) -> dict[str, float]:
         if solution.status != "solved":
             raise Unsolvable(solution.message)
         return flatten(gears_json(solution))
-    return flatten(motion_json(solve_instant(scene, None)))
+    motion = solve_instant(scene, None)
+    values = flatten(motion_json(motion))
+    if has_loads(scene):
+        values.update(flatten(forces_json(analyse(scene, motion=motion))))
+    return values
