@@ -1,5 +1,252 @@
-"""Chapter page placeholder (its issue is not done yet)."""
+"""Chapter 5 — kinetostatics: joint reactions F_pq, inertia loads, the driving torque and power
+over the cycle, with force polygons and Zhukovsky's lever."""
 
-from ui.chapters import coming_soon
+from __future__ import annotations
 
-coming_soon("pages/kinetostatics.py")
+import math
+import time
+
+import numpy as np
+import pandas as pd
+import streamlit as st
+
+from figures.kinetostatics import cycle_figure, lever_figure, loads_figure
+from figures.polygon import polygon_figure
+from figures.style import nice_scale
+from mechanisms.schema import Scene
+from solvers.diagnostics import Unsolvable, sweep_values
+from solvers.kinetostatics import Kinetostatics, analyse, free_body
+from solvers.report import has_loads
+from solvers.structure import StructureError
+from solvers.textbook import check
+from ui.book import book_table
+from ui.cache import BY_REPR, instant
+from ui.chapters import page_title
+from ui.export import chart, csv_button
+from ui.i18n import num, scaled_title, t, title_of
+from ui.present import look
+from ui.scenes import driver_inputs, scene_download, scene_picker
+from ui.selfcheck import Quantity, answer_box
+from ui.url import seed
+
+page_title("pages/kinetostatics.py")
+RESOLUTIONS = (12, 72, 360, 3600)
+
+
+@st.cache_resource(max_entries=32, hash_funcs=BY_REPR)
+def over_cycle(scene: Scene, steps: int, inertia: bool) -> Kinetostatics:
+    """``steps`` positions over the cycle and, last, the scene's own instant."""
+    return analyse(scene, np.append(sweep_values(scene, steps), scene.driver.at), inertia=inertia)
+
+
+@st.cache_data(max_entries=16, hash_funcs=BY_REPR)
+def resolution_table(scene: Scene, inertia: bool) -> list[dict]:
+    """Time of a cycle at each resolution and how far its peak |M_p| is from the finest."""
+    rows = []
+    for steps in RESOLUTIONS:
+        start = time.perf_counter()
+        k = analyse(scene, sweep_values(scene, steps), inertia=inertia)
+        ms = 1e3 * (time.perf_counter() - start)
+        rows.append({"steps": steps, "ms": ms, "peak": float(np.nanmax(np.abs(k.driving), initial=0))})
+    finest = rows[-1]["peak"]
+    for row in rows:
+        row["change"] = 100 * (row["peak"] - finest) / finest if finest else 0.0
+    return rows
+
+
+def defaults(base: Scene) -> dict[str, object]:
+    rotating = base.driver.kind == "rotating"
+    values: dict[str, object] = {
+        "at": math.degrees(base.driver.at) if rotating else base.driver.at,
+        "omega": float(base.driver.speed), "inertia": True, "gravity": base.gravity > 0,
+        "steps": 360, "UF": base.scales.get("F", 0.0)}
+    for n, m in base.members.items():
+        values[f"m{n}"], values[f"rho{n}"] = float(m.mass), float(m.gyration)
+    for i, f in enumerate(base.forces):
+        values[f"F{i}"] = float(f.magnitude)
+    for i, mo in enumerate(base.moments):
+        values[f"M{i}"] = float(mo.value)
+    return values
+
+
+def load_inputs(base: Scene, scene: Scene) -> Scene:
+    """Masses, radii of gyration, forces and moments (all kept in the URL)."""
+    st.toggle(t("forces.inertia"), key="inertia", bind="query-params")
+    gravity = st.toggle(t("forces.gravity"), key="gravity", bind="query-params")
+    with st.expander(t("forces.loads"), expanded=False):
+        forces = [st.number_input(t("forces.force_input", name=f.label or f"F_{f.member}",
+                                    point=f.point), key=f"F{i}", format="%.4g",
+                                  bind="query-params") for i, f in enumerate(base.forces)]
+        moments = [st.number_input(t("forces.moment_input", member=mo.member), key=f"M{i}",
+                                   format="%.4g", bind="query-params")
+                   for i, mo in enumerate(base.moments)]
+        masses, rhos = {}, {}
+        for n in base.members:
+            left, right = st.columns(2)
+            masses[n] = left.number_input(t("forces.mass", member=n), min_value=0.0, key=f"m{n}",
+                                          format="%.4g", bind="query-params")
+            rhos[n] = right.number_input(t("forces.rho", member=n), min_value=0.0, key=f"rho{n}",
+                                         format="%.4g", bind="query-params")
+    return scene.with_loads(masses=masses, gyrations=rhos, forces=forces, moments=moments,
+                            gravity=(base.gravity or 9.81) if gravity else 0.0)
+
+
+def reactions_table(k: Kinetostatics, i: int) -> pd.DataFrame:
+    rows = []
+    for (p, q), r in sorted(k.reactions.items()):
+        if p > q:
+            continue
+        f = complex(r.force[i])
+        row = {"F_pq": f"F_{p}{q}", t("forces.col_pair"): f"{r.pair.letter} {r.pair.point}",
+               "x [N]": num(f.real, 4), "y [N]": num(f.imag, 4), "|F| [N]": num(abs(f), 4),
+               t("forces.col_angle"): num(math.degrees(math.atan2(f.imag, f.real)) % 360, 4)}
+        if r.pair.kind == "prismatic":
+            row["h [m]"] = num(float(r.offset[i]), 4)
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def inertia_table(k: Kinetostatics, i: int) -> pd.DataFrame:
+    rows = []
+    for n, inert in sorted(k.inertia.items()):
+        K = None if inert.huygens is None else complex(inert.huygens[i])
+        rows.append({t("forces.col_member"): n, "|F_i| [N]": num(abs(inert.force[i]), 4),
+                     "M_i [N·m]": num(float(inert.moment[i]), 4),
+                     "S [m]": f"({num(inert.centre[i].real, 4)}; {num(inert.centre[i].imag, 4)})",
+                     "K [m]": "—" if K is None else f"({num(K.real, 4)}; {num(K.imag, 4)})"})
+    return pd.DataFrame(rows)
+
+
+def driving_metrics(k: Kinetostatics, i: int) -> None:
+    unit, symbol = ("N·m", "M_p") if k.rotating else ("N", "F_p")
+    cols = st.columns(4)
+    cols[0].metric(t("forces.by_groups", symbol=symbol), f"{num(k.driving[i], 5)} {unit}")
+    cols[1].metric(t("forces.by_lever", symbol=symbol), f"{num(k.driving_lever[i], 5)} {unit}")
+    cols[2].metric(t("forces.by_power", symbol=symbol), f"{num(k.driving_power[i], 5)} {unit}")
+    cols[3].metric(t("forces.power"), f"{num(k.power[i], 5)} W")
+    st.caption(t("forces.agreement", spread=f"{k.disagreement[i]:.1e}",
+                 residual=f"{k.power_residual[i]:.1e}"))
+    if k.crank_force is not None:
+        st.caption(t("forces.crank_force", value=num(k.crank_force[i], 4)))
+
+
+controls, main = st.columns([1, 3], gap="large")
+with controls:
+    base = scene_picker(default="predavanja-kinetostatika")
+    seed(defaults(base), st.session_state["scene"])
+    scene = load_inputs(base, driver_inputs(base))
+    steps = st.select_slider(t("forces.steps"), options=RESOLUTIONS, key="steps",
+                             bind="query-params")
+    scene_download(scene)
+
+with main:
+    st.caption(title_of(scene))
+    if not has_loads(scene):
+        st.info(t("forces.no_loads"))
+    try:
+        instant(scene)  # raises with the reason when the mechanism cannot be in this position
+        k = over_cycle(scene, steps, st.session_state["inertia"])
+    except (Unsolvable, StructureError) as exc:
+        st.error(t("plans.unsolvable", reason=str(exc)))
+        st.stop()
+    now = steps  # the instant is the last position of the survey
+    if not np.isfinite(k.driving[now]):
+        st.warning(t("forces.singular"))
+    driving_metrics(k, now)
+    tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_lever"),
+                    t("forces.tab_cycle")], key="tab", on_change="rerun")
+
+rotating = scene.driver.kind == "rotating"
+at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
+if tabs[0].open:
+    with tabs[0]:
+        chart(loads_figure(k, now, t("forces.loads_title", at=at_label), t, look()),
+              f"{scene.id}-loads", key="fig_loads")
+        table = reactions_table(k, now)
+        st.subheader(t("forces.reactions"))
+        st.caption(t("forces.reactions_hint"))
+        st.dataframe(table, hide_index=True)
+        csv_button(table, f"{scene.id}-reactions.csv", key="csv_reactions")
+        if k.inertia:
+            st.subheader(t("forces.inertia_title"))
+            st.caption(t("forces.inertia_hint"))
+            st.dataframe(inertia_table(k, now), hide_index=True)
+
+if tabs[1].open:
+    with tabs[1]:
+        groups = {g.name: g.members for g in k.motion.structure.groups}
+        groups["driver"] = (2,)
+        names = list(k.order)
+        choice = st.selectbox(t("forces.group"), names, key="group",
+                              format_func=lambda n: t("forces.driver") if n == "driver"
+                              else t("forces.group_label", members=n))
+        actions = free_body(k, groups[choice], now)
+        biggest = max((abs(a.force) for a in actions), default=1.0)
+        uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
+                             bind="query-params") or nice_scale(biggest / 8)
+        known = [(a.name, a.force) for a in actions if a.known]
+        closing = [(a.name, a.force) for a in actions if not a.known]
+        chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
+                             (t("forces.legend_known"), t("forces.legend_closing")), look()),
+              f"{scene.id}-polygon-{choice}", key="fig_polygon")
+        st.dataframe(pd.DataFrame([{t("forces.col_force"): a.name,
+                                    "|F| [N]": num(abs(a.force), 4),
+                                    t("forces.col_plan"): num(abs(a.force) / uf, 3),
+                                    t("forces.col_angle"): num(math.degrees(math.atan2(
+                                        a.force.imag, a.force.real)) % 360, 4)}
+                                   for a in actions]), hide_index=True)
+
+if tabs[2].open:
+    with tabs[2]:
+        st.write(t("forces.lever_intro"))
+        chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
+              key="fig_lever")
+        speed = scene.driver.speed or 1.0
+        st.dataframe(pd.DataFrame([{
+            t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
+            t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
+            for f in k.lever if abs(f.force[now]) > 0]), hide_index=True)
+
+if tabs[3].open:
+    with tabs[3]:
+        x = k.motion.at[:now]
+        x = np.degrees(x) if rotating else x
+        symbol = "M_p [N·m]" if rotating else "F_p [N]"
+        chart(cycle_figure(x, [(symbol, k.driving[:now], "y"), ("P [W]", k.power[:now], "y2")],
+                           st.session_state["at"], t("forces.cycle_title"),
+                           t("plans.phi") if rotating else t("plans.s"), look()),
+              f"{scene.id}-torque", key="fig_cycle")
+        power = k.power[:now]
+        feasible = np.isfinite(power)
+        cols = st.columns(3)
+        cols[0].metric(t("forces.mean_power"), f"{num(np.mean(power[feasible]), 4)} W"
+                       if feasible.any() else "—")
+        cols[1].metric(t("forces.peak_power"), f"{num(np.nanmax(np.abs(power), initial=0), 4)} W")
+        cols[2].metric(t("forces.peak_driving", symbol=symbol),
+                       num(np.nanmax(np.abs(k.driving[:now]), initial=0), 4))
+        if not feasible.all():
+            st.caption(t("forces.part_cycle", share=num(100 * feasible.mean(), 3)))
+        with st.expander(t("forces.resolution")):
+            st.caption(t("forces.resolution_hint"))
+            st.dataframe(pd.DataFrame([{t("forces.col_steps"): r["steps"],
+                                        t("assur.col_ms"): num(r["ms"], 3),
+                                        t("forces.col_peak"): num(r["peak"], 6),
+                                        t("forces.col_change"): f"{num(r['change'], 3)} %"}
+                                       for r in resolution_table(scene, st.session_state["inertia"])]),
+                         hide_index=True)
+
+if scene.book:
+    with main:
+        st.subheader(t("plans.book_title"))
+        if scene == base:
+            st.dataframe(book_table(check(scene)), hide_index=True)
+        else:
+            st.info(t("plans.book_changed"))
+
+with controls:
+    unit = "N·m" if rotating else "N"
+    quantities = [Quantity(f"{'M_p' if rotating else 'F_p'} [{unit}]", float(k.driving[now]), unit),
+                  Quantity("P [W]", float(k.power[now]), "W")]
+    quantities += [Quantity(f"|F_{p}{q}| [N]", float(r.magnitude[now]), "N")
+                   for (p, q), r in sorted(k.reactions.items()) if p < q]
+    answer_box(quantities, key="self")

@@ -8,16 +8,21 @@ import pandas as pd
 import streamlit as st
 
 from figures.style import nice_scale
-from figures.balancing import end_view_figure, polygon_figure, rotor_3d_figure
+from figures.balancing import end_view_figure, rotor_3d_figure
+from figures.polygon import polygon_figure
 from mechanisms.rotor import PLANES, Correction, Mass, Rotor
 from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
 from ui.chapters import page_title
 from ui.export import chart, csv_button
-from ui.i18n import num, t
+from ui.i18n import num, scaled_title, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed, url_choice
+
+def legend() -> tuple[str, str]:
+    return t("rotor.fig_known"), t("rotor.fig_corrections")
+
 
 MM = 1e3  # the course writes radii and distances in mm, U in kg·mm and V in kg·mm²
 COLUMNS = ("m [kg]", "r [mm]", "φ [°]", "x [mm]")
@@ -109,7 +114,8 @@ def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> Non
     scale = st.number_input(t("rotor.scale_v"), min_value=1e-6, value=scale,
                             key=f"UV{reference}-{rotor.id}", format="%.4g")
     chart(polygon_figure([(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)],
-                         scale, "kg·mm²", t("rotor.v_title", plane=reference), t, look()),
+                         scale, scaled_title(t("rotor.v_title", plane=reference), scale, "kg·mm²"),
+                         legend(), look(), axes=("z", "y")),
           f"{rotor.id}-V", key="vpoly")
 
 
@@ -160,7 +166,8 @@ with main:
             scale_u = st.number_input(t("rotor.scale_u"), min_value=1e-6, value=scale_u,
                                       key=scale_key, format="%.4g")
             chart(polygon_figure(list(zip(names, us)), [(f"U{p}", u) for p, u in found.items()],
-                                 scale_u, "kg·mm", t("rotor.tab_u"), t, look()),
+                                 scale_u, scaled_title(t("rotor.tab_u"), scale_u, "kg·mm"),
+                                 legend(), look(), axes=("z", "y")),
                   f"{rotor.id}-U", key="upoly")
     if tab_v.open:
         with tab_v:

@@ -21,7 +21,7 @@ from ui.chapters import page_title
 from ui.export import chart, csv_button
 from ui.i18n import num, t, title_of
 from ui.present import look
-from ui.scenes import driver_position, scene_download, scene_picker
+from ui.scenes import driver_inputs, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -56,15 +56,6 @@ def defaults(base: Scene) -> dict[str, object]:
     scales = auto_scales(base)
     values.update(UL=scales["L"], Uv=scales["v"], Ua=scales["a"])
     return values
-
-
-def driver_inputs(base: Scene) -> Scene:
-    scene = driver_position(base)
-    if base.driver.kind == "rotating":
-        speed = st.slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega", bind="query-params")
-    else:
-        speed = st.slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", bind="query-params")
-    return scene.with_(speed=speed)
 
 
 def scale_inputs() -> dict[str, float]:

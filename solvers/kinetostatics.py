@@ -122,6 +122,11 @@ class LeverForce:
     image: np.ndarray
     force: np.ndarray
 
+    @property
+    def moment(self) -> np.ndarray:
+        """About the pole, per unit driver speed (N·m·s, or N·s for a linear driver)."""
+        return cross(self.image, self.force)
+
 
 @dataclass
 class Kinetostatics:
@@ -195,7 +200,7 @@ def analyse(scene: Scene, at=None, *, inertia: bool = True, motion: Motion | Non
     lever = _lever_forces(scene, unit_v, loads, couples, inertias)
     # a couple M on a member turning at ω has the lever moment −M·ω: the balancing torque's
     # is −M_p per unit ω₂, so M_p is the sum of the others' moments about the pole
-    driving_lever = np.broadcast_to(sum((cross(f.image, f.force) for f in lever), 0.0), shape)
+    driving_lever = np.broadcast_to(sum((f.moment for f in lever), 0.0), shape)
     power = driving * scene.driver.speed
     return Kinetostatics(motion, loads, couples, inertias, known, driving, -virtual,
                          driving_lever, power, virtual * scene.driver.speed + power, condition,

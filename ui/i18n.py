@@ -85,3 +85,8 @@ def title_of(scene) -> str:
     if not language.startswith("sr") or not scene.title_sr:
         return scene.title
     return KEEP.sub(r"\1", _to_cyrillic(scene.title_sr) if language == "sr-cyrl" else scene.title_sr)
+
+
+def scaled_title(title: str, scale: float, unit: str) -> str:
+    """A drawing's title with its scale, as the book writes it: "… — scale 1 cm = 10 N"."""
+    return f"{title} — {t('fig.scale', scale=num(scale, 4), unit=unit)}"

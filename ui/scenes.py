@@ -80,3 +80,14 @@ def driver_position(base: Scene) -> Scene:
     at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3),
                    step=round(reach / 100, 4), key="at", bind="query-params")
     return base.with_(at=at)
+
+
+def driver_inputs(base: Scene) -> Scene:
+    """The driver's position and speed sliders (``at``, ``omega`` in the URL): φ₂ and ω₂, or s
+    and v for a slider."""
+    scene = driver_position(base)
+    if base.driver.kind == "rotating":
+        speed = st.slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega", bind="query-params")
+    else:
+        speed = st.slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", bind="query-params")
+    return scene.with_(speed=speed)

@@ -1,0 +1,117 @@
+"""Chapter 5 figures: the mechanism with its loads, Zhukovsky's lever (the velocity plan turned
+90° with the forces at their images) and the driving torque and power over the cycle."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from solvers.kinetostatics import Kinetostatics
+
+from .linkage import Text, mechanism_traces, pose, scatter, typical_length
+from .polygon import arrows
+from .raw import RawFigure
+from .style import NORMAL, Look, path_colour, plane_layout
+
+LOAD_COLOURS = {"external": "#d62728", "inertia": "#ff7f0e", "weight": "#7f7f7f"}
+LEGEND_KEYS = {"external": "forces.legend_external", "inertia": "forces.legend_inertia",
+               "weight": "forces.legend_weight"}
+
+
+def _kind(name: str) -> str:
+    return "inertia" if name.startswith(("F_i", "M_i")) else "weight" if name.startswith("G_") else "external"
+
+
+def html(name: str) -> str:
+    """F_i3 → F<sub>i3</sub>; F_i3^K → F<sub>i3</sub><sup>K</sup>."""
+    base, _, sup = name.partition("^")
+    head, _, sub = base.partition("_")
+    text = f"{head}<sub>{sub}</sub>" if sub else head
+    return text + (f"<sup>{sup}</sup>" if sup else "")
+
+
+def loads_figure(k: Kinetostatics, index: int, title: str, t: Text, look: Look = NORMAL
+                 ) -> RawFigure:
+    """The mechanism at one position with every load as an arrow from its point of action;
+    the longest arrow is a third of a typical link, and each label gives the value."""
+    motion = k.motion
+    positions, rotations = pose(motion, index)
+    fig = RawFigure()
+    fig.add_raw(mechanism_traces(motion.scene, positions, rotations, t, look))
+    forces = [(ld.name, complex(ld.point[index]), complex(ld.force[index])) for ld in k.loads]
+    biggest = max((abs(f) for *_, f in forces), default=0.0)
+    reach = 0.35 * typical_length(motion.scene)
+    if biggest > 0:
+        arrows(fig, [p for _, p, _ in forces], [p + f / biggest * reach for _, p, f in forces],
+               [LOAD_COLOURS[_kind(n)] for n, *_ in forces],
+               [f"{html(n)} = {abs(f):.4g} N" for n, _, f in forces], look)
+    for kind, colour in LOAD_COLOURS.items():
+        if any(_kind(n) == kind for n, *_ in forces):
+            fig.add_raw([scatter(x=[None], y=[None], mode="lines", name=t(LEGEND_KEYS[kind]),
+                                 line=dict(color=colour, width=3))])
+    return plane_layout(fig, title, look)
+
+
+def lever_figure(k: Kinetostatics, index: int, title: str, t: Text, look: Look = NORMAL
+                 ) -> RawFigure:
+    """Zhukovsky's lever: the images of the points (velocity plan at ω₂, turned 90°), the
+    members between them, every force at the image of its point and its lever arm about the
+    pole (dashed, the foot of the perpendicular)."""
+    motion = k.motion
+    speed = motion.scene.driver.speed or 1.0
+    images = {n.lower(): complex(1j * p.v[index]) for n, p in motion.points.items()}
+    fig = RawFigure()
+    for number, member in motion.scene.members.items():
+        pts = [images[p.lower()] for p in member.points if p.lower() in images]
+        if len(pts) > 2:
+            pts = pts + pts[:1]
+        fig.add_raw([scatter(x=[z.real for z in pts], y=[z.imag for z in pts], mode="lines",
+                             line=dict(color=path_colour(number), width=2 * look.line),
+                             name=f"{number}", showlegend=False, hoverinfo="skip")])
+    names = sorted(images)
+    fig.add_raw([scatter(x=[images[n].real for n in names], y=[images[n].imag for n in names],
+                         mode="markers+text", text=names, textposition="top right",
+                         showlegend=False, hoverinfo="skip",
+                         marker=dict(size=5 * look.line, color="black"),
+                         textfont=dict(size=look.font + 1)),
+                 scatter(x=[0], y=[0], mode="markers+text", text=["P"], showlegend=False,
+                         textposition="bottom left", hoverinfo="skip",
+                         marker=dict(size=9 * look.line, color="black", symbol="x"))])
+    forces = [(f.name, complex(f.image[index]) * speed, complex(f.force[index])) for f in k.lever]
+    forces = [(n, p, f) for n, p, f in forces if abs(f) > 0]
+    reach = 0.3 * max([abs(z) for z in images.values()] + [1e-12])
+    biggest = max((abs(f) for *_, f in forces), default=1.0)
+    arrows(fig, [p for _, p, _ in forces], [p + f / biggest * reach for _, p, f in forces],
+           [LOAD_COLOURS[_kind(n)] for n, *_ in forces], [html(n) for n, *_ in forces], look)
+    feet_x: list = []
+    feet_y: list = []
+    for _, p, f in forces:  # the foot of the perpendicular from the pole to the force's line
+        d = f / abs(f)
+        foot = p - (np.conj(d) * p).real * d
+        feet_x += [0.0, foot.real, None]
+        feet_y += [0.0, foot.imag, None]
+    fig.add_raw([scatter(x=feet_x, y=feet_y, mode="lines", name=t("forces.lever_arms"),
+                         line=dict(color="#444444", width=1 * look.line, dash="dash"),
+                         hoverinfo="skip")])
+    return plane_layout(fig, title, look, x_title=t("forces.lever_x"), y_title=t("forces.lever_y"))
+
+
+def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marker: float,
+                 title: str, x_title: str, look: Look = NORMAL) -> RawFigure:
+    """Curves over the cycle, each on the left (y) or right (y2) axis, with the chosen
+    instant marked by a vertical line."""
+    fig = RawFigure()
+    for i, (name, values, axis) in enumerate(series):
+        fig.add_raw([scatter(x=x, y=values, mode="lines", name=name, yaxis=axis,
+                             line=dict(color=path_colour(i), width=2.5 * look.line))])
+    fig.add_vline(x=marker, line=dict(color="black", dash="dot", width=1.5 * look.line))
+    fig.update_layout(
+        title=dict(text=title, font=dict(size=look.font + 4)), height=int(look.height * 0.7),
+        font=dict(size=look.font, color="black"), plot_bgcolor="white",
+        margin=dict(l=10, r=10, t=60, b=10),
+        legend=dict(orientation="h", yanchor="top", y=-0.18, x=0.0),
+        xaxis=dict(title=x_title, showgrid=True, gridcolor="#e5e5e5", showline=True,
+                   linecolor="black", mirror=True),
+        yaxis=dict(title=series[0][0], showgrid=True, gridcolor="#e5e5e5", zeroline=True,
+                   zerolinecolor="#999999"),
+        yaxis2=dict(title=series[-1][0], overlaying="y", side="right", showgrid=False))
+    return fig

@@ -1,0 +1,51 @@
+"""Closed vector polygons drawn to scale, head to tail, as the book draws them: the U and V
+polygons of rotor balancing (chapter 7) and the force polygons of kinetostatics (chapter 5)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .linkage import scatter
+from .raw import RawFigure
+from .style import NORMAL, Look, plane_layout
+
+KNOWN = "#1f77b4"
+CLOSING = "#d62728"
+
+
+def arrows(fig: RawFigure, starts: list[complex], ends: list[complex], colours: list[str],
+           labels: list[str], look: Look) -> None:
+    """Arrows as layout annotations (a handful per figure), labelled at their middles."""
+    for a, b, colour, label in zip(starts, ends, colours, labels):
+        fig.add_annotation(x=b.real, y=b.imag, ax=a.real, ay=a.imag, xref="x", yref="y",
+                           axref="x", ayref="y", showarrow=True, arrowhead=3, arrowsize=1.2,
+                           arrowwidth=2 * look.line, arrowcolor=colour, text="")
+        mid = (a + b) / 2
+        fig.add_annotation(x=mid.real, y=mid.imag, text=label, showarrow=False,
+                           font=dict(size=look.font + 1, color=colour), xshift=10, yshift=10)
+
+
+def polygon_figure(known: list[tuple[str, complex]], closing: list[tuple[str, complex]],
+                   scale: float, title: str, legend: tuple[str, str], look: Look = NORMAL,
+                   axes: tuple[str, str] = ("x", "y")) -> RawFigure:
+    """The vectors head to tail in centimetres of drawing at ``scale`` (units per cm): the
+    known ones first (numbered corners as in the book), then those that close the polygon.
+    ``legend`` names the two colours; ``axes`` the drawing's axes."""
+    vectors = known + closing
+    points = np.concatenate([[0j], np.cumsum([v for _, v in vectors])]) / scale
+    fig = RawFigure()
+    fig.add_raw([scatter(x=points.real, y=points.imag, mode="markers+text", showlegend=False,
+                         text=[str(i + 1) if i < len(vectors) else "" for i in range(len(points))],
+                         textposition="bottom left", hoverinfo="skip",
+                         marker=dict(size=5 * look.line, color="black"))])
+    colours = [KNOWN] * len(known) + [CLOSING] * len(closing)
+    arrows(fig, list(points[:-1]), list(points[1:]), colours, [name for name, _ in vectors], look)
+    fig.add_raw([scatter(x=[None], y=[None], mode="lines", name=legend[0],
+                         line=dict(color=KNOWN, width=3)),
+                 scatter(x=[None], y=[None], mode="lines", name=legend[1],
+                         line=dict(color=CLOSING, width=3))])
+    plane_layout(fig, title, look, x_title=f"{axes[0]} [cm]", y_title=f"{axes[1]} [cm]")
+    pad = 0.1 * max(np.ptp(points.real), np.ptp(points.imag), 1.0)
+    fig.update_xaxes(range=[points.real.min() - pad, points.real.max() + pad], dtick=1)
+    fig.update_yaxes(range=[points.imag.min() - pad, points.imag.max() + pad], dtick=1)
+    return fig
