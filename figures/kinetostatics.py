@@ -10,7 +10,7 @@ from solvers.kinetostatics import Kinetostatics
 from .linkage import Text, mechanism_traces, pose, scatter, typical_length
 from .polygon import arrows
 from .raw import RawFigure
-from .style import NORMAL, Look, path_colour, plane_layout
+from .style import NORMAL, Look, member_colour, path_colour, plane_layout
 
 LOAD_COLOURS = {"external": "#d62728", "inertia": "#ff7f0e", "weight": "#7f7f7f"}
 LEGEND_KEYS = {"external": "forces.legend_external", "inertia": "forces.legend_inertia",
@@ -65,7 +65,7 @@ def lever_figure(k: Kinetostatics, index: int, title: str, t: Text, look: Look =
         if len(pts) > 2:
             pts = pts + pts[:1]
         fig.add_raw([scatter(x=[z.real for z in pts], y=[z.imag for z in pts], mode="lines",
-                             line=dict(color=path_colour(number), width=2 * look.line),
+                             line=dict(color=member_colour(number), width=2 * look.line),
                              name=f"{number}", showlegend=False, hoverinfo="skip")])
     names = sorted(images)
     fig.add_raw([scatter(x=[images[n].real for n in names], y=[images[n].imag for n in names],
@@ -102,7 +102,8 @@ def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marke
     fig = RawFigure()
     for i, (name, values, axis) in enumerate(series):
         fig.add_raw([scatter(x=x, y=values, mode="lines", name=name, yaxis=axis,
-                             line=dict(color=path_colour(i), width=2.5 * look.line))])
+                             line=dict(color=path_colour(i), width=(3.5 - i) * look.line,
+                                       dash="dash" if i else "solid"))])
     fig.add_vline(x=marker, line=dict(color="black", dash="dot", width=1.5 * look.line))
     fig.update_layout(
         title=dict(text=title, font=dict(size=look.font + 4)), height=int(look.height * 0.7),

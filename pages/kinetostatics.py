@@ -10,7 +10,7 @@ import numpy as np
 import pandas as pd
 import streamlit as st
 
-from figures.kinetostatics import cycle_figure, lever_figure, loads_figure
+from figures.kinetostatics import cycle_figure, html, lever_figure, loads_figure
 from figures.polygon import polygon_figure
 from figures.style import nice_scale
 from mechanisms.schema import Scene
@@ -184,8 +184,8 @@ if tabs[1].open:
         biggest = max((abs(a.force) for a in actions), default=1.0)
         uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
                              bind="query-params") or nice_scale(biggest / 8)
-        known = [(a.name, a.force) for a in actions if a.known]
-        closing = [(a.name, a.force) for a in actions if not a.known]
+        known = [(html(a.name), a.force) for a in actions if a.known]
+        closing = [(html(a.name), a.force) for a in actions if not a.known]
         chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
                              (t("forces.legend_known"), t("forces.legend_closing")), look()),
               f"{scene.id}-polygon-{choice}", key="fig_polygon")

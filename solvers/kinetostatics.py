@@ -421,11 +421,13 @@ def _lever_forces(scene: Scene, bodies: dict[int, Body], loads, couples, inertia
         else:
             out.append(at(number, inert.huygens_local, inert.relative_force, f"F_i{number}^K"))
     for c in as_couples:
-        body = bodies[c.member]
-        force = 1j * body.rot * c.value  # at a unit step along the member, its opposite at
-        # the member's reference point: together the couple
-        out.append(at(c.member, body.ref + 1.0, force, f"{c.name}'"))
-        out.append(at(c.member, body.ref, -force, f"{c.name}''"))
+        member = scene.members[c.member]
+        p0 = member.points[member.axis[0]]
+        p1 = member.points[member.axis[1]] if len(member.axis) > 1 else p0 + 1.0
+        arm = (p1 - p0) * bodies[c.member].rot
+        force = 1j * arm * c.value / abs(p1 - p0) ** 2  # at p1, its opposite at p0: the couple
+        out.append(at(c.member, p1, force, f"{c.name}'"))
+        out.append(at(c.member, p0, -force, f"{c.name}''"))
     return out
 
 

@@ -1,0 +1,68 @@
+"""The chapter 5 page as a user meets it (AppTest through app.py)."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.test_pages import chart, page
+
+PAGE = "pages/kinetostatics.py"
+
+
+def metrics(at) -> list[str]:
+    return [m.value for m in at.metric]
+
+
+def test_the_lecture_example_shows_three_equal_driving_torques():
+    at = page(PAGE, lang="en")
+    assert not at.exception and not at.error
+    torque = metrics(at)[:3]
+    assert torque[0] == torque[1] == torque[2] and torque[0].startswith("4.53")
+    reactions = at.dataframe[0].value
+    assert set(reactions["F_pq"]) == {"F_12", "F_14", "F_16", "F_23", "F_34", "F_45", "F_56"}
+    labels = [a["text"] for a in chart(at, "fig_loads")["layout"]["annotations"]]
+    assert "F<sub>5</sub> = 100 N" in labels
+
+
+def test_moving_the_crank_and_adding_inertia_change_the_torque():
+    at = page(PAGE, lang="en")
+    before = metrics(at)[0]
+    at.slider(key="at").set_value(200.0).run()
+    moved = metrics(at)[0]
+    assert moved != before
+    at.number_input(key="m5").set_value(3.0).run()
+    assert not at.exception
+    assert metrics(at)[0] != moved
+    assert len(at.dataframe[1].value) == 1  # the inertia table: member 5
+    at.toggle(key="inertia").set_value(False).run()
+    assert metrics(at)[0] == moved  # a mass without inertia or weight changes nothing
+
+
+@pytest.mark.parametrize("tab", [1, 2, 3])
+def test_every_tab_draws(tab):
+    labels = ["Loads and reactions", "Force polygons", "Zhukovsky's lever", "Over the cycle"]
+    at = page(PAGE, lang="en", tab=labels[tab])
+    assert not at.exception and not at.error
+    key = {1: "fig_polygon", 2: "fig_lever", 3: "fig_cycle"}[tab]
+    spec = chart(at, key)
+    assert spec["data"]
+
+
+def test_the_polygon_follows_the_force_scale():
+    at = page(PAGE, lang="en", tab="Force polygons")
+    lengths = at.dataframe[0].value.iloc[:, 2].tolist()
+    at.number_input(key="UF").set_value(20.0).run()
+    halved = at.dataframe[0].value.iloc[:, 2].tolist()
+    assert [float(a) / 2 for a in lengths] == pytest.approx([float(b) for b in halved], abs=6e-3)
+
+
+def test_a_scene_without_loads_says_so():
+    at = page(PAGE, lang="en", scene="zbirka-2.1")
+    assert not at.exception
+    assert any("no loads" in i.value for i in at.info)
+
+
+@pytest.mark.parametrize("lang", ["sr", "sr-cyrl"])
+def test_the_page_speaks_serbian(lang):
+    at = page(PAGE, lang=lang, scene="zbirka-4.2")
+    assert not at.exception and not at.error
