@@ -4,7 +4,8 @@ The book's printed answers carry slips (a swapped digit, a copied angle, a lost 
 the rounding of its intermediate steps. A printed value *agrees* when it matches the exact
 one to within one unit of its last printed digit, is *close* when it is off by less than
 3 % (rounded intermediate values, or a drawing read off to its precision; for angles,
-by at most 2°, a protractor's reading), and *differs* otherwise — most likely a slip, explained where the preset's ``[book_notes]`` can tell.
+by at most 2°, a protractor's reading), and *differs* otherwise — most likely a slip, explained where the preset's ``[book_notes]`` can tell (its ``"*"`` note applies to every
+value without its own: e.g. a layout assumed because the book's figure is missing).
 """
 
 from __future__ import annotations
@@ -56,5 +57,5 @@ def check(scene) -> list[BookRow]:
     for key, book in scene.book.items():
         value = exact.get(key)
         rows.append(BookRow(key, book, value, "missing" if value is None else verdict(key, book, value),
-                            notes.get(key, "")))
+                            notes.get(key, notes.get("*", ""))))
     return rows

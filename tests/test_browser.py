@@ -252,3 +252,20 @@ def test_the_assur_page_draws_the_special_point_and_its_path(app_url, browser, t
     shot = tmp_path / "assur-groups.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
+
+
+def test_the_kinetostatics_page_draws_the_polygon_and_shows_three_equal_torques(app_url, browser,
+                                                                                tmp_path):
+    page = open_page(browser, f"{app_url}/kinetostatics?lang=en", size=(1600, 1100))
+    page.get_by_role("tab", name="Force polygons").click()
+    polygon = ("() => [...document.querySelectorAll('.js-plotly-plot')].flatMap("
+               "p => (p.layout.annotations || []).map(a => a.text))")
+    page.wait_for_function(f"() => ({polygon})().includes('F<sub>45</sub>')", timeout=30_000)
+    values = page.locator("[data-testid='stMetricValue']").all_inner_texts()
+    assert values[0] == values[1] == values[2] and values[0].startswith("4.53")
+    labels = page.evaluate(polygon)
+    assert {"F<sub>5</sub>", "F<sub>45</sub>", "F<sub>16</sub>"} <= set(labels)
+    assert page.locator("[data-testid='stException']").count() == 0
+    shot = tmp_path / "kinetostatics-polygon.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
