@@ -14,8 +14,6 @@ def home() -> None:
         with st.container(border=True):
             st.page_link(chapter.file, label=t(chapter.title), icon=chapter.icon)
             st.write(t(chapter.summary))
-            if not chapter.ready:
-                st.caption(t("app.coming_soon"))
 
 
 st.set_page_config(page_title="Mehanizmi", page_icon=":material/settings:", layout="wide")

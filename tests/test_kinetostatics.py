@@ -196,3 +196,18 @@ def test_cli_forces_json():
 def test_cli_forces_of_a_rotor_is_a_clear_error(capsys):
     assert main(["forces", "zbirka-7.1"]) == 2
     assert "not a linkage" in capsys.readouterr().err
+
+
+def test_a_change_point_is_labelled_not_a_wrong_number():
+    """A parallelogram four-bar folds flat at φ₂ = 0: there neither its motion nor the
+    coupler-rocker dyad's reactions are determined (NaN, with condition ∞ on both); next to
+    it the reactions grow as 1/δ while the three driving torques stay finite and agree."""
+    scene = scenes.fourbar(r2=0.1, r3=0.4, r4=0.1, dx=0.4, dy=0.0)
+    scene = dataclasses.replace(scene, forces=(Force(4, "B", 10.0, 1.0),))
+    k = analyse(scene, np.array([0.0, 1e-6, 1e-3]))
+    assert np.isnan(k.reactions[(3, 4)].force[0]) and np.isinf(k.condition["3-4"][0])
+    assert np.isinf(k.motion.condition[0]) and np.isnan(k.driving_lever[0])
+    assert np.isfinite(k.driving[1:]).all() and abs(k.driving[1] - k.driving[2]) < 1e-2
+    grow = k.reactions[(3, 4)].magnitude[1] / k.reactions[(3, 4)].magnitude[2]
+    assert 900 < grow < 1100
+    assert k.disagreement[1] < 1e-6 and k.disagreement[2] < 1e-9

@@ -15,21 +15,15 @@ class Chapter:
     title: str  # string keys (see locales/)
     summary: str
     icon: str
-    ready: bool = False
 
 
 CHAPTERS = (
-    Chapter("pages/trajectories.py", "ch1.title", "ch1.summary", ":material/timeline:", ready=True),
-    Chapter("pages/velocity_plans.py", "ch2.title", "ch2.summary", ":material/straighten:",
-            ready=True),
-    Chapter("pages/assur_groups.py", "ch4.title", "ch4.summary", ":material/account_tree:",
-            ready=True),
-    Chapter("pages/kinetostatics.py", "ch5.title", "ch5.summary", ":material/balance:",
-            ready=True),
-    Chapter("pages/planetary_gears.py", "ch6.title", "ch6.summary", ":material/settings:",
-            ready=True),
-    Chapter("pages/rotor_balancing.py", "ch7.title", "ch7.summary", ":material/autorenew:",
-            ready=True),
+    Chapter("pages/trajectories.py", "ch1.title", "ch1.summary", ":material/timeline:"),
+    Chapter("pages/velocity_plans.py", "ch2.title", "ch2.summary", ":material/straighten:"),
+    Chapter("pages/assur_groups.py", "ch4.title", "ch4.summary", ":material/account_tree:"),
+    Chapter("pages/kinetostatics.py", "ch5.title", "ch5.summary", ":material/balance:"),
+    Chapter("pages/planetary_gears.py", "ch6.title", "ch6.summary", ":material/settings:"),
+    Chapter("pages/rotor_balancing.py", "ch7.title", "ch7.summary", ":material/autorenew:"),
 )
 
 
@@ -40,13 +34,6 @@ def chapter(file: str) -> Chapter:
 def page_title(file: str) -> None:
     c = chapter(file)
     st.title(f"{c.icon} {t(c.title)}")
-
-
-def coming_soon(file: str) -> None:
-    """The placeholder of a chapter page whose issue is not done yet."""
-    page_title(file)
-    st.write(t(chapter(file).summary))
-    st.info(t("app.coming_soon_page"))
 
 
 def page_for(preset_id: str) -> str:
