@@ -12,13 +12,20 @@ from .polygon import arrows
 from .raw import RawFigure
 from .style import NORMAL, Look, member_colour, path_colour, plane_layout
 
-LOAD_COLOURS = {"external": "#d62728", "inertia": "#ff7f0e", "weight": "#7f7f7f"}
+LOAD_COLOURS = {"external": "#d62728", "inertia": "#ff7f0e", "weight": "#7f7f7f",
+                "reaction": "#1f77b4"}
 LEGEND_KEYS = {"external": "forces.legend_external", "inertia": "forces.legend_inertia",
-               "weight": "forces.legend_weight"}
+               "weight": "forces.legend_weight", "reaction": "forces.legend_reaction"}
 
 
 def _kind(name: str) -> str:
-    return "inertia" if name.startswith(("F_i", "M_i")) else "weight" if name.startswith("G_") else "external"
+    """What a force is, from the course's name: F_i3 inertia, G_3 weight, F_45 (two member
+    numbers) a reaction, anything else an external load."""
+    if name.startswith(("F_i", "M_i")):
+        return "inertia"
+    if name.startswith("G_"):
+        return "weight"
+    return "reaction" if len(name) == 4 and name[2:].isdigit() else "external"
 
 
 def html(name: str) -> str:
@@ -29,15 +36,21 @@ def html(name: str) -> str:
     return text + (f"<sup>{sup}</sup>" if sup else "")
 
 
-def loads_figure(k: Kinetostatics, index: int, title: str, t: Text, look: Look = NORMAL
-                 ) -> RawFigure:
-    """The mechanism at one position with every load as an arrow from its point of action;
-    the longest arrow is a third of a typical link, and each label gives the value."""
+def forces_figure(k: Kinetostatics, index: int, forces: list[tuple[str, complex, complex]],
+                  title: str, t: Text, look: Look = NORMAL,
+                  members: tuple[int, ...] | None = None) -> RawFigure:
+    """The mechanism (or only ``members``: a free body) at one position, with each force
+    (name, point of action, force) as an arrow from its point; the longest arrow is a third
+    of a typical link, and each label gives the value."""
     motion = k.motion
     positions, rotations = pose(motion, index)
+    if members is not None:
+        own = {p for m in members for p in motion.scene.members[m].points}
+        positions = {p: z for p, z in positions.items() if p in own}
+        rotations = {m: r for m, r in rotations.items() if m in members}
     fig = RawFigure()
-    fig.add_raw(mechanism_traces(motion.scene, positions, rotations, t, look))
-    forces = [(ld.name, complex(ld.point[index]), complex(ld.force[index])) for ld in k.loads]
+    traces = mechanism_traces(motion.scene, positions, rotations, t, look)
+    fig.add_raw([tr for tr in traces if len(tr["x"])])  # members off the free body: no points
     biggest = max((abs(f) for *_, f in forces), default=0.0)
     reach = 0.35 * typical_length(motion.scene)
     if biggest > 0:
@@ -96,9 +109,10 @@ def lever_figure(k: Kinetostatics, index: int, title: str, t: Text, look: Look =
 
 
 def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marker: float,
-                 title: str, x_title: str, look: Look = NORMAL) -> RawFigure:
-    """Curves over the cycle, each on the left (y) or right (y2) axis, with the chosen
-    instant marked by a vertical line."""
+                 title: str, x_title: str, look: Look = NORMAL, y_title: str | None = None
+                 ) -> RawFigure:
+    """Curves over the cycle, each on the left (y) or right (y2, only when a curve uses it)
+    axis, with the chosen instant marked by a vertical line."""
     fig = RawFigure()
     for i, (name, values, axis) in enumerate(series):
         fig.add_raw([scatter(x=x, y=values, mode="lines", name=name, yaxis=axis,
@@ -112,7 +126,10 @@ def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marke
         legend=dict(orientation="h", yanchor="top", y=-0.18, x=0.0),
         xaxis=dict(title=x_title, showgrid=True, gridcolor="#e5e5e5", showline=True,
                    linecolor="black", mirror=True),
-        yaxis=dict(title=series[0][0], showgrid=True, gridcolor="#e5e5e5", zeroline=True,
+        yaxis=dict(title=y_title or series[0][0], showgrid=True, gridcolor="#e5e5e5", zeroline=True,
                    zerolinecolor="#999999"),
-        yaxis2=dict(title=series[-1][0], overlaying="y", side="right", showgrid=False))
+    )
+    if any(axis == "y2" for *_, axis in series):
+        fig.update_layout(yaxis2=dict(title=series[-1][0], overlaying="y", side="right",
+                                      showgrid=False))
     return fig

@@ -10,7 +10,7 @@ import numpy as np
 import pandas as pd
 import streamlit as st
 
-from figures.kinetostatics import cycle_figure, html, lever_figure, loads_figure
+from figures.kinetostatics import cycle_figure, forces_figure, html, lever_figure
 from figures.polygon import polygon_figure
 from figures.style import nice_scale
 from mechanisms.schema import Scene
@@ -113,8 +113,18 @@ def inertia_table(k: Kinetostatics, i: int) -> pd.DataFrame:
         rows.append({t("forces.col_member"): n, "|F_i| [N]": num(abs(inert.force[i]), 4),
                      "M_i [N·m]": num(float(inert.moment[i]), 4),
                      "S [m]": f"({num(inert.centre[i].real, 4)}; {num(inert.centre[i].imag, 4)})",
-                     "K [m]": "—" if K is None else f"({num(K.real, 4)}; {num(K.imag, 4)})"})
+                     "K [m]": "—" if K is None else f"({num(K.real, 4)}; {num(K.imag, 4)})",
+                     t("forces.col_huygens_moment"): num(huygens_moment(inert, i), 4)})
     return pd.DataFrame(rows)
+
+
+def huygens_moment(inert, i: int) -> float:
+    """The moment about S of the book's form (−m·a_SB at K): equal to M_i = −J·ε."""
+    if inert.huygens is None:
+        return float(inert.moment[i])
+    arm = complex(inert.huygens[i] - inert.centre[i])
+    f = complex(inert.relative_force[i])
+    return arm.real * f.imag - arm.imag * f.real
 
 
 def driving_metrics(k: Kinetostatics, i: int) -> None:
@@ -160,7 +170,8 @@ rotating = scene.driver.kind == "rotating"
 at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
 if tabs[0].open:
     with tabs[0]:
-        chart(loads_figure(k, now, t("forces.loads_title", at=at_label), t, look()),
+        loads = [(ld.name, complex(ld.point[now]), complex(ld.force[now])) for ld in k.loads]
+        chart(forces_figure(k, now, loads, t("forces.loads_title", at=at_label), t, look()),
               f"{scene.id}-loads", key="fig_loads")
         table = reactions_table(k, now)
         st.subheader(t("forces.reactions"))
@@ -184,6 +195,9 @@ if tabs[1].open:
         biggest = max((abs(a.force) for a in actions), default=1.0)
         uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
                              bind="query-params") or nice_scale(biggest / 8)
+        chart(forces_figure(k, now, [(a.name, a.point, a.force) for a in actions],
+                            t("forces.free_body_title"), t, look(), members=groups[choice]),
+              f"{scene.id}-free-body-{choice}", key="fig_free_body")
         known = [(html(a.name), a.force) for a in actions if a.known]
         closing = [(html(a.name), a.force) for a in actions if not a.known]
         chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
@@ -226,6 +240,11 @@ if tabs[3].open:
                        num(np.nanmax(np.abs(k.driving[:now]), initial=0), 4))
         if not feasible.all():
             st.caption(t("forces.part_cycle", share=num(100 * feasible.mean(), 3)))
+        pairs = [(f"|F_{p}{q}|", r.magnitude[:now], "y") for (p, q), r in sorted(k.reactions.items())
+                 if p < q]
+        chart(cycle_figure(x, pairs, st.session_state["at"], t("forces.reactions_cycle"),
+                           t("plans.phi") if rotating else t("plans.s"), look(), y_title="|F| [N]"),
+              f"{scene.id}-reactions-cycle", key="fig_reactions_cycle")
         with st.expander(t("forces.resolution")):
             st.caption(t("forces.resolution_hint"))
             st.dataframe(pd.DataFrame([{t("forces.col_steps"): r["steps"],

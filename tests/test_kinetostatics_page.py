@@ -30,10 +30,13 @@ def test_moving_the_crank_and_adding_inertia_change_the_torque():
     at.slider(key="at").set_value(200.0).run()
     moved = metrics(at)[0]
     assert moved != before
-    at.number_input(key="m5").set_value(3.0).run()
+    at.number_input(key="m5").set_value(3.0)
+    at.number_input(key="rho5").set_value(0.1).run()
     assert not at.exception
     assert metrics(at)[0] != moved
-    assert len(at.dataframe[1].value) == 1  # the inertia table: member 5
+    inertia = at.dataframe[1].value
+    assert len(inertia) == 1  # member 5
+    assert inertia.iloc[0, 2] == inertia.iloc[0, -1]  # M_i = moment of the K form about S
     at.toggle(key="inertia").set_value(False).run()
     assert metrics(at)[0] == moved  # a mass without inertia or weight changes nothing
 
@@ -43,9 +46,10 @@ def test_every_tab_draws(tab):
     labels = ["Loads and reactions", "Force polygons", "Zhukovsky's lever", "Over the cycle"]
     at = page(PAGE, lang="en", tab=labels[tab])
     assert not at.exception and not at.error
-    key = {1: "fig_polygon", 2: "fig_lever", 3: "fig_cycle"}[tab]
-    spec = chart(at, key)
-    assert spec["data"]
+    keys = {1: ["fig_free_body", "fig_polygon"], 2: ["fig_lever"],
+            3: ["fig_cycle", "fig_reactions_cycle"]}[tab]
+    for key in keys:
+        assert chart(at, key)["data"]
 
 
 def test_the_polygon_follows_the_force_scale():

@@ -60,8 +60,11 @@ def t(key: str, language: str | None = None, **values) -> str:
 
 
 def num(value: float, digits: int = 4, language: str | None = None) -> str:
-    """A number with ``digits`` significant digits and the language's decimal separator."""
+    """A number with ``digits`` significant digits and the language's decimal separator (a
+    value that rounds to zero prints as 0, not −0)."""
     text = f"{value:.{digits}g}"
+    if float(text) == 0:
+        text = "0"
     return text.replace(".", ",") if (language or current()).startswith("sr") else text
 
 
