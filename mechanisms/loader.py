@@ -22,7 +22,7 @@ MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "gravity", "pairs", "frame",
             "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes",
-            "scales", "guess", "special"}
+            "scales", "guess", "special", "layout_assumed"}
 SCALE_KEYS = {"L", "v", "a", "F"}
 TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
@@ -204,6 +204,7 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         scales=_scales(raw, r),
         guess=_guess(raw, r),
         special=_special(raw, r, members),
+        layout_assumed=_flag(raw, r, "layout_assumed"),
     )
     if scene.guess:
         scene = dataclasses.replace(scene, guess_at=driver.at)
@@ -399,13 +400,18 @@ def _tables(raw: dict, r: _Reader, name: str, allowed: set[str]):
         yield where, r.check_keys(spec, allowed, where)
 
 
+def _flag(table: dict, r: _Reader, name: str, where: str = "") -> bool:
+    value = table.get(name, False)
+    if not isinstance(value, bool):
+        raise r.fail(f"{where}.{name}" if where else name, f"must be true or false, got {value!r}")
+    return value
+
+
 def _forces(raw: dict, r: _Reader, members: dict[int, Member], frame: dict) -> tuple[Force, ...]:
     forces = []
     for where, spec in _tables(raw, r, "forces", FORCE_KEYS):
         member = _member_ref(spec.get("member"), r, f"{where}.member", members)
-        follows = spec.get("follows_member", False)
-        if not isinstance(follows, bool):
-            raise r.fail(f"{where}.follows_member", f"must be true or false, got {follows!r}")
+        follows = _flag(spec, r, "follows_member", where)
         point = _point_ref(spec.get("point"), member, r, f"{where}.point", frame, members)
         forces.append(Force(member, point, r.number(spec, "magnitude", where),
                             math.radians(r.number(spec, "angle", where, default=0.0)), follows,

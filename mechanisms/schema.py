@@ -165,20 +165,26 @@ class Scene:
     # lines meet there
     special: dict[str, tuple[int, int]] = field(default_factory=dict)
     guess_at: float | None = None  # the driver value the guess was sketched at (the file's)
+    # the book's figure is missing and the geometry was assumed, not fitted to its values:
+    # a printed value that differs says nothing about a slip
+    layout_assumed: bool = False
 
     def with_loads(self, *, masses: dict[int, float] | None = None,
                    gyrations: dict[int, float] | None = None,
-                   forces: list[float] | None = None, moments: list[float] | None = None,
-                   gravity: float | None = None) -> Scene:
-        """A copy with new masses (kg) and radii of gyration (m) per member, new magnitudes of
-        the external forces (N) and values of the moments (N·m), in the file's order, and g."""
+                   forces: list[float] | None = None, angles: list[float] | None = None,
+                   moments: list[float] | None = None, gravity: float | None = None) -> Scene:
+        """A copy with new masses (kg) and radii of gyration (m) per member, new magnitudes (N)
+        and directions (rad) of the external forces and values of the moments (N·m), in the
+        file's order, and g."""
         members = dict(self.members)
         for number, mass in (masses or {}).items():
             members[number] = dataclasses.replace(members[number], mass=mass)
         for number, rho in (gyrations or {}).items():
             members[number] = dataclasses.replace(members[number], gyration=rho)
-        new_forces = self.forces if forces is None else tuple(
-            dataclasses.replace(f, magnitude=v) for f, v in zip(self.forces, forces))
+        new_forces = tuple(
+            dataclasses.replace(f, magnitude=f.magnitude if forces is None else forces[i],
+                                angle=f.angle if angles is None else angles[i])
+            for i, f in enumerate(self.forces))
         new_moments = self.moments if moments is None else tuple(
             dataclasses.replace(m, value=v) for m, v in zip(self.moments, moments))
         return dataclasses.replace(self, members=members, forces=new_forces, moments=new_moments,

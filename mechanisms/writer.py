@@ -34,6 +34,8 @@ def _identity(scene) -> list[str]:
 
 def to_toml(scene: Scene) -> str:
     out = _identity(scene)
+    if scene.layout_assumed:
+        out.append("layout_assumed = true")
     if scene.gravity:
         out.append(f"gravity = {_n(scene.gravity)}")
     out.append("\npairs = [")

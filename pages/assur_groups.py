@@ -20,6 +20,7 @@ from ui.export import chart, csv_button
 from ui.i18n import num, t, title_of
 from ui.present import look
 from ui.scenes import driver_position, scene_download, scene_picker
+from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
 page_title("pages/assur_groups.py")
@@ -122,3 +123,13 @@ with main:
                                   t("assur.col_error"): f"{r['error_m']:.1e}"}
                                  for r in accuracy(base)])
             st.dataframe(rows, hide_index=True)
+
+with controls:
+    quantities = [Quantity("W", float(degrees_of_freedom(scene)), ""),
+                  Quantity(t("assur.self_groups"), float(len(structure.groups)), "")]
+    for name, p in survey.special.items():
+        z = complex(p.z[CYCLE])
+        if np.isfinite(z):
+            quantities += [Quantity(f"x_{name} [m]", z.real, "m"), Quantity(f"y_{name} [m]", z.imag, "m"),
+                           Quantity(f"v_{name} [m/s]", float(abs(p.v[CYCLE])), "m/s")]
+    answer_box(quantities, key="self")

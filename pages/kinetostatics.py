@@ -14,7 +14,7 @@ from figures.kinetostatics import cycle_figure, forces_figure, html, lever_figur
 from figures.polygon import polygon_figure
 from figures.style import nice_scale
 from mechanisms.schema import Scene
-from solvers.diagnostics import Unsolvable, sweep_values
+from solvers.diagnostics import Unsolvable, format_range, sweep_values
 from solvers.kinetostatics import Kinetostatics, analyse, free_body
 from solvers.report import has_loads
 from solvers.structure import StructureError
@@ -63,7 +63,7 @@ def defaults(base: Scene) -> dict[str, object]:
     for n, m in base.members.items():
         values[f"m{n}"], values[f"rho{n}"] = float(m.mass), float(m.gyration)
     for i, f in enumerate(base.forces):
-        values[f"F{i}"] = float(f.magnitude)
+        values[f"F{i}"], values[f"Fa{i}"] = float(f.magnitude), math.degrees(f.angle)
     for i, mo in enumerate(base.moments):
         values[f"M{i}"] = float(mo.value)
     return values
@@ -74,9 +74,15 @@ def load_inputs(base: Scene, scene: Scene) -> Scene:
     st.toggle(t("forces.inertia"), key="inertia", bind="query-params")
     gravity = st.toggle(t("forces.gravity"), key="gravity", bind="query-params")
     with st.expander(t("forces.loads"), expanded=False):
-        forces = [st.number_input(t("forces.force_input", name=f.label or f"F_{f.member}",
-                                    point=f.point), key=f"F{i}", format="%.4g",
-                                  bind="query-params") for i, f in enumerate(base.forces)]
+        forces, angles = [], []
+        for i, f in enumerate(base.forces):
+            left, right = st.columns([3, 2])
+            forces.append(left.number_input(t("forces.force_input", name=f.label or f"F_{f.member}",
+                                                point=f.point), key=f"F{i}", format="%.4g",
+                                            bind="query-params"))
+            angles.append(math.radians(right.number_input(
+                t("forces.force_angle_follows" if f.follows_member else "forces.force_angle"),
+                key=f"Fa{i}", format="%.4g", bind="query-params")))
         moments = [st.number_input(t("forces.moment_input", member=mo.member), key=f"M{i}",
                                    format="%.4g", bind="query-params")
                    for i, mo in enumerate(base.moments)]
@@ -87,7 +93,8 @@ def load_inputs(base: Scene, scene: Scene) -> Scene:
                                           format="%.4g", bind="query-params")
             rhos[n] = right.number_input(t("forces.rho", member=n), min_value=0.0, key=f"rho{n}",
                                          format="%.4g", bind="query-params")
-    return scene.with_loads(masses=masses, gyrations=rhos, forces=forces, moments=moments,
+    return scene.with_loads(masses=masses, gyrations=rhos, forces=forces, angles=angles,
+                            moments=moments,
                             gravity=(base.gravity or 9.81) if gravity else 0.0)
 
 
@@ -240,6 +247,10 @@ if tabs[3].open:
                        num(np.nanmax(np.abs(k.driving[:now]), initial=0), 4))
         if not feasible.all():
             st.caption(t("forces.part_cycle", share=num(100 * feasible.mean(), 3)))
+        for issue in k.motion.issues:
+            ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
+            if issue.problem == "near-singular":
+                st.warning(t("forces.dead_point", group=issue.group, ranges=ranges))
         pairs = [(f"|F_{p}{q}|", r.magnitude[:now], "y") for (p, q), r in sorted(k.reactions.items())
                  if p < q]
         chart(cycle_figure(x, pairs, st.session_state["at"], t("forces.reactions_cycle"),

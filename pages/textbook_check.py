@@ -38,8 +38,8 @@ st.title(f":material/fact_check: {t('check.title')}")
 st.write(t("check.intro"))
 checks = all_checks()
 everything = [row for rows in checks.values() if isinstance(rows, list) for row in rows]
-cols = st.columns(3)
-for col, verdict in zip(cols, ("agrees", "close", "differs")):
+cols = st.columns(4)
+for col, verdict in zip(cols, ("agrees", "close", "differs", "layout")):
     col.metric(t(VERDICTS[verdict]), sum(r.verdict == verdict for r in everything))
 
 table = []

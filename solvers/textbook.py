@@ -4,8 +4,9 @@ The book's printed answers carry slips (a swapped digit, a copied angle, a lost 
 the rounding of its intermediate steps. A printed value *agrees* when it matches the exact
 one to within one unit of its last printed digit, is *close* when it is off by less than
 3 % (rounded intermediate values, or a drawing read off to its precision; for angles,
-by at most 2°, a protractor's reading), and *differs* otherwise — most likely a slip, explained where the preset's ``[book_notes]`` can tell (its ``"*"`` note applies to every
-value without its own: e.g. a layout assumed because the book's figure is missing).
+by at most 2°, a protractor's reading), and *differs* otherwise — most likely a slip, explained where the preset's ``[book_notes]`` can tell. A preset whose figure is missing and
+whose layout is assumed (``layout_assumed``) says *layout* instead of *differs*: its
+printed values belong to a geometry nobody can see.
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ class BookRow:
     key: str  # e.g. "members.4.omega"
     book: float
     exact: float | None  # None when the scene does not produce that value
-    verdict: str  # "agrees", "close", "differs" or "missing"
+    verdict: str  # "agrees", "close", "differs", "layout" or "missing"
     note: str = ""
 
     @property
@@ -56,6 +57,8 @@ def check(scene) -> list[BookRow]:
     rows = []
     for key, book in scene.book.items():
         value = exact.get(key)
-        rows.append(BookRow(key, book, value, "missing" if value is None else verdict(key, book, value),
-                            notes.get(key, notes.get("*", ""))))
+        found = "missing" if value is None else verdict(key, book, value)
+        if found == "differs" and getattr(scene, "layout_assumed", False):
+            found = "layout"
+        rows.append(BookRow(key, book, value, found, notes.get(key, "")))
     return rows

@@ -50,3 +50,13 @@ def test_the_plans_page_sends_a_class_iii_scene_here():
     at = page("pages/velocity_plans.py", lang="en", scene="zbirka-4.3")
     assert not at.exception
     assert any("class III" in i.value for i in at.info)
+
+
+def test_check_my_answer_grades_the_degrees_of_freedom_and_s():
+    at = page(PAGE, lang="en", scene="triad-full-turn")
+    at.text_input(key="self_value").input("1").run()  # W
+    assert any("Correct" in s.value for s in at.success)
+    labels = at.selectbox(key="self_quantity").options
+    assert "x_S [m]" in labels
+    at.text_input(key="self_value").input("2").run()
+    assert any("Off by 100" in w.value for w in at.warning)

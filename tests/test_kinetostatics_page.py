@@ -70,3 +70,27 @@ def test_a_scene_without_loads_says_so():
 def test_the_page_speaks_serbian(lang):
     at = page(PAGE, lang=lang, scene="zbirka-4.2")
     assert not at.exception and not at.error
+
+
+def test_check_my_answer_grades_the_driving_torque():
+    at = page(PAGE, lang="en")
+    at.text_input(key="self_value").input("4,535").run()  # M_p of the lecture example
+    assert any("Correct" in s.value for s in at.success)
+    at.text_input(key="self_value").input("4,9").run()
+    assert any("Off by" in w.value for w in at.warning)
+
+
+def test_a_dead_point_of_a_class_iii_group_is_explained_over_the_cycle():
+    at = page(PAGE, lang="en", scene="triad-full-turn", tab="Over the cycle", steps=3600, m4=1.0)
+    assert not at.exception
+    assert any("dead point" in w.value for w in at.warning)
+
+
+def test_turning_the_load_changes_the_torque_as_the_power_says():
+    """F_5 turned to point along −x reverses its power, so M_p changes sign when F_5 is the
+    only load (M_4 set to zero)."""
+    at = page(PAGE, lang="en", M0=0.0)
+    ahead = float(at.metric[0].value.split()[0])
+    at.number_input(key="Fa0").set_value(180.0).run()
+    assert not at.exception
+    assert float(at.metric[0].value.split()[0]) == pytest.approx(-ahead, rel=1e-4)

@@ -90,7 +90,9 @@ def test_scaling_lengths_scales_velocities_and_accelerations(scene, phi, k):
         tol = 1e-9 * k * size(scene) * motion.condition[0]
         assert abs(q.z[0] - k * p.z[0]) <= tol
         assert abs(q.v[0] - k * p.v[0]) <= tol * abs(scene.driver.speed)
-        assert abs(q.a[0] - k * p.a[0]) <= tol * scene.driver.speed ** 2 * motion.condition[0]
+        # near a limit position the accelerations are huge (1e8 m/s²): rounding is relative
+        assert abs(q.a[0] - k * p.a[0]) <= (tol * scene.driver.speed ** 2 * motion.condition[0]
+                                            + 1e-9 * abs(k * p.a[0]))
 
 
 @SETTINGS

@@ -8,7 +8,7 @@ from solvers.textbook import BookRow
 from ui.i18n import num, t
 
 VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs",
-            "missing": "check.missing"}
+            "layout": "check.layout", "missing": "check.missing"}
 
 
 def book_table(rows: list[BookRow]) -> pd.DataFrame:
