@@ -4,14 +4,13 @@
     .venv/bin/python bench/kinematics.py --write   # and regenerate docs/performance.md
 """
 
-import platform
 import sys
-from datetime import date
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from bench.publish import publish  # noqa: E402
 from mechanisms import load_preset  # noqa: E402
 from solvers.bench import measure  # noqa: E402
 
@@ -35,11 +34,4 @@ def table() -> str:
 
 
 if __name__ == "__main__":
-    text = table()
-    print(text)
-    if "--write" in sys.argv:
-        doc = ROOT / "docs" / "performance.md"
-        head, _, _ = doc.read_text().partition("<!-- kinematics table -->")
-        doc.write_text(f"{head}<!-- kinematics table -->\n"
-                       f"Measured {date.today()} on {platform.machine()}, Python "
-                       f"{platform.python_version()}, median of 300 runs:\n\n{text}\n")
+    publish(table(), '<!-- kinematics table -->', 300)

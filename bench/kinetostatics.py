@@ -9,10 +9,8 @@ to the size of the load terms, over the cycle.
 """
 
 import dataclasses
-import platform
 import sys
 import time
-from datetime import date
 from pathlib import Path
 
 import numpy as np
@@ -20,6 +18,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from bench.publish import publish  # noqa: E402
 from mechanisms import load_preset  # noqa: E402
 from solvers.diagnostics import sweep_values  # noqa: E402
 from solvers.kinetostatics import analyse  # noqa: E402
@@ -67,11 +66,4 @@ def table() -> str:
 
 
 if __name__ == "__main__":
-    text = table()
-    print(text)
-    if "--write" in sys.argv:
-        doc = ROOT / "docs" / "performance.md"
-        head, _, rest = doc.read_text().partition(MARK)
-        _, _, tail = rest.partition(MARK)
-        doc.write_text(f"{head}{MARK}\nMeasured {date.today()} on {platform.machine()}, Python "
-                       f"{platform.python_version()}, median of 20 runs:\n\n{text}\n{MARK}{tail}")
+    publish(table(), MARK, 20)
