@@ -15,41 +15,57 @@ from ui.i18n import num, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
+from ui.url import seed, table_to_url, url_table
 
 page_title("pages/planetary_gears.py")
 
 controls, main = st.columns([1, 3], gap="large")
 
+def defaults(base: GearTrain) -> dict[str, object]:
+    """Each input's ω (or peripheral v), and drawing scales that fit the train on ~8 cm."""
+    reach = max(r for m in base.meshes for r in m.radii)
+    fastest = max((abs(i.omega) for i in base.inputs), default=1.0) * reach
+    values: dict[str, object] = {f"in{i.member}": i.omega if i.velocity is None else i.velocity
+                                 for i in base.inputs}
+    values.update(UL=nice_scale(reach / 8), Uv=nice_scale(fastest / 8), H=2.0)
+    return values
+
+
+def meshes_table(base: GearTrain) -> pd.DataFrame:
+    return pd.DataFrame([{"a": m.members[0], "b": m.members[1], "R_a [m]": m.radii[0],
+                          "R_b [m]": m.radii[1], "ring": m.internal or 0} for m in base.meshes])
+
+
 with controls:
     base = scene_picker("gears")
+    seed(defaults(base), st.session_state["scene"])
     inputs = []
     for inp in base.inputs:
         if inp.velocity is None:
-            omega = st.number_input(t("gears.input_omega", member=inp.member), value=inp.omega,
-                                    key=f"in{inp.member}-{base.id}", format="%.4g")
+            omega = st.number_input(t("gears.input_omega", member=inp.member),
+                                    key=f"in{inp.member}", format="%.4g", bind="query-params")
             inputs.append(Input(inp.member, omega))
         else:
             v = st.number_input(t("gears.input_velocity", member=inp.member, radius=num(inp.radius)),
-                                value=inp.velocity, key=f"in{inp.member}-{base.id}", format="%.4g")
+                                key=f"in{inp.member}", format="%.4g", bind="query-params")
             inputs.append(Input(inp.member, v / inp.radius, v, inp.radius))
-    reach = max(r for m in base.meshes for r in m.radii)
-    u_l = st.number_input(t("gears.scale_length"), min_value=1e-6, value=nice_scale(reach / 8),
-                          key=f"UL-{base.id}", format="%.4g")
-    fastest = max((abs(i.omega) for i in base.inputs), default=1.0) * reach
-    u_v = st.number_input(t("gears.scale_velocity"), min_value=1e-6, value=nice_scale(fastest / 8),
-                          key=f"Uv-{base.id}", format="%.4g")
-    h = st.number_input(t("gears.pole_distance"), min_value=0.1, value=2.0, key=f"H-{base.id}",
-                        format="%.3g")
+    u_l = st.number_input(t("gears.scale_length"), min_value=1e-6, key="UL", format="%.4g",
+                          bind="query-params")
+    u_v = st.number_input(t("gears.scale_velocity"), min_value=1e-6, key="Uv", format="%.4g",
+                          bind="query-params")
+    h = st.number_input(t("gears.pole_distance"), min_value=0.1, key="H", format="%.3g",
+                        bind="query-params")
     pole = h * u_l  # the pole's distance below the axis, in metres of the drawing's scale
 
 with main:
     st.markdown(f"**{t('gears.meshes')}**")
-    table = st.data_editor(pd.DataFrame([
-        {"a": m.members[0], "b": m.members[1], "R_a [m]": m.radii[0], "R_b [m]": m.radii[1],
-         t("gears.ring"): m.internal or 0} for m in base.meshes]),
-        key=f"meshes-{base.id}", width="stretch", disabled=["a", "b"])
+    own = meshes_table(base)
+    table = st.data_editor(url_table("meshes", own, base.id), key=f"meshes-{base.id}",
+                           width="stretch", disabled=["a", "b"],
+                           column_config={"ring": st.column_config.NumberColumn(t("gears.ring"))})
+    table_to_url("meshes", table, own)
     meshes = tuple(Mesh((int(r["a"]), int(r["b"])), (float(r["R_a [m]"]), float(r["R_b [m]"])),
-                        int(r[t("gears.ring")]) or None, old.bevel)
+                        int(r["ring"]) or None, old.bevel)
                    for (_, r), old in zip(table.iterrows(), base.meshes))
     train: GearTrain = base.with_(inputs=tuple(inputs), meshes=meshes)
     for note in geometry_notes(train):

@@ -18,7 +18,7 @@ from ui.i18n import num, scaled_title, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
-from ui.url import seed, url_choice
+from ui.url import seed, table_to_url, url_choice, url_table
 
 def legend() -> tuple[str, str]:
     return t("rotor.fig_known"), t("rotor.fig_corrections")
@@ -88,8 +88,10 @@ with controls:
 
 with main:
     st.markdown(f"**{t('rotor.masses')}**")
-    table = st.data_editor(table_of(base), num_rows="dynamic", key=f"masses-{base.id}",
-                           width="stretch")
+    own = table_of(base)
+    table = st.data_editor(url_table("masses", own, base.id, rows_fixed=False), num_rows="dynamic",
+                           key=f"masses-{base.id}", width="stretch")
+    table_to_url("masses", table, own)
     rotor = rotor_from_inputs(base, table)
     try:
         result = balance(rotor)

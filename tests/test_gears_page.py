@@ -4,7 +4,7 @@ import pytest
 
 from mechanisms import preset_ids
 
-from .test_pages import page
+from .test_pages import linked, page
 
 
 @pytest.mark.parametrize("pid", preset_ids("gears"))
@@ -18,7 +18,7 @@ def test_every_train_draws_its_views(pid, tab):
 def test_doubling_the_input_doubles_every_speed():
     at = page("pages/planetary_gears.py", lang="en", scene="zbirka-6.8")
     before = at.dataframe[1].value
-    at.number_input(key="in5-zbirka-6.8").set_value(200.0).run()
+    at.number_input(key="in5").set_value(200.0).run()
     after = at.dataframe[1].value
     for b, a in zip(before["ω [s⁻¹]"], after["ω [s⁻¹]"]):
         assert float(a) == pytest.approx(2 * float(b), rel=1e-4)
@@ -33,9 +33,29 @@ def test_angular_velocities_are_read_off_the_pole_rays_as_in_the_book():
     """U_ω = U_v/(H·U_L): with 0.1 m/cm, 1 m/s per cm and H = 2 cm, 5 s⁻¹ per cm of intercept."""
     at = page("pages/planetary_gears.py", lang="en", scene="zbirka-6.8",
               tab="Velocity diagram (Kutzbach)")
-    at.number_input(key="UL-zbirka-6.8").set_value(0.1).run()
-    at.number_input(key="Uv-zbirka-6.8").set_value(1.0).run()
-    at.number_input(key="H-zbirka-6.8").set_value(2.0).run()
+    at.number_input(key="UL").set_value(0.1).run()
+    at.number_input(key="Uv").set_value(1.0).run()
+    at.number_input(key="H").set_value(2.0).run()
     table = next(d.value for d in at.dataframe if "intercept x [cm]" in d.value.columns)
     carrier = table[table["member"] == 5].iloc[0]
     assert float(carrier["intercept x [cm]"]) == pytest.approx(100.0 / 5.0)
+
+
+def test_a_link_carries_the_edited_meshes_and_inputs():
+    """Doubling every first radius in the link's table and ω₅ changes the speeds as the
+    Willis equations of the edited train say; the link keeps both."""
+    own = linked("pages/planetary_gears.py", scene="zbirka-6.8", lang="en")
+    rows = "6,7,0.03,0.025,0;4,3,0.02,0.05,3;2,8,0.12,0.01,0;9,10,0.05,0.045,0"
+    at = linked("pages/planetary_gears.py", scene="zbirka-6.8", lang="en", meshes=rows, in5=200)
+    assert not at.exception
+    speeds = at.dataframe[1].value.set_index("member")["ω [s⁻¹]"].astype(float)
+    before = own.dataframe[1].value.set_index("member")["ω [s⁻¹]"].astype(float)
+    assert speeds.iloc[3] == pytest.approx(2 * before.iloc[3])  # the carrier: ω₅ doubled
+    assert speeds.iloc[2] != pytest.approx(2 * before.iloc[2])  # planet 4: radii changed too
+    assert at.query_params["meshes"] == rows
+    assert "meshes" not in own.query_params  # the scene's own table keeps the link short
+
+
+def test_a_broken_table_in_a_link_falls_back_to_the_scene():
+    at = linked("pages/planetary_gears.py", scene="zbirka-6.8", lang="en", meshes="1,x;2")
+    assert not at.exception and not at.error

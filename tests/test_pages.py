@@ -71,3 +71,11 @@ def test_every_preset_that_quotes_the_book_is_on_the_textbook_check_page():
         assert pid in headings
     rows = sum(len(d.value) for d in at.dataframe)
     assert rows == sum(len(load_preset(pid).book) for pid in quoting)
+
+
+def linked(path: str, **params) -> AppTest:
+    """Open a page from a shared link: ``params`` are the link's query parameters."""
+    at = AppTest.from_file(str(ROOT / path), default_timeout=60)
+    at.query_params.update({k: str(v) for k, v in params.items()})
+    at.run()
+    return at

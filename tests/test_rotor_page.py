@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from .test_pages import page
+from .test_pages import linked, page
 
 
 def rotor_page(**state):
@@ -73,3 +73,14 @@ def test_a_student_checks_a_graphical_answer():
     assert "Off by" in at.warning[-1].value
     at.text_input(key="self_value").input("abc").run()
     assert "not a number" in at.error[-1].value
+
+
+def test_a_link_carries_the_mass_table():
+    """A link with a third mass in its table balances that rotor, not the book's."""
+    own = linked("pages/rotor_balancing.py", scene="zbirka-7.1", lang="en")
+    rows = own.dataframe[0].value.to_numpy().tolist() + [[0.2, 100.0, 45.0, 150.0]]
+    text = ";".join(",".join(f"{v:g}" for v in row) for row in rows)
+    at = linked("pages/rotor_balancing.py", scene="zbirka-7.1", lang="en", masses=text)
+    assert not at.exception
+    assert len(at.dataframe[0].value) == len(rows)
+    assert exact(at, "I", "mass") != pytest.approx(exact(own, "I", "mass"))

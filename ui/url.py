@@ -2,13 +2,15 @@
 
 Streamlit's own ``bind="query-params"`` keeps a choice's *displayed label* in the URL, which
 would put translated text and long titles in shared links, and a link would break when
-the language changes. These choices keep the option itself instead.
+the language changes. These choices keep the option itself instead. Tables (a data
+editor's rows) travel as compact rows of numbers.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+import pandas as pd
 import streamlit as st
 
 
@@ -37,3 +39,35 @@ def seed(defaults: dict[str, object], scene: str) -> None:
     for key, value in defaults.items():
         if changed or (key not in st.session_state and key not in st.query_params):
             st.session_state[key] = value
+
+
+def url_table(key: str, default: pd.DataFrame, scene: str, rows_fixed: bool = True) -> pd.DataFrame:
+    """The table an ``st.data_editor`` starts from: the one in the link (``?key=1,2;3,4`` —
+    rows of numbers, columns as in ``default``) when the page opens and it fits, else
+    ``default``. It is then kept until the scene changes, because the editor stores its
+    edits relative to it."""
+    memo = f"_{key}_start"
+    first = memo not in st.session_state
+    if first or st.session_state[memo][0] != scene:
+        start = default
+        text = st.query_params.get(key) if first else None
+        if text:
+            try:
+                rows = [[float(v) for v in row.split(",")] for row in text.split(";")]
+                table = pd.DataFrame(rows, columns=default.columns).astype(default.dtypes)
+                if not rows_fixed or len(table) == len(default):
+                    start = table
+            except ValueError:  # a hand-edited link: keep the scene's own table
+                pass
+        st.session_state[memo] = (scene, start)
+    return st.session_state[memo][1]
+
+
+def table_to_url(key: str, table: pd.DataFrame, default: pd.DataFrame) -> None:
+    """Put the edited table into the link, or take it out when it is the scene's own."""
+    rows = table.dropna()
+    if rows.shape == default.shape and (rows.to_numpy(dtype=float) == default.to_numpy(dtype=float)).all():
+        st.query_params.pop(key, None)
+        return
+    st.query_params[key] = ";".join(",".join(f"{float(v):.10g}" for v in row)
+                                    for row in rows.itertuples(index=False))
