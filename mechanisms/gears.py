@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 from .loader import SceneError, _Reader, identity
 
-TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "members", "meshes", "shafts",
+TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "members", "meshes", "shafts",
             "fixed", "inputs", "points", "book", "book_notes"}
 MEMBER_KEYS = {"label", "carrier", "axis", "x"}
 MESH_KEYS = {"members", "radii", "teeth", "module", "internal", "bevel"}
@@ -64,6 +64,8 @@ class GearTrain:
     book: dict[str, float] = field(default_factory=dict)
     book_notes: dict[str, str] = field(default_factory=dict)
     title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
+    note_sr: str = ""  # the note and the source in Serbian (Latin), likewise
+    source_sr: str = ""
 
     def with_(self, **changes) -> GearTrain:
         return dataclasses.replace(self, **changes)

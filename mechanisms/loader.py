@@ -20,7 +20,7 @@ from .schema import DRIVER, FRAME, Driver, Force, Member, Moment, Pair, Scene, T
 PRESETS = Path(__file__).parent / "presets"
 MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before parsing
 
-TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "gravity", "pairs", "frame",
+TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "pairs", "frame",
             "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes",
             "scales", "guess", "special", "layout_assumed"}
 SCALE_KEYS = {"L", "v", "a", "F"}
@@ -476,6 +476,8 @@ def identity(raw: dict, r: _Reader, default_id: str) -> dict:
                 title_sr=r.text(raw, "title_sr", "", default=""),
                 source=r.text(raw, "source", "", default=""),
                 note=r.text(raw, "note", "", default=""),
+                note_sr=r.text(raw, "note_sr", "", default=""),
+                source_sr=r.text(raw, "source_sr", "", default=""),
                 book={k: r.number(book, k, "book") for k in book},
                 book_notes={k: r.text(notes, k, "book_notes") for k in notes})
 

@@ -15,7 +15,7 @@ from .loader import SceneError, _Reader, identity
 
 PLANES = ("I", "II")
 QUANTITIES = ("mass", "radius", "angle")
-TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "omega", "mode", "planes",
+TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "omega", "mode", "planes",
             "masses", "corrections", "bearings", "book", "book_notes"}
 
 
@@ -55,6 +55,8 @@ class Rotor:
     book: dict[str, float] = field(default_factory=dict)
     book_notes: dict[str, str] = field(default_factory=dict)
     title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
+    note_sr: str = ""  # the note and the source in Serbian (Latin), likewise
+    source_sr: str = ""
 
     def with_(self, **changes) -> Rotor:
         return dataclasses.replace(self, **changes)

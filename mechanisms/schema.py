@@ -156,6 +156,8 @@ class Scene:
     travel: Travel | None = None
     book_notes: dict[str, str] = field(default_factory=dict)  # why a printed value is off
     title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
+    note_sr: str = ""  # the note and the source in Serbian (Latin), likewise
+    source_sr: str = ""
     # the book's drawing scales per cm of drawing: L in m, v in m/s, a in m/s², F in N
     scales: dict[str, float] = field(default_factory=dict)
     # where the drawing puts some points at the scene's instant: picks a class III group's

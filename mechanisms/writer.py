@@ -28,8 +28,11 @@ def _v(z: complex) -> str:
 
 def _identity(scene) -> list[str]:
     """The top-level keys every kind of scene shares."""
-    return [f"id = {_s(scene.id)}", f"title = {_s(scene.title)}", f"title_sr = {_s(scene.title_sr)}",
-            f"source = {_s(scene.source)}", f"note = {_s(scene.note)}"]
+    out = [f"id = {_s(scene.id)}", f"title = {_s(scene.title)}", f"title_sr = {_s(scene.title_sr)}",
+           f"source = {_s(scene.source)}", f"note = {_s(scene.note)}"]
+    out += [f"{key} = {_s(getattr(scene, key))}" for key in ("source_sr", "note_sr")
+            if getattr(scene, key)]
+    return out
 
 
 def to_toml(scene: Scene) -> str:

@@ -5,6 +5,7 @@ from pathlib import Path
 
 import pytest
 
+from mechanisms import load_preset, preset_ids
 from ui.i18n import LANGUAGES, num, parse_number, t, table
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -85,3 +86,16 @@ def test_point_letters_in_serbian_titles_are_marked_as_notation():
     for pid in preset_ids():
         title = re.sub(r"⟨[^⟩]*⟩", "", load_preset(pid).title_sr)
         assert not re.search(r"\b[A-Z]{1,4}\d*\b", title), (pid, title)
+
+
+NOTATION = re.compile(r"[A-Z]{1,4}['′₀-₉0-9]*[.,;:)]?|[A-Za-z]+[₀-₉]+[.,;:)]?")
+
+
+def test_serbian_preset_texts_keep_their_notation_latin():
+    """Every preset has its note and source in Serbian, and the letters of points, members
+    and quantities (AB, S₃, m₃) sit in ⟨⟩ so Cyrillic leaves them as the course writes them."""
+    for pid in preset_ids():
+        scene = load_preset(pid)
+        assert scene.note_sr and scene.source_sr, pid
+        for word in re.findall(r"[^\s⟨⟩(]+", KEEP_OUT.sub("", scene.note_sr + " " + scene.title_sr)):
+            assert not NOTATION.fullmatch(word), (pid, word)

@@ -82,12 +82,26 @@ def language_picker() -> str:
                       label_visibility="collapsed")
 
 
-def title_of(scene) -> str:
-    """A scene's title in the current language (Serbian titles are data in the presets)."""
+def _in_language(scene, field: str) -> str:
+    """A scene's text field in the current language: its Serbian version (data in the preset,
+    notation in ⟨⟩ kept Latin) for sr and sr-cyrl, else the English one."""
     language = current()
-    if not language.startswith("sr") or not scene.title_sr:
-        return scene.title
-    return KEEP.sub(r"\1", _to_cyrillic(scene.title_sr) if language == "sr-cyrl" else scene.title_sr)
+    serbian = getattr(scene, f"{field}_sr", "")
+    if not language.startswith("sr") or not serbian:
+        return getattr(scene, field)
+    return KEEP.sub(r"\1", _to_cyrillic(serbian) if language == "sr-cyrl" else serbian)
+
+
+def title_of(scene) -> str:
+    return _in_language(scene, "title")
+
+
+def note_of(scene) -> str:
+    return _in_language(scene, "note")
+
+
+def source_of(scene) -> str:
+    return _in_language(scene, "source")
 
 
 def scaled_title(title: str, scale: float, unit: str) -> str:

@@ -11,7 +11,7 @@ from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
 from mechanisms.writer import gears_to_toml, rotor_to_toml, to_toml
 from ui.cache import preset
-from ui.i18n import t, title_of
+from ui.i18n import note_of, source_of, t, title_of
 from ui.url import url_choice
 
 UPLOADED = "upload"
@@ -53,8 +53,8 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
                         format_func=label)
     scene = uploaded if choice == UPLOADED else preset(choice)
     with st.expander(t("scene.about")):
-        st.caption(scene.source)
-        st.write(scene.note)
+        st.caption(source_of(scene))
+        st.write(note_of(scene))
         st.file_uploader(t("scene.upload"), type=["toml"], key="upload_file", on_change=_read_upload,
                          args=(kind,))
         if st.session_state.get("upload_error"):
