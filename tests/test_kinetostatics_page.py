@@ -94,3 +94,10 @@ def test_turning_the_load_changes_the_torque_as_the_power_says():
     at.number_input(key="Fa0").set_value(180.0).run()
     assert not at.exception
     assert float(at.metric[0].value.split()[0]) == pytest.approx(-ahead, rel=1e-4)
+
+
+def test_the_scene_note_reads_in_serbian_cyrillic_with_latin_notation():
+    at = page(PAGE, lang="sr-cyrl")
+    note = next(m.value for m in at.markdown if "F₅ = 100 N" in m.value)
+    assert "Криваја" in note  # prose transliterated …
+    assert "OA" in note and "⟨" not in note  # … notation kept as the course writes it
