@@ -16,6 +16,7 @@ from solvers.kinematics import Motion
 from solvers.plans import POLE, Arrow, Plan, Plans
 
 from .linkage import Text, mechanism_traces, pose
+from .paper import PaperArrow, PaperLabel, bounds, true_scale_svg
 from .style import NORMAL, Look, plane_layout
 
 SUPERSCRIPT = {"n": "ⁿ", "t": "ᵗ", "k": "ᵏ", "r": "ʳ"}
@@ -112,12 +113,6 @@ def _merged(labels: dict[str, complex]) -> dict[tuple[str, ...], complex]:
     return {tuple(sorted(names, key=lambda n: n != POLE)): complex(*xy) for xy, names in groups.items()}
 
 
-def _bounds(points: list[complex], pad: float = 1.0) -> tuple[float, float, float, float]:
-    xs = [p.real for p in points] or [0.0]
-    ys = [p.imag for p in points] or [0.0]
-    return min(xs) - pad, max(xs) + 2.5 * pad, min(ys) - pad, max(ys) + pad  # labels sit right
-
-
 def _visible(d: Drawn) -> bool:
     return abs(d.head - d.tail) > 1e-9
 
@@ -160,7 +155,7 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
                                    for names in places],
         textposition="top right", hoverinfo="skip", showlegend=False,
         textfont=dict(size=look.font + 2), marker=dict(size=5 * look.line, color="black")))
-    x0, x1, y0, y1 = _bounds(list(drawing.labels.values()))
+    x0, x1, y0, y1 = bounds(list(drawing.labels.values()))
     fig.update_layout(annotations=annotations, title=dict(text=title, font=dict(size=look.font + 4)),
                       height=look.height, margin=dict(l=10, r=10, t=60, b=10),
                       plot_bgcolor="white", font=dict(size=look.font, color="black"),
@@ -174,41 +169,10 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
 
 
 def plan_svg(drawing: PlanDrawing, caption: str) -> str:
-    """The whole plan as SVG at true scale (1 cm of plan = 1 cm of paper when printed at
-    100 %), with a 1-cm grid and the scale written under it."""
-    x0, x1, y0, y1 = _bounds(list(drawing.labels.values()))
-    w, h = x1 - x0, y1 - y0 + 1.0  # one extra cm for the caption
-
-    def xy(z: complex) -> tuple[float, float]:
-        return z.real - x0, y1 - z.imag
-
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3f}cm" height="{h:.3f}cm" '
-           f'viewBox="0 0 {w:.3f} {h:.3f}" font-family="sans-serif">',
-           '<defs>' + "".join(
-               f'<marker id="{k}" viewBox="0 0 10 10" refX="10" refY="5" markerWidth="0.35" '
-               f'markerHeight="0.35" markerUnits="userSpaceOnUse" orient="auto">'
-               f'<path d="M0,0 L10,5 L0,10 z" fill="{c}"/></marker>'
-               for k, c in KIND_COLOURS.items()) + '</defs>']
-    for gx in range(int(w) + 1):
-        out.append(f'<line x1="{gx}" y1="0" x2="{gx}" y2="{h - 1:.3f}" stroke="#ddd" stroke-width="0.01"/>')
-    for gy in range(int(h - 1) + 1):
-        out.append(f'<line x1="0" y1="{gy}" x2="{w:.3f}" y2="{gy}" stroke="#ddd" stroke-width="0.01"/>')
-    for d in drawing.arrows:
-        if not _visible(d):
-            continue
-        (ax, ay), (bx, by) = xy(d.tail), xy(d.head)
-        colour = KIND_COLOURS[d.arrow.kind]
-        out.append(f'<line x1="{ax:.4f}" y1="{ay:.4f}" x2="{bx:.4f}" y2="{by:.4f}" '
-                   f'stroke="{colour}" stroke-width="0.03" marker-end="url(#{d.arrow.kind})"/>')
-    for names, z in _merged(drawing.labels).items():
-        px, py = xy(z)
-        text = " ≡ ".join("P" if n == POLE else re.sub(
-            r"(\d+)$", r'<tspan font-size="0.2" baseline-shift="sub">\1</tspan>', n) for n in names)
-        out.append(f'<circle cx="{px:.4f}" cy="{py:.4f}" r="0.04"/>'
-                   f'<text x="{px + 0.08:.4f}" y="{py - 0.08:.4f}" font-size="0.3">{text}</text>')
-    out.append(f'<text x="0.2" y="{h - 0.35:.3f}" font-size="0.3">{_escape(caption)}</text></svg>')
-    return "\n".join(out)
-
-
-def _escape(text: str) -> str:
-    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+    """The whole plan as SVG at true scale (see figures.paper)."""
+    arrows = [PaperArrow(d.tail, d.head, KIND_COLOURS[d.arrow.kind])
+              for d in drawing.arrows if _visible(d)]
+    labels = [PaperLabel(" ≡ ".join("P" if n == POLE else re.sub(
+        r"(\d+)$", r'<tspan font-size="0.2" baseline-shift="sub">\1</tspan>', n) for n in names), z)
+              for names, z in _merged(drawing.labels).items()]
+    return true_scale_svg(arrows, labels, caption)

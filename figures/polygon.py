@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from .linkage import scatter
+from .paper import PaperArrow, PaperLabel, subscripts, true_scale_svg
 from .raw import RawFigure
 from .style import NORMAL, Look, plane_layout
 
@@ -32,7 +33,7 @@ def polygon_figure(known: list[tuple[str, complex]], closing: list[tuple[str, co
     known ones first (numbered corners as in the book), then those that close the polygon.
     ``legend`` names the two colours; ``axes`` the drawing's axes."""
     vectors = known + closing
-    points = np.concatenate([[0j], np.cumsum([v for _, v in vectors])]) / scale
+    points = corners(vectors, scale)
     fig = RawFigure()
     fig.add_raw([scatter(x=points.real, y=points.imag, mode="markers+text", showlegend=False,
                          text=[str(i + 1) if i < len(vectors) else "" for i in range(len(points))],
@@ -49,3 +50,21 @@ def polygon_figure(known: list[tuple[str, complex]], closing: list[tuple[str, co
     fig.update_xaxes(range=[points.real.min() - pad, points.real.max() + pad], dtick=1)
     fig.update_yaxes(range=[points.imag.min() - pad, points.imag.max() + pad], dtick=1)
     return fig
+
+
+def corners(vectors: list[tuple[str, complex]], scale: float) -> np.ndarray:
+    """The polygon's corners in cm: 0, then each vector added head to tail."""
+    return np.concatenate([[0j], np.cumsum([v for _, v in vectors])]) / scale
+
+
+def polygon_svg(known: list[tuple[str, complex]], closing: list[tuple[str, complex]],
+                scale: float, caption: str) -> str:
+    """The polygon at true scale for printing (names plain, F_45 style)."""
+    vectors = known + closing
+    points = corners(vectors, scale)
+    colours = [KNOWN] * len(known) + [CLOSING] * len(closing)
+    arrows = [PaperArrow(a, b, c) for a, b, c in zip(points[:-1], points[1:], colours)]
+    labels = [PaperLabel(f"{i + 1}", z) for i, z in enumerate(points[:-1])]
+    labels += [PaperLabel(subscripts(name), (a + b) / 2) for (name, _), a, b
+               in zip(vectors, points[:-1], points[1:])]
+    return true_scale_svg(arrows, labels, caption)

@@ -11,7 +11,7 @@ import pandas as pd
 import streamlit as st
 
 from figures.kinetostatics import cycle_figure, forces_figure, html, lever_figure
-from figures.polygon import polygon_figure
+from figures.polygon import polygon_figure, polygon_svg
 from figures.style import nice_scale
 from mechanisms.schema import Scene
 from solvers.diagnostics import Unsolvable, format_range, sweep_values
@@ -22,7 +22,7 @@ from solvers.textbook import check
 from ui.book import book_table
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
-from ui.export import chart, csv_button
+from ui.export import chart, csv_button, print_button
 from ui.i18n import num, scaled_title, t, title_of
 from ui.present import look
 from ui.scenes import driver_inputs, scene_download, scene_picker
@@ -188,7 +188,9 @@ if tabs[0].open:
         if k.inertia:
             st.subheader(t("forces.inertia_title"))
             st.caption(t("forces.inertia_hint"))
-            st.dataframe(inertia_table(k, now), hide_index=True)
+            inertia = inertia_table(k, now)
+            st.dataframe(inertia, hide_index=True)
+            csv_button(inertia, f"{scene.id}-inertia.csv", key="csv_inertia")
 
 if tabs[1].open:
     with tabs[1]:
@@ -210,12 +212,17 @@ if tabs[1].open:
         chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
                              (t("forces.legend_known"), t("forces.legend_closing")), look()),
               f"{scene.id}-polygon-{choice}", key="fig_polygon")
-        st.dataframe(pd.DataFrame([{t("forces.col_force"): a.name,
-                                    "|F| [N]": num(abs(a.force), 4),
-                                    t("forces.col_plan"): num(abs(a.force) / uf, 3),
-                                    t("forces.col_angle"): num(math.degrees(math.atan2(
-                                        a.force.imag, a.force.real)) % 360, 4)}
-                                   for a in actions]), hide_index=True)
+        print_button(polygon_svg([(a.name, a.force) for a in actions if a.known],
+                                 [(a.name, a.force) for a in actions if not a.known], uf,
+                                 t("forces.svg_caption", scene=scene.id, group=choice,
+                                   scale=num(uf, 4))),
+                     f"{scene.id}-polygon-{choice}.svg", key="svg_polygon")
+        polygon = pd.DataFrame([{t("forces.col_force"): a.name, "|F| [N]": num(abs(a.force), 4),
+                                 t("forces.col_plan"): num(abs(a.force) / uf, 3),
+                                 t("forces.col_angle"): num(math.degrees(math.atan2(
+                                     a.force.imag, a.force.real)) % 360, 4)} for a in actions])
+        st.dataframe(polygon, hide_index=True)
+        csv_button(polygon, f"{scene.id}-polygon-{choice}.csv", key="csv_polygon")
 
 if tabs[2].open:
     with tabs[2]:
@@ -223,10 +230,11 @@ if tabs[2].open:
         chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
               key="fig_lever")
         speed = scene.driver.speed or 1.0
-        st.dataframe(pd.DataFrame([{
-            t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
-            t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
-            for f in k.lever if abs(f.force[now]) > 0]), hide_index=True)
+        lever = pd.DataFrame([{t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
+                               t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
+                              for f in k.lever if abs(f.force[now]) > 0])
+        st.dataframe(lever, hide_index=True)
+        csv_button(lever, f"{scene.id}-lever.csv", key="csv_lever")
 
 if tabs[3].open:
     with tabs[3]:
@@ -258,12 +266,12 @@ if tabs[3].open:
               f"{scene.id}-reactions-cycle", key="fig_reactions_cycle")
         with st.expander(t("forces.resolution")):
             st.caption(t("forces.resolution_hint"))
-            st.dataframe(pd.DataFrame([{t("forces.col_steps"): r["steps"],
-                                        t("assur.col_ms"): num(r["ms"], 3),
-                                        t("forces.col_peak"): num(r["peak"], 6),
-                                        t("forces.col_change"): f"{num(r['change'], 3)} %"}
-                                       for r in resolution_table(scene, st.session_state["inertia"])]),
-                         hide_index=True)
+            rows = pd.DataFrame([{t("forces.col_steps"): r["steps"], t("assur.col_ms"): num(r["ms"], 3),
+                                  t("forces.col_peak"): num(r["peak"], 6),
+                                  t("forces.col_change"): f"{num(r['change'], 3)} %"}
+                                 for r in resolution_table(scene, st.session_state["inertia"])])
+            st.dataframe(rows, hide_index=True)
+            csv_button(rows, f"{scene.id}-resolution.csv", key="csv_resolution")
 
 if scene.book:
     with main:

@@ -9,11 +9,11 @@ import streamlit as st
 
 from figures.style import nice_scale
 from figures.balancing import end_view_figure, rotor_3d_figure
-from figures.polygon import polygon_figure
+from figures.polygon import polygon_figure, polygon_svg
 from mechanisms.rotor import PLANES, Correction, Mass, Rotor
 from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
 from ui.chapters import page_title
-from ui.export import chart, csv_button
+from ui.export import chart, csv_button, print_button
 from ui.i18n import num, scaled_title, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -115,10 +115,14 @@ def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> Non
     scale = nice_scale(max(abs(sum(vs[:k + 1])) for k in range(len(vs))) / 8)
     scale = st.number_input(t("rotor.scale_v"), min_value=1e-6, value=scale,
                             key=f"UV{reference}-{rotor.id}", format="%.4g")
-    chart(polygon_figure([(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)],
-                         scale, scaled_title(t("rotor.v_title", plane=reference), scale, "kg·mm²"),
-                         legend(), look(), axes=("z", "y")),
-          f"{rotor.id}-V", key="vpoly")
+    known, closing = [(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)]
+    title = t("rotor.v_title", plane=reference)
+    chart(polygon_figure(known, closing, scale, scaled_title(title, scale, "kg·mm²"), legend(),
+                         look(), axes=("z", "y")), f"{rotor.id}-V", key="vpoly")
+    print_button(polygon_svg(known, closing, scale, t("rotor.svg_caption", scene=rotor.id,
+                                                       polygon=title, scale=num(scale, 4),
+                                                       unit="kg·mm²")),
+                 f"{rotor.id}-V.svg", key="vsvg")
 
 
 def results_table(result: Balance) -> pd.DataFrame:
@@ -167,10 +171,13 @@ with main:
         with tab_u:
             scale_u = st.number_input(t("rotor.scale_u"), min_value=1e-6, value=scale_u,
                                       key=scale_key, format="%.4g")
-            chart(polygon_figure(list(zip(names, us)), [(f"U{p}", u) for p, u in found.items()],
-                                 scale_u, scaled_title(t("rotor.tab_u"), scale_u, "kg·mm"),
-                                 legend(), look(), axes=("z", "y")),
-                  f"{rotor.id}-U", key="upoly")
+            known, closing = list(zip(names, us)), [(f"U{p}", u) for p, u in found.items()]
+            chart(polygon_figure(known, closing, scale_u,
+                                 scaled_title(t("rotor.tab_u"), scale_u, "kg·mm"), legend(),
+                                 look(), axes=("z", "y")), f"{rotor.id}-U", key="upoly")
+            print_button(polygon_svg(known, closing, scale_u, t(
+                "rotor.svg_caption", scene=rotor.id, polygon=t("rotor.tab_u"),
+                scale=num(scale_u, 4), unit="kg·mm")), f"{rotor.id}-U.svg", key="usvg")
     if tab_v.open:
         with tab_v:
             if rotor.mode == "dynamic":

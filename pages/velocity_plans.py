@@ -18,7 +18,7 @@ from solvers.textbook import check
 from ui.cache import BY_REPR, instant
 from ui.book import book_table
 from ui.chapters import page_title
-from ui.export import chart, csv_button
+from ui.export import chart, csv_button, print_button
 from ui.i18n import num, t, title_of
 from ui.present import look
 from ui.scenes import driver_inputs, scene_download, scene_picker
@@ -132,9 +132,8 @@ if tab_plans.open:
                 chart(plan_figure(drawing, t(title, scale=num(scales[key], 4)), t, look()),
                       f"{scene.id}-{plan.quantity}-plan", key=f"fig_{key}")
                 caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
-                st.download_button(t("plans.svg"), plan_svg(layout_plan(plan, scales[key]), caption),
-                                   f"{scene.id}-{plan.quantity}-plan.svg", mime="image/svg+xml",
-                                   key=f"svg_{key}", on_click="ignore", icon=":material/print:")
+                print_button(plan_svg(layout_plan(plan, scales[key]), caption),
+                             f"{scene.id}-{plan.quantity}-plan.svg", key=f"svg_{key}")
         st.dataframe(step_table(index), hide_index=True)
         members = pd.DataFrame([{t("plans.col_member"): n, t("plans.col_omega"): num(w, 5),
                                  t("plans.col_epsilon"): num(e, 5),

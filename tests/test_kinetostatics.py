@@ -211,3 +211,21 @@ def test_a_change_point_is_labelled_not_a_wrong_number():
     grow = k.reactions[(3, 4)].magnitude[1] / k.reactions[(3, 4)].magnitude[2]
     assert 900 < grow < 1100
     assert k.disagreement[1] < 1e-6 and k.disagreement[2] < 1e-9
+
+
+def test_the_printed_force_polygon_is_at_true_scale():
+    """Each arrow of the SVG is |F|/U_F centimetres long and the polygon closes."""
+    import re
+
+    from figures.polygon import polygon_svg
+
+    k = analyse(load_preset("predavanja-kinetostatika"))
+    actions = free_body(k, (5, 6), 0)
+    svg = polygon_svg([(a.name, a.force) for a in actions if a.known],
+                      [(a.name, a.force) for a in actions if not a.known], 10.0, "test")
+    lines = [tuple(map(float, m)) for m in re.findall(
+        r'<line x1="([\d.]+)" y1="([\d.]+)" x2="([\d.]+)" y2="([\d.]+)" stroke="#(?!ddd)', svg)]
+    assert [math.hypot(x2 - x1, y2 - y1) for x1, y1, x2, y2 in lines] == pytest.approx(
+        [abs(a.force) / 10.0 for a in actions], abs=1e-3)
+    assert lines[0][:2] == pytest.approx(lines[-1][2:], abs=1e-3)
+    assert re.search(r'width="[\d.]+cm"', svg)

@@ -22,3 +22,9 @@ def chart(fig: go.Figure, filename: str, key: str) -> None:
     st.segmented_control(t("export.figure_format"), ["svg", "png"], key=f"{key}_format",
                          default="svg", format_func=str.upper, label_visibility="visible")
     st.caption(t("export.camera_hint"))
+
+
+def print_button(svg: str, filename: str, key: str) -> None:
+    """A drawing at true scale, as SVG to print at 100 %."""
+    st.download_button(t("export.print"), svg.encode("utf-8"), filename, mime="image/svg+xml",
+                       key=key, on_click="ignore", icon=":material/print:")
