@@ -19,6 +19,7 @@ from ui.chapters import page_title
 from ui.export import chart, csv_button
 from ui.i18n import num, t, title_of
 from ui.present import look
+from ui.progress import measured
 from ui.scenes import driver_position, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
@@ -31,11 +32,6 @@ CYCLE = 360
 def cycle(scene: Scene, tol: float) -> Motion:
     """A survey of the driver (``CYCLE`` positions) and, last, the scene's own instant."""
     return solve(scene, np.append(sweep_values(scene, CYCLE), scene.driver.at), tol=tol)
-
-
-@st.cache_data(max_entries=16, hash_funcs=BY_REPR)
-def accuracy(scene: Scene) -> list[dict]:
-    return newton_accuracy(scene, sweep_values(scene, CYCLE))
 
 
 def counts(scene: Scene) -> None:
@@ -117,11 +113,13 @@ with main:
             report = next(iter(survey.newton.values()))
             st.write(t("assur.instant_newton", iterations=int(report.iterations[CYCLE]),
                        residual=f"{report.residual[CYCLE]:.1e}"))
+            table = measured(base, "newton", lambda done: newton_accuracy(
+                base, sweep_values(base, CYCLE), progress=done), t("app.measuring"))
             rows = pd.DataFrame([{t("assur.col_tol"): f"{r['tol']:.0e}",
                                   t("assur.col_iter"): f"{num(r['iterations_mean'], 2)} / {r['iterations_max']}",
                                   t("assur.col_ms"): num(r["solve_ms"], 1),
                                   t("assur.col_error"): f"{r['error_m']:.1e}"}
-                                 for r in accuracy(base)])
+                                 for r in table])
             st.dataframe(rows, hide_index=True)
 
 with controls:

@@ -4,7 +4,6 @@ over the cycle, with force polygons and Zhukovsky's lever."""
 from __future__ import annotations
 
 import math
-import time
 
 import numpy as np
 import pandas as pd
@@ -14,7 +13,7 @@ from figures.kinetostatics import cycle_figure, forces_figure, html, lever_figur
 from figures.polygon import polygon_figure, polygon_svg
 from figures.style import nice_scale
 from mechanisms.schema import Scene
-from solvers.diagnostics import Unsolvable, format_range, sweep_values
+from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_resolution
 from solvers.kinetostatics import Kinetostatics, analyse, free_body
 from solvers.report import has_loads
 from solvers.structure import StructureError
@@ -25,6 +24,7 @@ from ui.chapters import page_title
 from ui.export import chart, csv_button, print_button
 from ui.i18n import num, scaled_title, t, title_of
 from ui.present import look
+from ui.progress import measured
 from ui.scenes import driver_inputs, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
@@ -37,21 +37,6 @@ RESOLUTIONS = (12, 72, 360, 3600)
 def over_cycle(scene: Scene, steps: int, inertia: bool) -> Kinetostatics:
     """``steps`` positions over the cycle and, last, the scene's own instant."""
     return analyse(scene, np.append(sweep_values(scene, steps), scene.driver.at), inertia=inertia)
-
-
-@st.cache_data(max_entries=16, hash_funcs=BY_REPR)
-def resolution_table(scene: Scene, inertia: bool) -> list[dict]:
-    """Time of a cycle at each resolution and how far its peak |M_p| is from the finest."""
-    rows = []
-    for steps in RESOLUTIONS:
-        start = time.perf_counter()
-        k = analyse(scene, sweep_values(scene, steps), inertia=inertia)
-        ms = 1e3 * (time.perf_counter() - start)
-        rows.append({"steps": steps, "ms": ms, "peak": float(np.nanmax(np.abs(k.driving), initial=0))})
-    finest = rows[-1]["peak"]
-    for row in rows:
-        row["change"] = 100 * (row["peak"] - finest) / finest if finest else 0.0
-    return rows
 
 
 def defaults(base: Scene) -> dict[str, object]:
@@ -266,10 +251,13 @@ if tabs[3].open:
               f"{scene.id}-reactions-cycle", key="fig_reactions_cycle")
         with st.expander(t("forces.resolution")):
             st.caption(t("forces.resolution_hint"))
+            inertia = st.session_state["inertia"]
+            table = measured(scene, "resolution", lambda done: torque_resolution(scene, RESOLUTIONS, inertia, done),
+                             t("app.measuring"), variant=inertia)
             rows = pd.DataFrame([{t("forces.col_steps"): r["steps"], t("assur.col_ms"): num(r["ms"], 3),
                                   t("forces.col_peak"): num(r["peak"], 6),
                                   t("forces.col_change"): f"{num(r['change'], 3)} %"}
-                                 for r in resolution_table(scene, st.session_state["inertia"])])
+                                 for r in table])
             st.dataframe(rows, hide_index=True)
             csv_button(rows, f"{scene.id}-resolution.csv", key="csv_resolution")
 

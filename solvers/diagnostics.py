@@ -10,6 +10,7 @@ import numpy as np
 from mechanisms.schema import Scene
 
 from .kinematics import SINGULAR, GroupIssue, Motion, solve
+from .kinetostatics import analyse
 from .structure import Structure, decompose
 
 
@@ -115,11 +116,11 @@ TOLERANCES = (1e-3, 1e-6, 1e-9, 1e-12)
 
 
 def newton_accuracy(scene: Scene, values: np.ndarray, tolerances=TOLERANCES,
-                    repeat: int = 3) -> list[dict]:
+                    repeat: int = 3, progress=None) -> list[dict]:
     """Speed against accuracy of the class III groups' Newton solve, measured: for each
     tolerance (largest constraint violation / group size), the iterations per position
     (mean, max), the median solve time (ms, positions only) and the largest position error
-    of any point (m) against a solve at 1e-14."""
+    of any point (m) against a solve at 1e-14. ``progress(fraction)`` is told how far it is."""
     structure = decompose(scene)
     reference = solve(scene, values, order=0, structure=structure, tol=1e-14)
     rows = []
@@ -136,4 +137,25 @@ def newton_accuracy(scene: Scene, values: np.ndarray, tolerances=TOLERANCES,
         rows.append({"tol": tol, "iterations_mean": float(np.mean(iterations)) if iterations.size else 0.0,
                      "iterations_max": int(np.max(iterations, initial=0)),
                      "solve_ms": 1e3 * float(np.median(times)), "error_m": error})
+        if progress:
+            progress(len(rows) / len(tolerances))
+    return rows
+
+
+def torque_resolution(scene: Scene, resolutions, inertia: bool = True, progress=None) -> list[dict]:
+    """Speed against accuracy of the driving-torque curve, measured: for each number of
+    positions per cycle, the time of a whole kinetostatic cycle (ms), its peak |M_p| (or
+    |F_p|) and how far that peak is from the finest resolution's (%). A coarse cycle misses
+    the peak. ``progress(fraction)`` is told how far it is (the work grows with positions)."""
+    rows: list[dict] = []
+    for steps in resolutions:
+        if progress:
+            progress(sum(r["steps"] for r in rows) / sum(resolutions))
+        start = time.perf_counter()
+        k = analyse(scene, sweep_values(scene, steps), inertia=inertia)
+        rows.append({"steps": steps, "ms": 1e3 * (time.perf_counter() - start),
+                     "peak": float(np.nanmax(np.abs(k.driving), initial=0.0))})
+    finest = rows[-1]["peak"]
+    for row in rows:
+        row["change"] = 100 * (row["peak"] - finest) / finest if finest else 0.0
     return rows

@@ -229,3 +229,13 @@ def test_the_printed_force_polygon_is_at_true_scale():
         [abs(a.force) / 10.0 for a in actions], abs=1e-3)
     assert lines[0][:2] == pytest.approx(lines[-1][2:], abs=1e-3)
     assert re.search(r'width="[\d.]+cm"', svg)
+
+
+def test_a_coarse_cycle_misses_the_torque_peak():
+    from solvers.diagnostics import torque_resolution
+
+    seen = []
+    rows = torque_resolution(load_preset("zbirka-5.4"), (12, 72, 360), progress=seen.append)
+    assert [r["steps"] for r in rows] == [12, 72, 360] and rows[-1]["change"] == 0.0
+    assert abs(rows[0]["change"]) > abs(rows[1]["change"]) > 0  # finer: closer to the peak
+    assert seen == sorted(seen) and seen[0] == 0.0
