@@ -16,7 +16,7 @@ from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
-from ui.export import chart, csv_button
+from ui.export import chart, show_table
 from ui.i18n import num, t, title_of
 from ui.present import look
 from ui.progress import measured
@@ -83,7 +83,7 @@ with main:
         st.error(t("assur.no_structure", reason=str(exc)))
         st.stop()
     st.markdown(t("assur.formula", formula=structure.formula))
-    st.dataframe(groups_table(structure), hide_index=True)
+    show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
     groups = len(structure.groups)
     upto = groups
     if groups > 1:
@@ -105,8 +105,7 @@ with main:
         st.subheader(t("assur.special"))
         st.caption(t("assur.special_hint"))
         table = special_table(survey, CYCLE)
-        st.dataframe(table, hide_index=True)
-        csv_button(table, f"{scene.id}-special-points.csv", key="special_csv")
+        show_table(table, f"{scene.id}-special-points.csv", "special_csv")
     if survey.newton:
         with st.expander(t("assur.accuracy"), expanded=False):
             st.caption(t("assur.accuracy_hint"))
@@ -120,7 +119,7 @@ with main:
                                   t("assur.col_ms"): num(r["solve_ms"], 1),
                                   t("assur.col_error"): f"{r['error_m']:.1e}"}
                                  for r in table])
-            st.dataframe(rows, hide_index=True)
+            show_table(rows, f"{base.id}-newton-tolerance.csv", "csv_newton")
 
 with controls:
     quantities = [Quantity("W", float(degrees_of_freedom(scene)), ""),

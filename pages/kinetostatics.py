@@ -21,7 +21,7 @@ from solvers.textbook import check
 from ui.book import book_table
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
-from ui.export import chart, csv_button, print_button
+from ui.export import chart, print_button, show_table
 from ui.i18n import num, scaled_title, t, title_of
 from ui.present import look
 from ui.progress import measured
@@ -168,14 +168,12 @@ if tabs[0].open:
         table = reactions_table(k, now)
         st.subheader(t("forces.reactions"))
         st.caption(t("forces.reactions_hint"))
-        st.dataframe(table, hide_index=True)
-        csv_button(table, f"{scene.id}-reactions.csv", key="csv_reactions")
+        show_table(table, f"{scene.id}-reactions.csv", "csv_reactions")
         if k.inertia:
             st.subheader(t("forces.inertia_title"))
             st.caption(t("forces.inertia_hint"))
             inertia = inertia_table(k, now)
-            st.dataframe(inertia, hide_index=True)
-            csv_button(inertia, f"{scene.id}-inertia.csv", key="csv_inertia")
+            show_table(inertia, f"{scene.id}-inertia.csv", "csv_inertia")
 
 if tabs[1].open:
     with tabs[1]:
@@ -206,8 +204,7 @@ if tabs[1].open:
                                  t("forces.col_plan"): num(abs(a.force) / uf, 3),
                                  t("forces.col_angle"): num(math.degrees(math.atan2(
                                      a.force.imag, a.force.real)) % 360, 4)} for a in actions])
-        st.dataframe(polygon, hide_index=True)
-        csv_button(polygon, f"{scene.id}-polygon-{choice}.csv", key="csv_polygon")
+        show_table(polygon, f"{scene.id}-polygon-{choice}.csv", "csv_polygon")
 
 if tabs[2].open:
     with tabs[2]:
@@ -218,8 +215,7 @@ if tabs[2].open:
         lever = pd.DataFrame([{t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
                                t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
                               for f in k.lever if abs(f.force[now]) > 0])
-        st.dataframe(lever, hide_index=True)
-        csv_button(lever, f"{scene.id}-lever.csv", key="csv_lever")
+        show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
 
 if tabs[3].open:
     with tabs[3]:
@@ -258,14 +254,13 @@ if tabs[3].open:
                                   t("forces.col_peak"): num(r["peak"], 6),
                                   t("forces.col_change"): f"{num(r['change'], 3)} %"}
                                  for r in table])
-            st.dataframe(rows, hide_index=True)
-            csv_button(rows, f"{scene.id}-resolution.csv", key="csv_resolution")
+            show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
 
 if scene.book:
     with main:
         st.subheader(t("plans.book_title"))
         if scene == base:
-            st.dataframe(book_table(check(scene)), hide_index=True)
+            show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
         else:
             st.info(t("plans.book_changed"))
 

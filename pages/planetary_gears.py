@@ -10,7 +10,7 @@ from figures.gears import schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
 from solvers.gears import TrainError, geometry_notes, solve_train, willis_table
 from ui.chapters import page_title
-from ui.export import chart, csv_button
+from ui.export import chart, show_table
 from ui.i18n import num, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -97,17 +97,17 @@ with main:
             st.caption(t("gears.pole_note", H=num(h, 3)))
             u_omega = u_v / (h * u_l)
             st.markdown(t("gears.u_omega", value=num(u_omega, 4)))
-            st.dataframe(pd.DataFrame([
+            show_table(pd.DataFrame([
                 {t("gears.col_member"): m, t("gears.col_intercept"): num(w / u_omega, 4),
-                 "ω = x·U_ω [s⁻¹]": num(w, 5)} for m, w in solution.omega.items()]), hide_index=True)
+                 "ω = x·U_ω [s⁻¹]": num(w, 5)} for m, w in solution.omega.items()]),
+                f"{train.id}-intercepts.csv", "csv_intercepts")
     rows = []
     for m, w in solution.omega.items():
         book = train.book.get(f"members.{m}.omega")
         rows.append({t("gears.col_member"): f"{m} {train.members[m].label}".strip(),
                      "ω [s⁻¹]": num(w, 5),
                      t("gears.col_book"): "" if book is None else num(book, 5)})
-    results = pd.DataFrame(rows)
-    st.dataframe(results, hide_index=True)
+    show_table(pd.DataFrame(rows), f"{train.id}-omega.csv", "csv")
     cols = st.columns(3)
     members = list(train.members)
     a = cols[0].selectbox(t("gears.ratio_from"), members, key="ra")
@@ -116,13 +116,12 @@ with main:
     cols[2].metric(f"i {a},{b} = ω{a}/ω{b}", t("gears.infinite") if ratio == float("inf") else num(ratio, 5))
     for name, (m, r) in train.points.items():
         st.metric(t("gears.point_velocity", point=name, member=m), f"{num(solution.velocity(m, r), 5)} m/s")
-    csv_button(results, f"{train.id}-omega.csv", key="csv")
     with st.expander(t("gears.willis_title")):
-        st.dataframe(pd.DataFrame([{
+        show_table(pd.DataFrame([{
             t("gears.col_mesh"): f"{w.a}–{w.b}",
             t("gears.col_carrier"): t("gears.frame") if w.carrier is None else str(w.carrier),
             t("gears.col_equation"): (f"(ω{w.a} − ω{w.carrier})/(ω{w.b} − ω{w.carrier})"
                                       if w.carrier is not None else f"ω{w.a}/ω{w.b}"),
             t("gears.col_radii"): num(w.ratio, 5), t("gears.col_solved"): num(w.check(solution.omega), 5)}
-            for w in willis_table(train)]), hide_index=True)
+            for w in willis_table(train)]), f"{train.id}-willis.csv", "csv_willis")
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")

@@ -13,7 +13,7 @@ from figures.polygon import polygon_figure, polygon_svg
 from mechanisms.rotor import PLANES, Correction, Mass, Rotor
 from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
 from ui.chapters import page_title
-from ui.export import chart, csv_button, print_button
+from ui.export import chart, print_button, show_table
 from ui.i18n import num, scaled_title, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -147,7 +147,7 @@ def results_table(result: Balance) -> pd.DataFrame:
 with main:
     st.subheader(t("rotor.results"))
     corrections_table = results_table(result)
-    st.dataframe(corrections_table, hide_index=True)
+    show_table(corrections_table, f"{rotor.id}-corrections.csv", "csv")
     cols = st.columns(2)
     cols[0].metric(t("rotor.residual_force"), f"{num(result.residual_force * MM, 2)} kg·mm")
     cols[1].metric(t("rotor.residual_moment"), f"{num(result.residual_moment * MM**2, 2)} kg·mm²")
@@ -157,7 +157,6 @@ with main:
         for i, bearing in enumerate(("A", "B")):
             cols[i].metric(t("rotor.bearing_before", bearing=bearing), f"{num(before[bearing], 4)} N")
             cols[2 + i].metric(t("rotor.bearing_after", bearing=bearing), f"{num(after[bearing], 2)} N")
-    csv_button(corrections_table, f"{rotor.id}-corrections.csv", key="csv")
 
     names = [f"U{i + 1}" for i in range(len(rotor.masses))]
     us = [m.mass * m.radius * unit(m.angle) * MM for m in rotor.masses]  # kg·mm
@@ -217,7 +216,7 @@ with main:
         rows.append({t("rotor.col_plane"): plane, t("rotor.col_graphical"): f"{label}: ± {num(error, 2)}",
                      t("rotor.col_relative"): f"± {num(100 * error / exact, 2)} %",
                      t("rotor.col_angle"): f"± {num(math.degrees(angle_error), 2)}°"})
-    st.dataframe(pd.DataFrame(rows), hide_index=True)
+    show_table(pd.DataFrame(rows), f"{rotor.id}-graphical-error.csv", "csv_accuracy")
     st.caption(t("rotor.accuracy_note", precision=num(precision, 2)))
     answer_box(answers, key="self")
 
@@ -232,7 +231,7 @@ with main:
             "m·y [kg·mm]": num(m.mass * m.radius * math.sin(m.angle) * MM, 5),
             "m·z [kg·mm]": num(m.mass * m.radius * math.cos(m.angle) * MM, 5)}
             for i, m in enumerate(rotor.masses)])
-        st.dataframe(steps, hide_index=True)
+        show_table(steps, f"{rotor.id}-steps.csv", "csv_steps")
         for plane, u in result.u_needed.items():
             st.markdown(t("rotor.step_plane", plane=plane, Y=num(u.imag * MM, 5),
                           Z=num(u.real * MM, 5), tan=num(u.imag / u.real, 5) if u.real else "∞",

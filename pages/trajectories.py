@@ -16,7 +16,7 @@ from solvers.paths import (animation_order, cycle_time, cycle_values, field_path
                            path_length, resolution_table, strokes, swings)
 from ui.cache import BY_REPR, solved
 from ui.chapters import page_title
-from ui.export import chart, csv_button
+from ui.export import chart, csv_button, show_table
 from ui.i18n import current, num, t, title_of
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -178,7 +178,7 @@ with main:
              t("traj.col_deviation"): num(r["deviation_m"] * 1e3, 3),
              t("traj.col_current"): "◀" if r["positions"] == steps else ""}
             for r in accuracy(scene, tuple(points))]
-    st.dataframe(pd.DataFrame(rows), hide_index=True)
+    show_table(pd.DataFrame(rows), f"{scene.id}-resolution.csv", "csv_resolution")
     st.caption(t("traj.timing", solve=num(solve_ms, 3), figure=num(figure_ms, 3), steps=steps))
     table = pd.DataFrame({"phi2_deg": np.degrees(fine.at)})
     for name in points:

@@ -18,7 +18,7 @@ from solvers.textbook import check
 from ui.cache import BY_REPR, instant
 from ui.book import book_table
 from ui.chapters import page_title
-from ui.export import chart, csv_button, print_button
+from ui.export import chart, print_button, show_table
 from ui.i18n import num, t, title_of
 from ui.present import look
 from ui.scenes import driver_inputs, scene_download, scene_picker
@@ -134,12 +134,12 @@ if tab_plans.open:
                 caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
                 print_button(plan_svg(layout_plan(plan, scales[key]), caption),
                              f"{scene.id}-{plan.quantity}-plan.svg", key=f"svg_{key}")
-        st.dataframe(step_table(index), hide_index=True)
+        show_table(step_table(index), f"{scene.id}-step-{step}.csv", "csv_step")
         members = pd.DataFrame([{t("plans.col_member"): n, t("plans.col_omega"): num(w, 5),
                                  t("plans.col_epsilon"): num(e, 5),
                                  t("plans.col_sense"): t("plans.ccw" if w > 0 else "plans.cw" if w < 0 else "plans.still")}
                                 for n, (w, e) in sorted(plans.members.items())])
-        st.dataframe(members, hide_index=True)
+        show_table(members, f"{scene.id}-members.csv", "csv_members")
         chart(mechanism_figure(instant(scene), plans,
                                t("plans.mechanism_title", at=num(st.session_state["at"], 4)), t, look()),
               f"{scene.id}-mechanism", key="fig_mech")
@@ -161,7 +161,7 @@ if tab_loops.open:
                  t("plans.col_rate"): f"{num(r['rate'], 6)} {units[r['kind']][1]}",
                  t("plans.col_acc"): f"{num(r['acceleration'], 6)} {units[r['kind']][2]}"}
                 for r in solved_values(instant(scene))]
-        st.dataframe(pd.DataFrame(rows), hide_index=True)
+        show_table(pd.DataFrame(rows), f"{scene.id}-analytic.csv", "csv_analytic")
         st.success(t("plans.agreement", v=f"{plans.velocity.closure():.1e}",
                      a=f"{plans.acceleration.closure():.1e}"))
 
@@ -175,12 +175,11 @@ if tab_accuracy.open:
                                t("plans.col_uncertainty"): f"± {num(r.uncertainty, 2)} {r.unit}",
                                t("plans.col_relative"): f"{num(100 * r.uncertainty / r.exact, 2)} %"
                                if r.exact else "—"} for r in values])
-        st.dataframe(table, hide_index=True)
-        csv_button(table, f"{scene.id}-readings.csv", key="csv_readings")
+        show_table(table, f"{scene.id}-readings.csv", "csv_readings")
         if scene.book:
             st.subheader(t("plans.book_title"))
             if scene == base:
-                st.dataframe(book_table(check(scene)), hide_index=True)
+                show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
             else:
                 st.info(t("plans.book_changed"))
 

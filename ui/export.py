@@ -28,3 +28,9 @@ def print_button(svg: str, filename: str, key: str) -> None:
     """A drawing at true scale, as SVG to print at 100 %."""
     st.download_button(t("export.print"), svg.encode("utf-8"), filename, mime="image/svg+xml",
                        key=key, on_click="ignore", icon=":material/print:")
+
+
+def show_table(table: pd.DataFrame, filename: str, key: str) -> None:
+    """A table on the page with its CSV download under it."""
+    st.dataframe(table, hide_index=True)
+    csv_button(table, filename, key)
