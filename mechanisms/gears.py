@@ -71,6 +71,12 @@ class GearTrain:
         return dataclasses.replace(self, **changes)
 
 
+def _array(r: _Reader, value, where: str, what: str) -> list:
+    if not isinstance(value, list):
+        raise r.fail(where, f"must be an array of {what}, got {value!r}")
+    return value
+
+
 def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
     r = _Reader(source)
     r.check_keys(raw, TOP_KEYS, "")
@@ -103,7 +109,7 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
                 raise r.fail(f"members.{m.number}.axis", "must be > 0 for a planet (its axis "
                                                           "turns with the carrier)")
     meshes = []
-    for i, spec in enumerate(raw.get("meshes", [])):
+    for i, spec in enumerate(_array(r, raw.get("meshes", []), "meshes", "[[meshes]] tables")):
         where = f"meshes[{i}]"
         spec = r.check_keys(spec, MESH_KEYS, where)
         pair = spec.get("members")
@@ -133,11 +139,14 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
         if not isinstance(bevel, bool):
             raise r.fail(f"{where}.bevel", f"must be true or false, got {bevel!r}")
         meshes.append(Mesh((a, b), radii, internal, bevel))
-    shafts = tuple(tuple(member(m, f"shafts[{i}]") for m in group)
-                   for i, group in enumerate(raw.get("shafts", [])))
-    fixed = tuple(member(m, "fixed") for m in raw.get("fixed", []))
+    shafts = tuple(tuple(member(m, f"shafts[{i}]")
+                         for m in _array(r, group, f"shafts[{i}]", "member numbers"))
+                   for i, group in enumerate(_array(r, raw.get("shafts", []), "shafts",
+                                                    "arrays of member numbers")))
+    fixed = tuple(member(m, "fixed") for m in _array(r, raw.get("fixed", []), "fixed",
+                                                       "member numbers"))
     inputs = []
-    for i, spec in enumerate(raw.get("inputs", [])):
+    for i, spec in enumerate(_array(r, raw.get("inputs", []), "inputs", "[[inputs]] tables")):
         where = f"inputs[{i}]"
         spec = r.check_keys(spec, INPUT_KEYS, where)
         m = member(spec.get("member"), f"{where}.member")
@@ -150,7 +159,10 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
             radius = r.number(spec, "radius", where, positive=True)
             inputs.append(Input(m, v / radius, v, radius))
     points = {}
-    for name, value in raw.get("points", {}).items():
+    table = raw.get("points", {})
+    if not isinstance(table, dict):
+        raise r.fail("points", f"must be a table of [member, radius], got {table!r}")
+    for name, value in table.items():
         if not (isinstance(value, list) and len(value) == 2):
             raise r.fail(f"points.{name}", "must be [member, radius]")
         points[name] = (member(value[0], f"points.{name}"),

@@ -18,6 +18,7 @@ from typing import Any
 from .schema import DRIVER, FRAME, Driver, Force, Member, Moment, Pair, Scene, Travel
 
 PRESETS = Path(__file__).parent / "presets"
+LARGEST = 1e9  # beyond this a number is a typo or an attack, and squares of it overflow
 MAX_BYTES = 1_000_000  # a real scene is a few kB; refuse anything absurd before parsing
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "pairs", "frame",
@@ -69,6 +70,9 @@ class _Reader:
             raise self.fail(where, f"must be a number, got {value!r}")
         if not math.isfinite(value):
             raise self.fail(where, f"must be a finite number, got {value!r}")
+        if abs(value) > LARGEST:
+            raise self.fail(where, f"is {value!r}: no mechanism needs a number beyond ±{LARGEST:g} "
+                                   "(SI units: metres, radians per second, kilograms, newtons)")
         if positive and value <= 0:
             raise self.fail(where, f"must be > 0, got {value!r}")
         if non_negative and value < 0:
@@ -96,8 +100,8 @@ class _Reader:
               and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value))
         if not ok:
             raise self.fail(key, f"must be a pair of numbers [x, y], got {value!r}")
-        if not all(math.isfinite(v) for v in value):
-            raise self.fail(key, f"must be finite, got {value!r}")
+        if not all(math.isfinite(v) and abs(v) <= LARGEST for v in value):
+            raise self.fail(key, f"must be finite and within ±{LARGEST:g}, got {value!r}")
         return complex(value[0], value[1])
 
 

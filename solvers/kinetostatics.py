@@ -65,7 +65,7 @@ class Inertia:
     Huygens' centre K lies on the line from the member's first point B through S, at
     BK = BS + ρ²/BS. The same loads are −m·a_B at S plus −m·a_SB at K (a_SB = a_S − a_B):
     the couple is absorbed, as the book does on the reduced mechanism. K is None when S
-    coincides with B (the couple cannot be moved to a point).
+    coincides with B, or nearly (the couple cannot be moved to a point).
     """
 
     member: int
@@ -262,8 +262,8 @@ def _inertia(scene: Scene, number: int, body: Body, s_local: complex, full) -> I
     moment = full(-m * member.gyration ** 2 * body.epsilon)
     bs = abs(s_local - b_local)
     k_local = huygens = None
-    if bs > 0:
-        k_local = b_local + (s_local - b_local) * (1 + member.gyration ** 2 / bs ** 2)
+    if bs > 0 and member.gyration < 1e9 * bs:  # else S sits on B: K would be at infinity
+        k_local = b_local + (s_local - b_local) * (1 + (member.gyration / bs) ** 2)
         huygens = full(body.position(k_local))
     return Inertia(number, -m * a_s, moment, s, b, huygens, k_local, -m * a_b, -m * (a_s - a_b))
 
