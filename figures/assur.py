@@ -4,7 +4,6 @@ special points S of class III groups, their construction lines and their paths."
 from __future__ import annotations
 
 import numpy as np
-import plotly.graph_objects as go
 
 from mechanisms.schema import DRIVER, FRAME
 from solvers.kinematics import Motion, binary_line, special_pairs
@@ -12,6 +11,7 @@ from solvers.state import Body
 from solvers.structure import Group, Structure
 
 from .linkage import Text, mechanism_traces, pose, scatter
+from .raw import RawFigure
 from .style import NORMAL, Look, path_colour, plane_layout
 
 S_COLOUR = "#b8860b"
@@ -33,7 +33,7 @@ def group_labels(structure: Structure, t: Text) -> dict[int, str]:
 
 
 def structure_figure(motion: Motion, index: int, upto: int, title: str, t: Text,
-                     look: Look = NORMAL) -> go.Figure:
+                     look: Look = NORMAL) -> RawFigure:
     """The driver and the first ``upto`` groups at position ``index``; S where it is finite."""
     scene, structure = motion.scene, motion.structure
     shown = {FRAME, DRIVER} | {m for g in structure.groups[:upto] for m in g.members}
@@ -53,7 +53,8 @@ def structure_figure(motion: Motion, index: int, upto: int, title: str, t: Text,
     for name, (group, b1, b2) in special_pairs(scene, structure.groups).items():
         if group in shown_groups:
             traces += special_traces(motion, name, group, (b1, b2), index, t, look)
-    fig = go.Figure(traces)
+    fig = RawFigure()
+    fig.add_raw(traces)
     return plane_layout(fig, title, look)
 
 

@@ -28,10 +28,9 @@ def end_view_figure(masses: list[tuple[str, complex]], corrections: list[tuple[s
     fig.add_raw([scatter(x=[0], y=[0], mode="markers", showlegend=False,
                          marker=dict(size=8 * look.line, color="black"))])
     plane_layout(fig, title, look, x_title="z [mm]", y_title="y [mm]")
-    fig.update_layout(showlegend=False)
     lim = 1.15 * radius
-    fig.update_xaxes(range=[-lim, lim])
-    fig.update_yaxes(range=[-lim, lim])
+    fig.merge_layout(dict(showlegend=False, xaxis=dict(range=[-lim, lim]),
+                          yaxis=dict(range=[-lim, lim])))
     return fig
 
 

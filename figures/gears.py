@@ -115,6 +115,6 @@ def velocity_figure(solution: TrainSolution, pole: float, title: str, t: Text,
     traces.append(scatter(x=[0], y=[-pole], mode="markers+text", text=["P"], textposition="bottom center",
                           name=t("gears.pole"), marker=dict(size=8, color="black", symbol="x")))
     fig.add_raw(traces)
-    plane_layout(fig, title, look, x_title="v [m/s]", y_title=t("gears.radius"))
-    fig.update_yaxes(scaleanchor=None)  # velocities and radii have different units
+    # velocities and radii have different units: no equal scaling
+    plane_layout(fig, title, look, x_title="v [m/s]", y_title=t("gears.radius"), equal=False)
     return fig

@@ -119,17 +119,16 @@ def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marke
                              line=dict(color=path_colour(i), width=(3.5 - i) * look.line,
                                        dash="dash" if i else "solid"))])
     fig.add_vline(x=marker, line=dict(color="black", dash="dot", width=1.5 * look.line))
-    fig.update_layout(
+    fig.merge_layout(dict(
         title=dict(text=title, font=dict(size=look.font + 4)), height=int(look.height * 0.7),
         font=dict(size=look.font, color="black"), plot_bgcolor="white",
         margin=dict(l=10, r=10, t=60, b=10),
         legend=dict(orientation="h", yanchor="top", y=-0.18, x=0.0),
-        xaxis=dict(title=x_title, showgrid=True, gridcolor="#e5e5e5", showline=True,
+        xaxis=dict(title=dict(text=x_title), showgrid=True, gridcolor="#e5e5e5", showline=True,
                    linecolor="black", mirror=True),
-        yaxis=dict(title=y_title or series[0][0], showgrid=True, gridcolor="#e5e5e5", zeroline=True,
-                   zerolinecolor="#999999"),
-    )
+        yaxis=dict(title=dict(text=y_title or series[0][0]), showgrid=True, gridcolor="#e5e5e5",
+                   zeroline=True, zerolinecolor="#999999")))
     if any(axis == "y2" for *_, axis in series):
-        fig.update_layout(yaxis2=dict(title=series[-1][0], overlaying="y", side="right",
-                                      showgrid=False))
+        fig.merge_layout(dict(yaxis2=dict(title=dict(text=series[-1][0]), overlaying="y",
+                                          side="right", showgrid=False)))
     return fig

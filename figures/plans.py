@@ -10,13 +10,13 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-import plotly.graph_objects as go
 
 from solvers.kinematics import Motion
 from solvers.plans import POLE, Arrow, Plan, Plans
 
-from .linkage import Text, mechanism_traces, pose
+from .linkage import Text, mechanism_traces, pose, scatter
 from .paper import PaperArrow, PaperLabel, bounds, true_scale_svg
+from .raw import RawFigure
 from .style import NORMAL, Look, plane_layout
 
 SUPERSCRIPT = {"n": "ⁿ", "t": "ᵗ", "k": "ᵏ", "r": "ʳ"}
@@ -69,17 +69,17 @@ def plain(symbol: str) -> str:
 
 
 def mechanism_figure(motion: Motion, plans: Plans, title: str, t: Text,
-                     look: Look = NORMAL) -> go.Figure:
+                     look: Look = NORMAL) -> RawFigure:
     """The mechanism at the plans' instant, with the coincident points (B₄) marked."""
-    fig = plane_layout(go.Figure(), title, look)
+    fig = RawFigure()
     positions, rotations = pose(motion, 0)
-    fig.add_traces(mechanism_traces(motion.scene, positions, rotations, t, look))
+    fig.add_raw(mechanism_traces(motion.scene, positions, rotations, t, look))
     extra = {k: z for k, z in plans.positions.items() if k not in positions}
-    fig.add_trace(go.Scatter(x=[z.real for z in extra.values()], y=[z.imag for z in extra.values()],
-                             mode="text", text=[html(k.lower()).upper() for k in extra],
-                             textposition="bottom left", showlegend=False, hoverinfo="skip",
-                             textfont=dict(size=look.font)))
-    return fig
+    fig.add_raw([scatter(x=[z.real for z in extra.values()], y=[z.imag for z in extra.values()],
+                         mode="text", text=[html(k.lower()).upper() for k in extra],
+                         textposition="bottom left", showlegend=False, hoverinfo="skip",
+                         textfont=dict(size=look.font))])
+    return plane_layout(fig, title, look)
 
 
 def layout_plan(plan: Plan, scale: float, upto: int | None = None) -> PlanDrawing:
@@ -117,10 +117,10 @@ def _visible(d: Drawn) -> bool:
     return abs(d.head - d.tail) > 1e-9
 
 
-def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) -> go.Figure:
+def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) -> RawFigure:
     """The plan on a 1-cm grid, arrows coloured by kind (legend), labels like the book's,
     and a hover on each arrow with its length on the plan and its value."""
-    fig = go.Figure()
+    fig = RawFigure()
     faded = any(d.current for d in drawing.arrows)
     hover_x, hover_y, hover_text = [], [], []
     annotations = []
@@ -140,31 +140,36 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         hover_text.append(t("plans.hover", name=html(d.arrow.symbol), cm=f"{length:.2f}",
                             value=f"{length * drawing.scale:.4g}", unit=drawing.unit,
                             kind=t(KIND_KEYS[d.arrow.kind])))
-    fig.add_trace(go.Scatter(x=hover_x, y=hover_y, mode="markers", hoverinfo="text",
-                             hovertext=hover_text, showlegend=False,
-                             marker=dict(size=10 * look.line, color="rgba(0,0,0,0)")))
+    traces = [scatter(x=hover_x, y=hover_y, mode="markers", hoverinfo="text",
+                      hovertext=hover_text, showlegend=False,
+                      marker=dict(size=10 * look.line, color="rgba(0,0,0,0)"))]
     for kind, colour in KIND_COLOURS.items():  # legend entries for the arrow colours
         if any(d.arrow.kind == kind and _visible(d) for d in drawing.arrows):
-            fig.add_trace(go.Scatter(x=[None], y=[None], mode="lines", name=t(KIND_KEYS[kind]),
-                                     line=dict(color=colour, width=3 * look.line)))
+            traces.append(scatter(x=[None], y=[None], mode="lines", name=t(KIND_KEYS[kind]),
+                                  line=dict(color=colour, width=3 * look.line)))
     pole = "P<sub>v</sub>" if drawing.unit == "m/s" else "P<sub>a</sub>"
     places = _merged(drawing.labels)
-    fig.add_trace(go.Scatter(
+    traces.append(scatter(
         x=[z.real for z in places.values()], y=[z.imag for z in places.values()],
         mode="markers+text", text=[" ≡ ".join(pole if n == POLE else html(n) for n in names)
                                    for names in places],
         textposition="top right", hoverinfo="skip", showlegend=False,
         textfont=dict(size=look.font + 2), marker=dict(size=5 * look.line, color="black")))
+    fig.add_raw(traces)
+    fig.add_raw_annotations(annotations)
     x0, x1, y0, y1 = bounds(list(drawing.labels.values()))
-    fig.update_layout(annotations=annotations, title=dict(text=title, font=dict(size=look.font + 4)),
-                      height=look.height, margin=dict(l=10, r=10, t=60, b=10),
-                      plot_bgcolor="white", font=dict(size=look.font, color="black"),
-                      legend=dict(orientation="h", yanchor="top", y=-0.08, x=0.0))
     span = max(x1 - x0, y1 - y0)
-    grid = dict(showgrid=True, gridcolor="#e5e5e5", dtick=1 if span <= 25 else 5 if span <= 125 else None,
-                zeroline=False, showline=True, linecolor="black", mirror=True)
-    fig.update_xaxes(range=[x0, x1], title_text="[cm]", **grid)
-    fig.update_yaxes(range=[y0, y1], title_text="[cm]", scaleanchor="x", scaleratio=1, **grid)
+    grid = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, showline=True,
+                linecolor="black", mirror=True)
+    if span <= 125:
+        grid["dtick"] = 1 if span <= 25 else 5
+    fig.merge_layout(dict(
+        title=dict(text=title, font=dict(size=look.font + 4)), height=look.height,
+        margin=dict(l=10, r=10, t=60, b=10), plot_bgcolor="white",
+        font=dict(size=look.font, color="black"),
+        legend=dict(orientation="h", yanchor="top", y=-0.08, x=0.0),
+        xaxis=dict(range=[x0, x1], title=dict(text="[cm]"), **grid),
+        yaxis=dict(range=[y0, y1], title=dict(text="[cm]"), scaleanchor="x", scaleratio=1, **grid)))
     return fig
 
 

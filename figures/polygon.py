@@ -17,13 +17,16 @@ CLOSING = "#d62728"
 def arrows(fig: RawFigure, starts: list[complex], ends: list[complex], colours: list[str],
            labels: list[str], look: Look) -> None:
     """Arrows as layout annotations (a handful per figure), labelled at their middles."""
+    notes = []
     for a, b, colour, label in zip(starts, ends, colours, labels):
-        fig.add_annotation(x=b.real, y=b.imag, ax=a.real, ay=a.imag, xref="x", yref="y",
-                           axref="x", ayref="y", showarrow=True, arrowhead=3, arrowsize=1.2,
-                           arrowwidth=2 * look.line, arrowcolor=colour, text="")
+        a, b = complex(a), complex(b)
         mid = (a + b) / 2
-        fig.add_annotation(x=mid.real, y=mid.imag, text=label, showarrow=False,
-                           font=dict(size=look.font + 1, color=colour), xshift=10, yshift=10)
+        notes += [dict(x=b.real, y=b.imag, ax=a.real, ay=a.imag, xref="x", yref="y", axref="x",
+                       ayref="y", showarrow=True, arrowhead=3, arrowsize=1.2,
+                       arrowwidth=2 * look.line, arrowcolor=colour, text=""),
+                  dict(x=mid.real, y=mid.imag, xref="x", yref="y", text=label, showarrow=False,
+                       font=dict(size=look.font + 1, color=colour), xshift=10, yshift=10)]
+    fig.add_raw_annotations(notes)
 
 
 def polygon_figure(known: list[tuple[str, complex]], closing: list[tuple[str, complex]],
@@ -47,8 +50,9 @@ def polygon_figure(known: list[tuple[str, complex]], closing: list[tuple[str, co
                          line=dict(color=CLOSING, width=3))])
     plane_layout(fig, title, look, x_title=f"{axes[0]} [cm]", y_title=f"{axes[1]} [cm]")
     pad = 0.1 * max(np.ptp(points.real), np.ptp(points.imag), 1.0)
-    fig.update_xaxes(range=[points.real.min() - pad, points.real.max() + pad], dtick=1)
-    fig.update_yaxes(range=[points.imag.min() - pad, points.imag.max() + pad], dtick=1)
+    fig.merge_layout(dict(
+        xaxis=dict(range=[points.real.min() - pad, points.real.max() + pad], dtick=1),
+        yaxis=dict(range=[points.imag.min() - pad, points.imag.max() + pad], dtick=1)))
     return fig
 
 

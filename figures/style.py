@@ -10,6 +10,8 @@ from dataclasses import dataclass
 
 import plotly.graph_objects as go
 
+from .raw import RawFigure
+
 MEMBER_COLOURS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
                   "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"]
 FRAME_COLOUR = "#444444"
@@ -44,16 +46,21 @@ def path_colour(index: int) -> str:
 
 
 def plane_layout(fig: go.Figure, title: str, look: Look = NORMAL, x_title: str = "x [m]",
-                 y_title: str = "y [m]") -> go.Figure:
+                 y_title: str = "y [m]", equal: bool = True) -> go.Figure:
     """Equal scaling on x and y (a linkage must not look sheared), metres on both axes."""
-    fig.update_layout(
+    grid = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, linecolor="black",
+                mirror=True, showline=True)
+    layout = dict(
         title=dict(text=title, font=dict(size=look.font + 4)), height=look.height,
         margin=dict(l=10, r=10, t=60, b=10), plot_bgcolor="white",
         font=dict(size=look.font, color="black"), showlegend=True,
         legend=dict(orientation="h", yanchor="top", y=-0.1, xanchor="left", x=0.0),
-    )
-    grid = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, linecolor="black",
-                mirror=True, showline=True)
-    fig.update_xaxes(title_text=x_title, **grid)
-    fig.update_yaxes(title_text=y_title, scaleanchor="x", scaleratio=1, **grid)
+        xaxis=dict(title=dict(text=x_title), **grid),
+        yaxis=dict(title=dict(text=y_title), **grid))
+    if equal:
+        layout["yaxis"].update(scaleanchor="x", scaleratio=1)
+    if isinstance(fig, RawFigure):
+        fig.merge_layout(layout)
+    else:
+        fig.update_layout(layout)
     return fig

@@ -123,13 +123,14 @@ def animation_figure(motion: Motion, order: np.ndarray, points: list[str], title
     x = np.concatenate([p.x for p in motion.points.values()])
     y = np.concatenate([p.y for p in motion.points.values()])
     pad = 0.05 * max(np.nanmax(x) - np.nanmin(x), np.nanmax(y) - np.nanmin(y), 1e-9)
-    fig.update_xaxes(range=[np.nanmin(x) - pad, np.nanmax(x) + pad], autorange=False)
-    fig.update_yaxes(range=[np.nanmin(y) - pad, np.nanmax(y) + pad], autorange=False)
+    fig.merge_layout(dict(
+        xaxis=dict(range=[float(np.nanmin(x) - pad), float(np.nanmax(x) + pad)], autorange=False),
+        yaxis=dict(range=[float(np.nanmin(y) - pad), float(np.nanmax(y) + pad)], autorange=False)))
     frame_ms = 60
     play = dict(frame=dict(duration=frame_ms, redraw=False), transition=dict(duration=0),
                 fromcurrent=True, mode="immediate")
     pause = dict(frame=dict(duration=0, redraw=False), mode="immediate")
-    fig.update_layout(
+    fig.merge_layout(dict(
         updatemenus=[dict(type="buttons", direction="left", x=0.0, y=-0.08, xanchor="left",
                           yanchor="top", showactive=False, font=dict(size=look.font + 2),
                           pad=dict(t=10, r=10),
@@ -141,9 +142,9 @@ def animation_figure(motion: Motion, order: np.ndarray, points: list[str], title
                       steps=[dict(label=f"{labels[s]:.0f}", method="animate",
                                   args=[[str(s)], dict(frame=dict(duration=0, redraw=False),
                                                        mode="immediate")])
-                             for s in range(len(order))])])
+                             for s in range(len(order))])]))
     plane_layout(fig, title, look)
-    fig.update_layout(legend=dict(y=-0.3), margin=dict(b=40))
+    fig.merge_layout(dict(legend=dict(y=-0.3), margin=dict(b=40)))
     return fig
 
 

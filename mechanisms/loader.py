@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
+import functools
 import math
 import tomllib
 from pathlib import Path
@@ -126,8 +127,14 @@ def load_preset(preset_id: str):
 
 def preset_ids(kind: str | None = None) -> list[str]:
     """Preset ids, optionally only those of one kind ("linkage", "rotor", …)."""
+    return list(_preset_ids(kind))
+
+
+@functools.cache
+def _preset_ids(kind: str | None) -> tuple[str, ...]:
+    """Read once: the presets ship with the code (every page's scene box asks on each rerun)."""
     ids = sorted(p.stem for p in PRESETS.glob("*.toml"))
-    return [i for i in ids if kind is None or _kind_of(PRESETS / f"{i}.toml") == kind]
+    return tuple(i for i in ids if kind is None or _kind_of(PRESETS / f"{i}.toml") == kind)
 
 
 def _kind_of(path: Path) -> str:

@@ -12,6 +12,7 @@ import cmath
 import dataclasses
 import functools
 import math
+from collections import OrderedDict
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -21,8 +22,13 @@ from mechanisms.schema import DRIVER, FRAME, Scene
 from .loops import build_loop, cross, group_size, solve_dyad
 from .state import Body, unit
 from .structure import Group, Structure, StructureError, decompose
-from .triads import assemble, solve_triad
+from .triads import assemble, prepare_march, solve_triad
 
+# A class III group's assembly and branch-carrying march depend on its geometry (not on the
+# driver's position, speed or the requested values inside the marched range) and cost
+# ~0.2 s: they are kept for the last few geometries, so moving φ₂ re-solves in milliseconds.
+_PREPARED: OrderedDict[tuple, tuple] = OrderedDict()
+PREPARED_MAX = 32
 NEAR_SINGULAR = 1e-3  # |sin| of the angle between a group's unknown directions
 SINGULAR = 1e-9
 
@@ -180,13 +186,23 @@ class _Solved:
 
         size = group_size(scene, group)
         a0 = scene.driver.at if scene.guess_at is None else scene.guess_at
-        start = assemble(scene, group, known_at(np.array([a0])), size)
-        if start is None:
-            raise StructureError(
-                f"group {group.label()} ({group.kind}) cannot be assembled at the scene's "
-                "own instant: its links do not reach (check the lengths and the [guess] points)")
-        solution = solve_triad(scene, group, at, self.bodies, order, (a0, *start), known_at,
-                               tol=tol, size=size)
+        span = _march_span(scene, at, a0)
+        key = (repr(rate_scene.with_(at=0.0)), group.name, a0, span, tol)
+        prepared = _PREPARED.get(key)
+        if prepared is None:
+            start = assemble(scene, group, known_at(np.array([a0])), size)
+            if start is None:
+                raise StructureError(
+                    f"group {group.label()} ({group.kind}) cannot be assembled at the scene's "
+                    "own instant: its links do not reach (check the lengths and the [guess] points)")
+            start = (a0, *start)
+            prepared = start, prepare_march(scene, group, np.array(span), start, known_at, size)
+            _PREPARED[key] = prepared
+            while len(_PREPARED) > PREPARED_MAX:  # the oldest go (pages share this process)
+                _PREPARED.pop(next(iter(_PREPARED)), None)
+        start, march = prepared
+        solution = solve_triad(scene, group, at, self.bodies, order, start, known_at,
+                               tol=tol, size=size, march=march)
         self.newton[group.name] = NewtonReport(solution.iterations, solution.residual)
         return solution
 
@@ -203,6 +219,20 @@ class _Solved:
             if weak.any():
                 self.issues.append(GroupIssue(group.name, group.kind, "near-singular",
                                               _ranges(at, weak), float(1.0 / np.nanmin(t))))
+
+
+def _march_span(scene: Scene, at: np.ndarray, a0: float) -> tuple[float, float]:
+    """The driver range a class III march covers: the requested values and the sketch's
+    instant, widened to whole turns of a crank (to whole multiples of the links' total
+    length for a slider) so that other values nearby reuse the same march."""
+    lo, hi = float(np.min(at)), float(np.max(at))
+    if scene.driver.kind == "rotating":
+        unit, origin = 2 * math.pi, 0.0
+    else:
+        unit, origin = sum(scene.lengths.values()) or 1.0, a0
+    lo = origin + unit * math.floor((lo - origin) / unit + 1e-12)
+    hi = origin + unit * math.ceil((hi - origin) / unit - 1e-12)
+    return min(lo, a0), max(hi, a0)
 
 
 def special_pairs(scene: Scene, groups) -> dict[str, tuple[Group, int, int]]:

@@ -201,16 +201,17 @@ def rates(system: _System, known: dict[int, Body], bodies: dict[int, Body], leve
 def solve_triad(scene: Scene, group: Group, at: np.ndarray, known: dict[int, Body], order: int,
                 start: tuple[np.ndarray, np.ndarray],
                 known_at: Callable[[np.ndarray], dict[int, Body]], *, tol: float = 1e-10,
-                size: float = 1.0) -> TriadSolution:
+                size: float = 1.0, march: tuple | None = None) -> TriadSolution:
     """Positions (and rates up to ``order``) of a class III group at driver values ``at``.
 
     ``start`` is (driver value, z, θ per member): the group assembled where the scene
     sketches it;
     ``known_at(values)`` gives the known members at other driver values, with rates per
-    unit driver speed (dq/dφ₂), for the march that carries the branch.
+    unit driver speed (dq/dφ₂), for the march that carries the branch; ``march``, when
+    given, is that march already made (``prepare_march``) for a range covering ``at``.
     """
     system = _System(scene, group, size)
-    march = _march(system, scene, at, start, known_at)
+    march = march or prepare_march(scene, group, at, start, known_at, size)
     nodes = march[0]
     order_ = np.argsort(np.abs(at[:, None] - nodes[None, :]), axis=1)
     z, th, iterations, residual = _from_node(system, known, at, order_[:, 0], march, tol)
@@ -252,6 +253,12 @@ def _set_rates(bodies: dict[int, Body], x: np.ndarray, angular: str, linear: str
     for i, b in enumerate(bodies.values()):
         setattr(b, angular, x[:, 3 * i + 2])
         setattr(b, linear, cplx(x[:, 3 * i], x[:, 3 * i + 1]))
+
+
+def prepare_march(scene: Scene, group: Group, at: np.ndarray, start, known_at, size: float):
+    """The march that carries the branch over ``at`` (see ``_march``): the costly, sequential
+    part of a class III solve, and the same for every driver value within its range."""
+    return _march(_System(scene, group, size), scene, at, start, known_at)
 
 
 def _march(system, scene, at, start, known_at):

@@ -160,3 +160,23 @@ def test_cli_structure_and_special_points_json():
     motion = solve(load_preset("zbirka-4.3"))
     assert special["vx"] == pytest.approx(motion.special["S"].vx[0])
     assert abs(special["vy"]) < 1e-9  # S moves along x–x, the slider D's guide
+
+
+def test_the_kept_march_gives_the_same_answer_as_a_fresh_one():
+    """Moving φ₂ reuses the group's assembly and march (kept per geometry); the answer must
+    not depend on whether they were kept."""
+    from solvers import kinematics
+    from solvers.diagnostics import sweep_values
+
+    base = load_preset("triad-full-turn")
+    scene = base.with_(at=2.0)
+    values = np.append(sweep_values(scene, 72), scene.driver.at)
+    solve(base.with_(at=0.5), values)  # fills the memo for this geometry and range
+    kept = solve(scene, values)
+    kinematics._PREPARED.clear()
+    fresh = solve(scene, values)
+    for name, p in fresh.points.items():
+        np.testing.assert_array_equal(kept.points[name].z, p.z)
+    longer = dataclasses.replace(base, members={**base.members, 3: dataclasses.replace(
+        base.members[3], points={k: 1.01 * z for k, z in base.members[3].points.items()})})
+    assert not np.allclose(solve(longer, values).points["C"].z, fresh.points["C"].z)

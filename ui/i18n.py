@@ -18,6 +18,8 @@ from pathlib import Path
 import cyrtranslit
 import streamlit as st
 
+from ui.url import url_choice
+
 LOCALES = Path(__file__).resolve().parents[1] / "locales"
 LANGUAGES = {"sr": "Srpski (latinica)", "en": "English", "sr-cyrl": "Српски (ћирилица)"}
 KEEP = re.compile(r"⟨([^⟩]*)⟩")
@@ -75,8 +77,6 @@ def parse_number(text: str) -> float:
 
 def language_picker() -> str:
     """The language choice in the sidebar, kept in the URL as ``?lang=``."""
-    from ui.url import url_choice
-
     return url_choice(st.sidebar.selectbox, "Language · Jezik · Језик", list(LANGUAGES), "lang",
                       default=default_language(), format_func=LANGUAGES.get,
                       label_visibility="collapsed")

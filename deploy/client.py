@@ -1,0 +1,121 @@
+"""A browser tab in Python: Streamlit's own WebSocket protocol (the protobuf messages the
+web client sends and receives), for the load test and the page benchmark."""
+
+from __future__ import annotations
+
+import asyncio
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import websockets
+from streamlit.proto.BackMsg_pb2 import BackMsg
+from streamlit.proto.ForwardMsg_pb2 import ForwardMsg
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@dataclass
+class Report:
+    times: list[float] = field(default_factory=list)
+    by_page: dict[str, list[float]] = field(default_factory=dict)
+    errors: list[str] = field(default_factory=list)
+    wrong: list[str] = field(default_factory=list)
+
+
+class Session:
+    """One browser tab: a WebSocket, the page's widgets as the server last drew them."""
+
+    def __init__(self, url: str, page: str, link: str, report: Report):
+        self.url, self.page, self.link, self.report = url, page, link, report
+        self.widgets: dict[str, tuple[str, str]] = {}  # key → (widget id, "slider" | "number")
+        self.metrics: dict[str, str] = {}
+        self.figure_bytes = 0  # of the last run
+        self.page_hash = ""
+
+    async def run(self, ws, states=()) -> None:
+        msg = BackMsg()
+        msg.rerun_script.query_string = f"lang=en&{self.link}"
+        msg.rerun_script.page_name = self.page
+        msg.rerun_script.page_script_hash = self.page_hash
+        for widget_id, value in states:
+            state = msg.rerun_script.widget_states.widgets.add()
+            state.id = widget_id
+            if self.widgets.get(widget_id.rsplit("-", 1)[-1], ("", "slider"))[1] == "number":
+                state.double_value = value
+            else:
+                state.double_array_value.data.append(value)
+        start = time.perf_counter()
+        await ws.send(msg.SerializeToString())
+        self.metrics, self.figure_bytes = {}, 0
+        while True:
+            fm = ForwardMsg()
+            fm.ParseFromString(await ws.recv())
+            kind = fm.WhichOneof("type")
+            if kind == "navigation":
+                self.page_hash = fm.navigation.page_script_hash
+            elif kind == "delta" and fm.delta.WhichOneof("type") == "new_element":
+                self._element(fm.delta.new_element)
+            elif kind == "script_finished":
+                if fm.script_finished == ForwardMsg.FINISHED_SUCCESSFULLY:
+                    took = time.perf_counter() - start
+                    self.report.times.append(took)
+                    self.report.by_page.setdefault(self.page, []).append(took)
+                    return
+
+    def _element(self, element) -> None:
+        which = element.WhichOneof("type")
+        if which == "exception":
+            self.report.errors.append(f"{self.page}: {element.exception.message[:200]}")
+        elif which == "metric":
+            self.metrics[element.metric.label] = element.metric.body
+        elif which == "slider":
+            self.widgets[element.slider.id.rsplit("-", 1)[-1]] = (element.slider.id, "slider")
+        elif which == "number_input":
+            self.widgets[element.number_input.id.rsplit("-", 1)[-1]] = (element.number_input.id,
+                                                                         "number")
+        elif which == "plotly_chart":
+            self.figure_bytes += len(element.plotly_chart.spec)
+
+
+def percentile(values: list[float], q: float) -> float:
+    ordered = sorted(values)
+    return ordered[int(q * (len(ordered) - 1))]
+
+
+def memory_mb(pid: int) -> float:
+    for line in Path(f"/proc/{pid}/status").read_text().splitlines():
+        if line.startswith("VmRSS:"):
+            return int(line.split()[1]) / 1024
+    return float("nan")
+
+
+def free_port() -> int:
+    import socket
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def start_server(port: int) -> subprocess.Popen:
+    server = subprocess.Popen(
+        [sys.executable, "-m", "streamlit", "run", str(ROOT / "app.py"), "--server.port", str(port),
+         "--server.address", "127.0.0.1", "--server.headless", "true",
+         "--browser.gatherUsageStats", "false"],
+        cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return server
+
+
+async def wait_ready(url: str, seconds: float = 60) -> None:
+    deadline = time.monotonic() + seconds
+    while True:
+        try:
+            async with websockets.connect(url, subprotocols=["streamlit"], open_timeout=5):
+                return
+        except OSError:
+            if time.monotonic() > deadline:
+                raise
+            await asyncio.sleep(0.5)

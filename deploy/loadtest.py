@@ -1,0 +1,144 @@
+"""A class of users at once: N concurrent sessions speaking Streamlit's own WebSocket protocol
+(what a browser tab sends: open a page from a link, then move a slider, again and again).
+
+    .venv/bin/python deploy/loadtest.py                      # starts the app itself, 30 sessions, 120 s
+    .venv/bin/python deploy/loadtest.py --url http://127.0.0.1:8080 --sessions 40 --seconds 300
+
+Loopback only, and it stops by itself. Each session works one chapter page; on the
+kinetostatics page every answer is checked against the solver run here for that
+session's own φ₂, so one user's input showing up in another's page is caught. Reported:
+reruns, errors, wrong answers, the p50/p95/max rerun time (slider sent → script finished)
+and the server's memory before and after (when it started the server itself).
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import math
+import random
+import statistics
+import sys
+import time
+from pathlib import Path
+from urllib.parse import urlparse
+
+import websockets
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from deploy.client import (Report, Session, free_port, memory_mb, percentile,  # noqa: E402
+                           start_server, wait_ready)
+from mechanisms import load_preset  # noqa: E402
+from solvers.kinetostatics import analyse  # noqa: E402
+
+# page, link, slider to move and its range; the first page is checked answer by answer
+PAGES = [
+    ("kinetostatics", "scene=predavanja-kinetostatika", "at", (0.0, 359.5)),
+    ("trajectories", "scene=zbirka-1.1", "steps", None),
+    ("velocity_plans", "scene=zbirka-2.1", "at", (0.0, 359.5)),
+    ("assur_groups", "scene=triad-full-turn", "at", (0.0, 359.5)),
+    ("planetary_gears", "scene=zbirka-6.8", None, None),
+    ("rotor_balancing", "scene=zbirka-7.1", "precision", (0.1, 2.0)),
+]
+LECTURE = load_preset("predavanja-kinetostatika")
+
+
+def expected_torque(phi_deg: float) -> float:
+    return float(analyse(LECTURE.with_(at=math.radians(phi_deg))).driving[0])
+
+
+async def user(url: str, index: int, until: float, report: Report) -> None:
+    page, link, slider, span = PAGES[index % len(PAGES)]
+    rng = random.Random(index)
+    phi = round(rng.uniform(0, 359), 1) if slider == "at" else None
+    if phi is not None:
+        link += f"&at={phi}"
+    session = Session(url, page, link, report)
+    async with websockets.connect(url, subprotocols=["streamlit"], max_size=None,
+                                  open_timeout=60) as ws:
+        await session.run(ws)
+        while time.monotonic() < until:
+            await asyncio.sleep(rng.uniform(0.5, 2.0))  # a person reads before moving on
+            if slider is None or slider not in session.widgets:
+                await session.run(ws)
+                continue
+            widget_id, _ = session.widgets[slider]
+            if slider == "steps":
+                value = float(rng.choice([12, 24, 36, 72]))
+            else:
+                value = round(rng.uniform(*span), 1)
+            await session.run(ws, [(widget_id, value)])
+            if page == "kinetostatics":
+                check(session, value, report)
+
+
+def check(session: Session, phi: float, report: Report) -> None:
+    shown = session.metrics.get("M_p group by group", "")
+    try:
+        value = float(shown.split()[0])
+    except (ValueError, IndexError):
+        report.wrong.append(f"φ₂ = {phi}: no torque shown ({shown!r})")
+        return
+    exact = expected_torque(phi)
+    if not math.isclose(value, exact, rel_tol=2e-4, abs_tol=1e-3):
+        report.wrong.append(f"φ₂ = {phi}: page shows {value}, this session's answer is {exact:.5g}")
+
+
+async def load(url: str, sessions: int, seconds: float) -> Report:
+    report = Report()
+    until = time.monotonic() + seconds
+    results = await asyncio.gather(*(user(url, i, until, report) for i in range(sessions)),
+                                   return_exceptions=True)
+    report.errors += [f"session {i}: {type(r).__name__}: {r}" for i, r in enumerate(results)
+                      if isinstance(r, BaseException)]
+    return report
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--url", help="a running app (http://127.0.0.1:PORT); default: start one")
+    parser.add_argument("--sessions", type=int, default=30)
+    parser.add_argument("--seconds", type=float, default=120.0)
+    args = parser.parse_args(argv)
+    server = None
+    if args.url:
+        base = urlparse(args.url)
+        if base.hostname not in ("127.0.0.1", "localhost"):
+            parser.error("loopback only: give a 127.0.0.1 or localhost URL")
+        url = f"ws://{base.netloc}/_stcore/stream"
+    else:
+        port = free_port()
+        server = start_server(port)
+        url = f"ws://127.0.0.1:{port}/_stcore/stream"
+    try:
+        asyncio.run(wait_ready(url))
+        before = memory_mb(server.pid) if server else None
+        asyncio.run(load(url, min(args.sessions, 6), 5.0))  # warm the caches
+        warm = memory_mb(server.pid) if server else None
+        report = asyncio.run(load(url, args.sessions, args.seconds))
+        after = memory_mb(server.pid) if server else None
+    finally:
+        if server:
+            server.terminate()
+            server.wait(timeout=30)
+    times = sorted(report.times)
+    print(f"{args.sessions} sessions for {args.seconds:.0f} s against {url}")
+    print(f"reruns: {len(times)}, errors: {len(report.errors)}, wrong answers: {len(report.wrong)}")
+    if times:
+        print(f"rerun time: p50 {1e3 * statistics.median(times):.0f} ms, "
+              f"p95 {1e3 * percentile(times, 0.95):.0f} ms, "
+              f"max {1e3 * times[-1]:.0f} ms")
+    for page, page_times in sorted(report.by_page.items()):
+        print(f"  {page:16s} {len(page_times):5d} reruns, p50 {1e3 * statistics.median(page_times):5.0f} ms, "
+              f"p95 {1e3 * percentile(page_times, 0.95):5.0f} ms")
+    if server:
+        print(f"server memory: {before:.0f} MB at start, {warm:.0f} MB warm, {after:.0f} MB after")
+    for line in (report.errors + report.wrong)[:10]:
+        print("  " + line)
+    return 1 if report.errors or report.wrong or not times else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
