@@ -32,6 +32,7 @@ from .loops import cross
 from .state import Body, cplx
 from .structure import Group
 
+STALL = 8  # see newton(): how long a requested position may go without progress
 MAX_ITERATIONS = 40
 MARCH_STEPS = 36  # coarse nodes per full turn of a crank (10°)
 MARCH_TOL = 1e-12  # the march carries the branch: always tight, whatever the user's tolerance
@@ -154,15 +155,21 @@ def _take(body: Body, idx) -> Body:
                 pick(body.epsilon), pick(body.a), pick(body.angle))
 
 
-def newton(system: _System, known: dict[int, Body], z, th, tol: float):
+def newton(system: _System, known: dict[int, Body], z, th, tol: float, stall: int = MAX_ITERATIONS):
     """Newton's method from poses (z, θ) for all positions at once.
 
     Returns (z, θ, iterations, residual in m); positions that do not converge keep NaN.
+    ``stall`` gives up a position early when its residual stops falling: right for many
+    positions started from good predictions, where a position past the group's limit (no
+    pose there) would otherwise wander through all the iterations; the march, which must
+    cross dead points, keeps every iteration.
     """
     n = len(z)
     iterations = np.zeros(n, dtype=int)
     active = np.ones(n, dtype=bool)
     residual = np.full(n, np.inf)
+    best = np.full(n, np.inf)  # the smallest residual so far, and when it was reached
+    since = np.zeros(n, dtype=int)
     for _ in range(MAX_ITERATIONS):
         idx = np.flatnonzero(active)
         sub = {m: _take(b, idx) for m, b in known.items()}
@@ -170,8 +177,12 @@ def newton(system: _System, known: dict[int, Body], z, th, tol: float):
         rows = system.values(sub, 0)
         err = np.max(np.abs(rows), axis=-1)
         residual[idx] = err
+        improved = err < 0.9 * best[idx]
+        best[idx] = np.where(improved, err, best[idx])
+        since[idx] = np.where(improved, 0, since[idx] + 1)
         done = ~(err > tol * system.size)  # NaN is never done: it is a failure
-        bad = ~np.isfinite(err) | (err > 1e3 * system.size)
+        # diverged, or stalled (``stall`` iterations without a 10 % smaller residual)
+        bad = ~np.isfinite(err) | (err > 1e3 * system.size) | (~done & (since[idx] > stall))
         active[idx[done | bad]] = False
         if bad.any():
             z[idx[bad]], th[idx[bad]] = np.nan, np.nan
@@ -241,7 +252,7 @@ def _from_node(system, known, at, node, march, tol):
     nodes, z_nodes, th_nodes, dz_nodes, dth_nodes = march
     h = (at - nodes[node])[:, None]
     return newton(system, known, z_nodes[node] + dz_nodes[node] * h,
-                  th_nodes[node] + dth_nodes[node] * h, tol)
+                  th_nodes[node] + dth_nodes[node] * h, tol, stall=STALL)
 
 
 def _column_scale(system: _System) -> np.ndarray:
