@@ -12,9 +12,9 @@ from figures.style import Look
 from figures.trajectories import animation_figure, construction_figure, field_figure
 from mechanisms.schema import Scene, Travel
 from solvers.diagnostics import dead_zones, format_range
-from solvers.paths import (animation_order, cycle_time, cycle_values, field_path, loops_backward,
+from solvers.paths import (animation_order, cycle_time, field_path, loops_backward,
                            path_length, resolution_table, strokes, swings)
-from ui.cache import BY_REPR, solved
+from ui.cache import BY_REPR, cycle
 from ui.chapters import page_title
 from ui.export import chart, csv_button, show_table
 from ui.i18n import current, num, t, title_of
@@ -37,7 +37,7 @@ def accuracy(scene: Scene, points: tuple[str, ...]) -> list[dict]:
 @st.cache_resource(max_entries=16, hash_funcs=BY_REPR)
 def animation(scene: Scene, steps: int, points: tuple[str, ...], language: str, look_: Look):
     """The animation figure (the costliest to build); shared, never mutated."""
-    fine = solved(scene, tuple(cycle_values(scene, steps)), order=1)
+    fine = cycle(scene, steps, order=1)
     order = animation_order(fine.feasible)
     frames = order[::-(-len(order) // MAX_FRAMES)]  # at most MAX_FRAMES frames
     return animation_figure(fine, frames, list(points), title_of(scene), t, look_)
@@ -108,8 +108,8 @@ with controls:
     scene_download(scene)
 
 started = time.perf_counter()
-construction = solved(scene, tuple(cycle_values(scene, 12)))
-fine = solved(scene, tuple(cycle_values(scene, steps)), order=1)
+construction = cycle(scene, 12)
+fine = cycle(scene, steps, order=1)
 solve_ms = (time.perf_counter() - started) * 1e3
 
 with main:

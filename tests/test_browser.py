@@ -269,3 +269,12 @@ def test_the_kinetostatics_page_draws_the_polygon_and_shows_three_equal_torques(
     shot = tmp_path / "kinetostatics-polygon.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
+
+
+def test_a_table_downloads_as_csv_when_asked(app_url, browser, tmp_path):
+    """The CSV is written when the button is pressed (deferred), and holds the table."""
+    page = open_page(browser, f"{app_url}/kinetostatics?lang=en", size=(1600, 1100))
+    with page.expect_download(timeout=30_000) as download:
+        page.get_by_role("button", name="Download the table (CSV)").first.click()
+    text = Path(download.value.path()).read_text(encoding="utf-8")
+    assert text.splitlines()[0].startswith("F_pq,") and "F_45" in text

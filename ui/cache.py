@@ -12,6 +12,7 @@ import streamlit as st
 from mechanisms import Scene, load_preset
 from solvers import Motion, solve
 from solvers.diagnostics import solve_instant
+from solvers.paths import cycle_values
 
 BY_REPR = {Scene: repr}
 
@@ -22,9 +23,10 @@ def preset(preset_id: str) -> Scene:
 
 
 @st.cache_resource(max_entries=128, hash_funcs=BY_REPR)
-def solved(scene: Scene, values: tuple[float, ...], order: int = 0) -> Motion:
-    """``solve`` for driver values given as a tuple (hashable)."""
-    return solve(scene, list(values), order=order)
+def cycle(scene: Scene, steps: int, order: int = 0) -> Motion:
+    """The scene at ``steps`` equal positions over the cycle, from its instant
+    (``solvers.paths.cycle_values``): keyed by the count, not by thousands of values."""
+    return solve(scene, cycle_values(scene, steps), order=order)
 
 
 @st.cache_resource(max_entries=64, hash_funcs=BY_REPR)

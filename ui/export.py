@@ -10,8 +10,10 @@ from ui.i18n import t
 
 
 def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
-    st.download_button(t("export.csv"), table.to_csv(index=False).encode("utf-8"), filename,
-                       mime="text/csv", key=key, on_click="ignore", icon=":material/download:")
+    """The table as CSV, written only when the button is pressed (not on every rerun)."""
+    st.download_button(t("export.csv"), lambda: table.to_csv(index=False).encode("utf-8"),
+                       filename, mime="text/csv", key=key, on_click="ignore",
+                       icon=":material/download:")
 
 
 def chart(fig: go.Figure, filename: str, key: str) -> None:
