@@ -23,6 +23,7 @@ class Report:
     by_page: dict[str, list[float]] = field(default_factory=dict)
     errors: list[str] = field(default_factory=list)
     wrong: list[str] = field(default_factory=list)
+    memory: list[float] = field(default_factory=list)  # the server's, MB, when watched
 
 
 class Session:

@@ -86,10 +86,18 @@ def check(session: Session, phi: float, report: Report) -> None:
         report.wrong.append(f"φ₂ = {phi}: page shows {value}, this session's answer is {exact:.5g}")
 
 
-async def load(url: str, sessions: int, seconds: float) -> Report:
+async def watch_memory(pid: int | None, until: float, samples: list[float]) -> None:
+    """The server's memory every 20 s: it must level off once the caches are full."""
+    while pid and time.monotonic() < until:
+        samples.append(memory_mb(pid))
+        await asyncio.sleep(20)
+
+
+async def load(url: str, sessions: int, seconds: float, pid: int | None = None) -> Report:
     report = Report()
     until = time.monotonic() + seconds
-    results = await asyncio.gather(*(user(url, i, until, report) for i in range(sessions)),
+    users = [user(url, i, until, report) for i in range(sessions)]
+    results = await asyncio.gather(*users, watch_memory(pid, until, report.memory),
                                    return_exceptions=True)
     report.errors += [f"session {i}: {type(r).__name__}: {r}" for i, r in enumerate(results)
                       if isinstance(r, BaseException)]
@@ -117,7 +125,7 @@ def main(argv: list[str] | None = None) -> int:
         before = memory_mb(server.pid) if server else None
         asyncio.run(load(url, min(args.sessions, 6), 5.0))  # warm the caches
         warm = memory_mb(server.pid) if server else None
-        report = asyncio.run(load(url, args.sessions, args.seconds))
+        report = asyncio.run(load(url, args.sessions, args.seconds, server.pid if server else None))
         after = memory_mb(server.pid) if server else None
     finally:
         if server:
@@ -134,7 +142,8 @@ def main(argv: list[str] | None = None) -> int:
         print(f"  {page:16s} {len(page_times):5d} reruns, p50 {1e3 * statistics.median(page_times):5.0f} ms, "
               f"p95 {1e3 * percentile(page_times, 0.95):5.0f} ms")
     if server:
-        print(f"server memory: {before:.0f} MB at start, {warm:.0f} MB warm, {after:.0f} MB after")
+        print(f"server memory: {before:.0f} MB at start, {warm:.0f} MB warm, {after:.0f} MB after; "
+              f"every 20 s: {', '.join(f'{m:.0f}' for m in report.memory)} MB")
     for line in (report.errors + report.wrong)[:10]:
         print("  " + line)
     return 1 if report.errors or report.wrong or not times else 0

@@ -25,8 +25,8 @@ trap stop EXIT INT TERM
 servers=""
 for i in $(seq 0 $((PROCESSES - 1))); do
   port=$((FIRST + i))
-  .venv/bin/streamlit run app.py --server.port "$port" --server.address 127.0.0.1 \
-    --server.headless true --browser.gatherUsageStats false --server.cookieSecret "$SECRET" \
+  STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/streamlit run app.py \
+    --server.port "$port" --server.address 127.0.0.1 --server.headless true \
     > "$RUN/app-$port.log" 2>&1 &
   pids+=($!)
   servers+="        server 127.0.0.1:$port max_fails=0;"$'\n'
@@ -39,4 +39,6 @@ nginx -t -p "$RUN" -c "$RUN/nginx.conf" -q
 nginx -p "$RUN" -c "$RUN/nginx.conf" -g "daemon off;" &
 pids+=($!)
 echo "Mehanizmi: $PROCESSES processes behind nginx at http://$HOST:$PORT (logs in $RUN)"
-wait -n
+wait -n || true
+echo "a process stopped; stopping the rest (logs: $RUN)" >&2
+cat "$RUN"/error.log "$RUN"/app-*.log 2>/dev/null | tail -20 >&2

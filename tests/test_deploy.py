@@ -1,0 +1,46 @@
+"""The class-sized setup: the load test's own client and the proxy configuration."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from deploy.loadtest import main
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_a_short_load_test_runs_clean(capsys):
+    """Six sessions, one per page, for a few seconds against a server of its own: no error,
+    no answer from another session, every page rerun."""
+    assert main(["--sessions", "6", "--seconds", "6"]) == 0
+    out = capsys.readouterr().out
+    assert "errors: 0, wrong answers: 0" in out
+    for page in ("kinetostatics", "trajectories", "velocity_plans", "assur_groups",
+                 "planetary_gears", "rotor_balancing"):
+        assert page in out
+
+
+def test_the_load_test_refuses_anything_but_loopback():
+    with pytest.raises(SystemExit):
+        main(["--url", "http://example.org:8080"])
+
+
+@pytest.mark.skipif(shutil.which("nginx") is None, reason="nginx is installed by deploy/start.sh")
+def test_the_proxy_configuration_is_valid_nginx(tmp_path):
+    servers = "        server 127.0.0.1:8601;\n        server 127.0.0.1:8602;\n"
+    text = (ROOT / "deploy" / "nginx.conf.in").read_text()
+    for key, value in {"@RUN@": str(tmp_path), "@PORT@": "18080", "@HOST@": "127.0.0.1",
+                       "@SERVERS@": servers}.items():
+        text = text.replace(key, value)
+    for sub in ("body", "proxy", "fastcgi", "uwsgi", "scgi"):
+        (tmp_path / sub).mkdir()
+    conf = tmp_path / "nginx.conf"
+    conf.write_text(text)
+    result = subprocess.run(["nginx", "-t", "-p", str(tmp_path), "-c", str(conf)],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert "hash $route consistent" in text and "Upgrade $http_upgrade" in text
