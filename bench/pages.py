@@ -23,7 +23,7 @@ from deploy.client import Report, Session, free_port, start_server, wait_ready  
 PAGES = [
     ("trajectories", "omega", [5.0 + i for i in range(12)]),
     ("velocity_plans", "at", [20.0 + 5 * i for i in range(12)]),
-    ("assur_groups", "at", [200.0 + 7 * i for i in range(12)]),
+    ("assur_groups", "at", [300.0 + 4 * i for i in range(12)]),  # zbirka-4.1 reaches 298–360°
     ("kinetostatics", "at", [100.0 + 7 * i for i in range(12)]),
     ("planetary_gears", "H", [1.5, 2.0, 2.5, 3.0] * 3),
     ("rotor_balancing", "precision", [0.3, 0.5, 0.7, 0.9] * 3),

@@ -222,14 +222,14 @@ class _Solved:
 
 
 def _march_span(scene: Scene, at: np.ndarray, a0: float) -> tuple[float, float]:
-    """The driver range a class III march covers: the requested values and the sketch's
-    instant, widened to whole turns of a crank (to whole multiples of the links' total
-    length for a slider) so that other values nearby reuse the same march."""
-    lo, hi = float(np.min(at)), float(np.max(at))
+    """The driver range a class III march covers. For a crank: a whole turn each way from
+    the sketch's instant, whatever is asked (every angle is reached along the branch, see
+    triads._onto_march). For a slider: the requested values and the instant, widened to
+    whole multiples of the links' total length, so that values nearby reuse the march."""
     if scene.driver.kind == "rotating":
-        unit, origin = 2 * math.pi, 0.0
-    else:
-        unit, origin = sum(scene.lengths.values()) or 1.0, a0
+        return a0 - 2 * math.pi, a0 + 2 * math.pi
+    lo, hi = float(np.min(at)), float(np.max(at))
+    unit, origin = sum(scene.lengths.values()) or 1.0, a0
     lo = origin + unit * math.floor((lo - origin) / unit + 1e-12)
     hi = origin + unit * math.ceil((hi - origin) / unit - 1e-12)
     return min(lo, a0), max(hi, a0)

@@ -35,6 +35,8 @@ from .structure import Group
 STALL = 8  # see newton(): how long a requested position may go without progress
 MAX_ITERATIONS = 40
 MARCH_STEPS = 36  # coarse nodes per full turn of a crank (10°)
+MARCH_SPLITS = 5  # halvings of a march step that Newton cannot close from its prediction
+MARCH_ITERATIONS = 12  # more than this from a predicted pose means Newton wandered
 MARCH_TOL = 1e-12  # the march carries the branch: always tight, whatever the user's tolerance
 
 
@@ -224,14 +226,22 @@ def solve_triad(scene: Scene, group: Group, at: np.ndarray, known: dict[int, Bod
     system = _System(scene, group, size)
     march = march or prepare_march(scene, group, at, start, known_at, size)
     nodes = march[0]
-    order_ = np.argsort(np.abs(at[:, None] - nodes[None, :]), axis=1)
-    z, th, iterations, residual = _from_node(system, known, at, order_[:, 0], march, tol)
-    retry = np.flatnonzero(~np.all(np.isfinite(z), axis=1))
-    if retry.size and len(nodes) > 1:  # a poor prediction near a limit: try the other node
-        sub = {m: _take(b, retry) for m, b in known.items()}
-        z2, th2, it2, res2 = _from_node(system, sub, at[retry], order_[retry, 1], march, tol)
-        z[retry], th[retry], residual[retry] = z2, th2, res2
-        iterations[retry] += it2
+    at = _onto_march(scene, at, nodes)
+    m = len(group.members)
+    z = np.full((at.size, m), np.nan, dtype=complex)
+    th = np.full((at.size, m), np.nan)
+    iterations = np.zeros(at.size, dtype=int)
+    residual = np.full(at.size, np.nan)
+    todo = np.flatnonzero(np.isfinite(at))  # the values the branch reaches
+    for rank in (0, 1):  # the nearest node; then, where that failed, the next one
+        if rank == 1:
+            todo = todo[~np.all(np.isfinite(z[todo]), axis=1)]
+        if todo.size == 0 or rank >= len(nodes):
+            break
+        near = np.argsort(np.abs(at[todo, None] - nodes[None, :]), axis=1)[:, rank]
+        sub = {n: _take(b, todo) for n, b in known.items()}
+        z[todo], th[todo], it, residual[todo] = _from_node(system, sub, at[todo], near, march, tol)
+        iterations[todo] += it
     closed = np.all(np.isfinite(z), axis=1)
     bodies = _poses(group.members, z, th)
     if order < 1:
@@ -245,6 +255,21 @@ def solve_triad(scene: Scene, group: Group, at: np.ndarray, known: dict[int, Bod
     if order >= 2:
         _set_rates(bodies, rates(system, known, bodies, 2, jac), "epsilon", "a")
     return TriadSolution(bodies, transmission, closed, iterations, residual)
+
+
+def _onto_march(scene: Scene, at: np.ndarray, nodes: np.ndarray) -> np.ndarray:
+    """Each value as a driver value inside the range the march carried the branch over, or
+    NaN where it lies outside (the branch does not reach it). A crank angle and the same
+    angle a turn on are one position: the turn (…, −2π, 0, +2π, …) that falls inside is
+    taken, so the branch comes from the march's own continuous path, even where reaching a
+    value directly would mean crossing a dead point backwards."""
+    lo, hi = nodes[0] - 1e-12, nodes[-1] + 1e-12
+    shifts = np.arange(-2, 3) * 2 * math.pi if scene.driver.kind == "rotating" else np.zeros(1)
+    candidates = at[None, :] + shifts[:, None]
+    inside = (candidates >= lo) & (candidates <= hi)
+    pick = np.argmax(inside / (1.0 + np.abs(shifts))[:, None], axis=0)  # inside, least shift
+    out = candidates[pick, np.arange(at.size)]
+    return np.where(inside.any(axis=0), out, np.nan)
 
 
 def _from_node(system, known, at, node, march, tol):
@@ -274,38 +299,59 @@ def prepare_march(scene: Scene, group: Group, at: np.ndarray, start, known_at, s
 
 def _march(system, scene, at, start, known_at):
     """Carry the assembled pose from the scene's instant over the driver's range in coarse
-    steps (predictor: the exact rate; corrector: Newton). Returns the nodes with their
-    poses and pose rates per unit driver motion; nodes past a failure are NaN."""
+    steps (predictor: the exact rate; corrector: Newton), splitting a step where needed.
+    Returns every driver value the branch was carried to (sorted), with its pose and pose
+    rate per unit driver motion: the branch ends where the march stopped."""
     a0, *pose = start
     lo, hi = min(float(np.min(at)), a0), max(float(np.max(at)), a0)
     # steps of 10° for a crank, of a 36th of the group's size for a slider
     h = (2 * math.pi if scene.driver.kind == "rotating" else system.size) / MARCH_STEPS
-    up = a0 + h * np.arange(0, math.ceil((hi - a0) / h - 1e-9) + 1)
+    up = a0 + h * np.arange(1, math.ceil((hi - a0) / h - 1e-9) + 1)
     down = a0 - h * np.arange(1, math.ceil((a0 - lo) / h - 1e-9) + 1)
-    nodes = np.concatenate([down[::-1], up])
-    known = known_at(nodes)
-    m = len(system.unknown)
-    z = np.full((len(nodes), m), np.nan, dtype=complex)
-    th = np.full((len(nodes), m), np.nan)
-    dz, dth = np.zeros_like(z), np.zeros_like(th)
-    first = len(down)
-    z[first], th[first] = pose
-    for order in (range(first, len(nodes)), range(first, -1, -1)):
-        prev = None
-        for i in order:
-            k = {n: _take(b, [i]) for n, b in known.items()}
-            if prev is not None:
-                step = nodes[i] - nodes[prev]
-                zi, ti = z[prev] + dz[prev] * step, th[prev] + dth[prev] * step
-                zi, ti, _, _ = newton(system, k, zi[None].copy(), ti[None].copy(), MARCH_TOL)
-                if not np.all(np.isfinite(zi)):
-                    break
-                z[i], th[i] = zi[0], ti[0]
-            bodies = _poses(system.unknown, z[i][None], th[i][None])
-            x = rates(system, k, bodies, 1, system.jacobian({**k, **bodies}))[0]
-            dz[i], dth[i] = cplx(x[0::3], x[1::3]), x[2::3]
-            prev = i
+    known_first = {n: _take(b, [0]) for n, b in known_at(np.array([a0])).items()}
+    first = (a0, pose[0], pose[1], *_pose_rate(system, known_first, *pose))
+    trail = [first]
+    for targets in (up, down):
+        known = known_at(targets)
+        state = first
+        for i, b in enumerate(targets):
+            k = {n: _take(bd, [i]) for n, bd in known.items()}
+            if not _step(system, known_at, state, b, k, trail):
+                break
+            state = trail[-1]
+    trail.sort(key=lambda node: node[0])
+    nodes, z, th, dz, dth = (np.array(column) for column in zip(*trail))
     return nodes, z, th, dz, dth
+
+
+def _pose_rate(system, known, z, th):
+    """dz/dq, dθ/dq of the group's pose (per unit driver motion) at one position."""
+    bodies = _poses(system.unknown, z[None], th[None])
+    x = rates(system, known, bodies, 1, system.jacobian({**known, **bodies}))[0]
+    return cplx(x[0::3], x[1::3]), x[2::3]
+
+
+def _step(system, known_at, state, b, known_b, trail, depth: int = 0) -> bool:
+    """Carry the pose from ``state`` (value, pose, rate) to driver value b: predicted with
+    the rate, corrected by Newton; every pose reached is appended to ``trail``. From a good
+    prediction Newton converges in a few steps; one that needs many has wandered and may
+    land on the other assembly (the march once jumped branches that way, silently, where
+    zbirka-4.1's group reaches its limit). Such a step is split in two (up to 5 times:
+    10° down to 0.3°); where even the smallest step fails, the branch ends."""
+    a, z0, th0, dz0, dth0 = state
+    h = b - a
+    z, th, iterations, _ = newton(system, known_b, (z0 + dz0 * h)[None].copy(),
+                                  (th0 + dth0 * h)[None].copy(), MARCH_TOL)
+    if np.all(np.isfinite(z)) and iterations[0] <= MARCH_ITERATIONS:
+        trail.append((b, z[0], th[0], *_pose_rate(system, known_b, z[0], th[0])))
+        return True
+    if depth >= MARCH_SPLITS:
+        return False
+    mid = 0.5 * (a + b)
+    known_mid = {n: _take(bd, [0]) for n, bd in known_at(np.array([mid])).items()}
+    if not _step(system, known_at, state, mid, known_mid, trail, depth + 1):
+        return False
+    return _step(system, known_at, trail[-1], b, known_b, trail, depth + 1)
 
 
 def assemble(scene: Scene, group: Group, known: dict[int, Body], size: float,

@@ -21,12 +21,9 @@ from solvers.kinetostatics import analyse
 from . import scenes
 
 CYCLE = np.linspace(0.0, 2 * math.pi, 73)
-# Left out: triad-full-turn passes a dead point at φ₂ ≈ 271.7°, where rounding decides which
-# way its group goes on (see test_a_dead_point_of_a_class_iii_group_is_flagged); zbirka-4.1
-# scaled by 1e4 loses the part of its range below 293° (its march's first step down from
-# the sketch does not converge) — a known open problem, written down in the closing note.
 ROTATING = ["four-bar-crank-rocker", "slider-crank", "zbirka-2.1", "zbirka-2.2", "zbirka-2.5",
-            "zbirka-3.1", "tangent-slotted-crank", "zbirka-4.3", "predavanja-kinetostatika"]
+            "zbirka-3.1", "tangent-slotted-crank", "zbirka-4.1", "zbirka-4.3", "triad-full-turn",
+            "predavanja-kinetostatika"]
 
 
 def scaled(scene, k: float):
