@@ -228,12 +228,16 @@ if tabs[3].open:
               f"{scene.id}-torque", key="fig_cycle")
         power = k.power[:now]
         feasible = np.isfinite(power)
+        peak = float(np.nanmax(np.abs(power), initial=0))
+        # the mean over a cycle of loads that do no net work is zero up to rounding: show 0
+        mean = float(np.mean(power[feasible])) if feasible.any() else math.nan
+        mean = 0.0 if abs(mean) <= 1e-9 * peak else mean
         cols = st.columns(3)
-        cols[0].metric(t("forces.mean_power"), f"{num(np.mean(power[feasible]), 4)} W"
-                       if feasible.any() else "—")
-        cols[1].metric(t("forces.peak_power"), f"{num(np.nanmax(np.abs(power), initial=0), 4)} W")
-        cols[2].metric(t("forces.peak_driving", symbol=symbol),
-                       num(np.nanmax(np.abs(k.driving[:now]), initial=0), 4))
+        cols[0].metric(t("forces.mean_power"), f"{num(mean, 4)} W" if feasible.any() else "—")
+        cols[1].metric(t("forces.peak_power"), f"{num(peak, 4)} W")
+        name, unit = ("M_p", "N·m") if rotating else ("F_p", "N")
+        cols[2].metric(t("forces.peak_driving", symbol=name),
+                       f"{num(np.nanmax(np.abs(k.driving[:now]), initial=0), 4)} {unit}")
         if not feasible.all():
             st.caption(t("forces.part_cycle", share=num(100 * feasible.mean(), 3)))
         for issue in k.motion.issues:
