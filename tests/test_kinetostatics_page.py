@@ -101,3 +101,12 @@ def test_the_scene_note_reads_in_serbian_cyrillic_with_latin_notation():
     note = next(m.value for m in at.markdown if "F₅ = 100 N" in m.value)
     assert "Криваја" in note  # prose transliterated …
     assert "OA" in note and "⟨" not in note  # … notation kept as the course writes it
+
+
+def test_loads_that_do_no_net_work_need_no_mean_power():
+    """The lecture's loads (a constant force and a couple on an oscillating rocker) do no
+    net work over a cycle: the mean driving power reads 0 W, not a rounding residue."""
+    at = page(PAGE, lang="en", tab="Over the cycle")
+    values = {m.label: m.value for m in at.metric}
+    assert values["Mean driving power"] == "0 W"
+    assert values["Peak |M_p|"].endswith("N·m")
