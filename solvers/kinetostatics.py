@@ -28,12 +28,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from mechanisms.schema import DRIVER, FRAME, Pair, Scene
+from mechanisms.schema import DRIVER, Pair, Scene
 
 from .kinematics import Motion, solve
 from .loops import cross, group_size
 from .state import Body
-from .structure import Group
 
 SINGULAR = 1e12  # condition number beyond which a group's system is treated as singular
 
@@ -185,14 +184,14 @@ def analyse(scene: Scene, at=None, *, inertia: bool = True, motion: Motion | Non
     condition: dict[str, np.ndarray] = {}
     order = []
     for group in reversed(motion.structure.groups):
-        solution, condition[group.name] = _solve_group(scene, group, bodies, loads, couples,
-                                                       known, motion.at.shape)
+        solution, _, condition[group.name] = _solve_body(
+            scene, group.members, group.pairs, group_size(scene, group), bodies, loads, couples,
+            known, motion.at.shape)
         order.append(group.name)
-        for r in solution:
-            known[(r.by, r.on)] = r
-            known[(r.on, r.by)] = r.reversed()
-    driving, condition["driver"] = _solve_driver(scene, motion, loads, couples, known)
+        _record(known, solution)
+    solution, driving, condition["driver"] = _solve_driver(scene, motion, loads, couples, known)
     order.append("driver")
+    _record(known, solution)
 
     unit_v = _unit_velocities(scene, motion)
     shape = motion.at.shape
@@ -205,6 +204,13 @@ def analyse(scene: Scene, at=None, *, inertia: bool = True, motion: Motion | Non
     return Kinetostatics(motion, loads, couples, inertias, known, driving, -virtual,
                          driving_lever, power, virtual * scene.driver.speed + power, condition,
                          tuple(order), scale, lever)
+
+
+def _record(known: dict, reactions: list[Reaction]) -> None:
+    """Each reaction F_pq, and F_qp = −F_pq."""
+    for r in reactions:
+        known[(r.by, r.on)] = r
+        known[(r.on, r.by)] = r.reversed()
 
 
 # --- loads ----------------------------------------------------------------------------
@@ -333,66 +339,62 @@ def _condition(a: np.ndarray) -> np.ndarray:
                          else np.inf for m in flat]).reshape(a.shape[:-2])
 
 
-def _solve_group(scene: Scene, group: Group, bodies, loads, couples, known, n):
-    size = group_size(scene, group)
-    rows, wrench = _equations(group.members, bodies, size, n)
-    k = 3 * len(group.members)
+def _solve_body(scene: Scene, members: tuple[int, ...], pairs, size: float, bodies, loads,
+                couples, known, n, extra=()):
+    """Equilibrium of a free body (an Assur group, or the driving member) at every position:
+    two unknowns per pair, plus ``extra`` unknown actions (force, point, couple) on its first
+    member — the driving torque or force. Returns the pairs' reactions, the extra unknowns
+    and the condition number per position."""
+    rows, wrench = _equations(members, bodies, size, n)
+    k = 3 * len(members)
     rhs = np.zeros((k,) + n)
-    for m in group.members:
+    for m in members:
         for action in _known_actions(m, loads, couples, known):
             rhs[rows[m]:rows[m] + 3] -= wrench(m, *action)
     columns, meta = [], []
-    for pair in group.pairs:
+    for pair in pairs:
         units, direction = _unknowns(scene, pair, bodies)
         for force, point, couple in units:
             col = np.zeros((k,) + n)
-            scale = size if couple else 1.0  # couples in units of size·N: columns alike
             for sign, member in ((-1.0, pair.members[0]), (1.0, pair.members[1])):
                 if member in rows:
-                    col[rows[member]:rows[member] + 3] += sign * scale * wrench(
-                        member, force, point, couple)
+                    col[rows[member]:rows[member] + 3] += sign * _column(wrench, member, size,
+                                                                          force, point, couple)
             columns.append(col)
         meta.append((pair, units, direction))
+    for force, point, couple in extra:
+        col = np.zeros((k,) + n)
+        col[:3] = _column(wrench, members[0], size, force, point, couple)
+        columns.append(col)
     x, cond = _solve_system(columns, rhs, n, k)
     out = []
     for i, (pair, units, direction) in enumerate(meta):
         (f1, point, _), (f2, _, c2) = units
         u1, u2 = x[2 * i], x[2 * i + 1]
-        force = u1 * f1 + u2 * f2
         couple = u2 * size if c2 else np.zeros(n)
-        out.append(Reaction(pair, pair.members[0], pair.members[1], force,
+        out.append(Reaction(pair, pair.members[0], pair.members[1], u1 * f1 + u2 * f2,
                             np.broadcast_to(point, n), couple, direction))
-    return out, cond
+    extras = [x[2 * len(meta) + j] * (size if couple else 1.0)
+              for j, (_, _, couple) in enumerate(extra)]
+    return out, extras, cond
+
+
+def _column(wrench, member: int, size: float, force, point, couple) -> np.ndarray:
+    """One unknown's column; a couple unknown is counted in units of size·N, so that every
+    column has entries of one order."""
+    return (size if couple else 1.0) * wrench(member, force, point, couple)
 
 
 def _solve_driver(scene: Scene, motion: Motion, loads, couples, known):
     """Member 2: its pair with the frame (two unknowns) and M_p (or F_p along the guide)."""
-    bodies = motion.bodies
     n = motion.at.shape
     pair = scene.pair(scene.driver.pair)
     size = max((abs(c) for c in scene.members[DRIVER].points.values()), default=0.0) or 1.0
-    rows, wrench = _equations((DRIVER,), bodies, size, n)
-    rhs = np.zeros((3,) + n)
-    for action in _known_actions(DRIVER, loads, couples, known):
-        rhs -= wrench(DRIVER, *action)
-    units, direction = _unknowns(scene, pair, bodies)
-    sign = 1.0 if pair.members[1] == DRIVER else -1.0
-    columns = [sign * (size if c else 1.0) * wrench(DRIVER, f, p, c) for f, p, c in units]
-    if scene.driver.kind == "rotating":
-        columns.append(size * wrench(DRIVER, 0j, 0j, 1.0))
-    else:
-        columns.append(wrench(DRIVER, direction, units[0][1], 0.0))
-    x, cond = _solve_system(columns, rhs, n, 3)
-    (f1, point, _), (f2, _, _) = units
-    reaction = Reaction(pair, pair.members[0], pair.members[1], x[0] * f1 + x[1] * f2,
-                        np.broadcast_to(point, n),
-                        x[1] * size if pair.kind == "prismatic" else np.zeros(n), direction)
-    if reaction.by != FRAME:
-        reaction = reaction.reversed()
-    known[(FRAME, DRIVER)] = reaction
-    known[(DRIVER, FRAME)] = reaction.reversed()
-    driving = x[2] * size if scene.driver.kind == "rotating" else x[2]
-    return driving, cond
+    units, direction = _unknowns(scene, pair, motion.bodies)
+    drive = (0j, 0j, 1.0) if scene.driver.kind == "rotating" else (direction, units[0][1], 0.0)
+    reactions, (driving,), cond = _solve_body(scene, (DRIVER,), (pair,), size, motion.bodies,
+                                              loads, couples, known, n, extra=(drive,))
+    return reactions, driving, cond
 
 
 # --- the two checks ---------------------------------------------------------------------
