@@ -17,8 +17,7 @@ from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_r
 from solvers.kinetostatics import Kinetostatics, analyse, free_body
 from solvers.report import has_loads
 from solvers.structure import StructureError
-from solvers.textbook import check
-from ui.book import book_table
+from ui.book import book_section
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
 from ui.export import chart, print_button, show_table
@@ -106,17 +105,8 @@ def inertia_table(k: Kinetostatics, i: int) -> pd.DataFrame:
                      "M_i [N·m]": num(float(inert.moment[i]), 4),
                      "S [m]": f"({num(inert.centre[i].real, 4)}; {num(inert.centre[i].imag, 4)})",
                      "K [m]": "—" if K is None else f"({num(K.real, 4)}; {num(K.imag, 4)})",
-                     t("forces.col_huygens_moment"): num(huygens_moment(inert, i), 4)})
+                     t("forces.col_huygens_moment"): num(float(inert.huygens_moment[i]), 4)})
     return pd.DataFrame(rows)
-
-
-def huygens_moment(inert, i: int) -> float:
-    """The moment about S of the book's form (−m·a_SB at K): equal to M_i = −J·ε."""
-    if inert.huygens is None:
-        return float(inert.moment[i])
-    arm = complex(inert.huygens[i] - inert.centre[i])
-    f = complex(inert.relative_force[i])
-    return arm.real * f.imag - arm.imag * f.real
 
 
 def driving_metrics(k: Kinetostatics, i: int) -> None:
@@ -262,11 +252,7 @@ if tabs[3].open:
 
 if scene.book:
     with main:
-        st.subheader(t("plans.book_title"))
-        if scene == base:
-            show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
-        else:
-            st.info(t("plans.book_changed"))
+        book_section(scene, base)
 
 with controls:
     unit = "N·m" if rotating else "N"

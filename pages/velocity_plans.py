@@ -14,9 +14,8 @@ from solvers.analytic import equations, solved_values
 from solvers.diagnostics import Unsolvable
 from solvers.plans import Plans, build, describe, readings
 from solvers.structure import StructureError
-from solvers.textbook import check
 from ui.cache import BY_REPR, instant
-from ui.book import book_table
+from ui.book import book_section
 from ui.chapters import page_title
 from ui.export import chart, print_button, show_table
 from ui.i18n import num, t, title_of
@@ -177,11 +176,7 @@ if tab_accuracy.open:
                                if r.exact else "—"} for r in values])
         show_table(table, f"{scene.id}-readings.csv", "csv_readings")
         if scene.book:
-            st.subheader(t("plans.book_title"))
-            if scene == base:
-                show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
-            else:
-                st.info(t("plans.book_changed"))
+            book_section(scene, base)
 
 with controls:
     answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty)

@@ -77,6 +77,14 @@ class Inertia:
     base_force: np.ndarray  # −m·a_B, acting at S
     relative_force: np.ndarray  # −m·a_SB, acting at K
 
+    @property
+    def huygens_moment(self) -> np.ndarray:
+        """The moment about S of −m·a_SB at K: equal to M_i, which is what the book's form
+        relies on (M_i itself where there is no K)."""
+        if self.huygens is None:
+            return self.moment
+        return cross(self.huygens - self.centre, self.relative_force)
+
 
 @dataclass
 class Reaction:
