@@ -8,8 +8,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import plotly.graph_objects as go
-
 from .raw import RawFigure
 
 MEMBER_COLOURS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
@@ -45,8 +43,8 @@ def path_colour(index: int) -> str:
     return PATH_COLOURS[index % len(PATH_COLOURS)]
 
 
-def plane_layout(fig: go.Figure, title: str, look: Look = NORMAL, x_title: str = "x [m]",
-                 y_title: str = "y [m]", equal: bool = True) -> go.Figure:
+def plane_layout(fig: RawFigure, title: str, look: Look = NORMAL, x_title: str = "x [m]",
+                 y_title: str = "y [m]", equal: bool = True) -> RawFigure:
     """Equal scaling on x and y (a linkage must not look sheared), metres on both axes."""
     grid = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, linecolor="black",
                 mirror=True, showline=True)
@@ -59,8 +57,5 @@ def plane_layout(fig: go.Figure, title: str, look: Look = NORMAL, x_title: str =
         yaxis=dict(title=dict(text=y_title), **grid))
     if equal:
         layout["yaxis"].update(scaleanchor="x", scaleratio=1)
-    if isinstance(fig, RawFigure):
-        fig.merge_layout(layout)
-    else:
-        fig.update_layout(layout)
+    fig.merge_layout(layout)
     return fig
