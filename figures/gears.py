@@ -63,7 +63,8 @@ def schematic_figure(train: GearTrain, title: str, t: Text, look: Look = NORMAL)
             traces.append(scatter(x=[x[c], x[c], x[n]], y=[0, m.axis, m.axis], mode="lines",
                                   showlegend=False, hoverinfo="skip",
                                   line=dict(color=member_colour(c), width=3 * look.line)))
-        label = f"{n} {m.label}".strip() + (f" — {t('gears.fixed')}" if n in train.fixed else "")
+        label = (t("fig.member", number=n, member_label=m.label).strip()
+                 + (f" — {t('gears.fixed')}" if n in train.fixed else ""))
         traces.append(scatter(x=[x[n]], y=[m.axis + reach], mode="markers+text", text=[str(n)],
                               textposition="top center", name=label, marker=dict(color=colour,
                                                                                 size=8 * look.line),

@@ -64,7 +64,8 @@ def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dic
         if len(pts) > 2:
             pts = pts + pts[:1]
         x, y = _xy(pts)
-        name = label(number) if label else f"{number} {member.label}".strip()
+        name = label(number) if label else t("fig.member", number=number,
+                                               member_label=member.label).strip()
         traces.append(scatter(
             x=x, y=y, mode="lines+markers", name=name, legendgroup=name,
             showlegend=legend, opacity=opacity, hoverinfo="name",

@@ -104,7 +104,8 @@ with main:
     rows = []
     for m, w in solution.omega.items():
         book = train.book.get(f"members.{m}.omega")
-        rows.append({t("gears.col_member"): f"{m} {train.members[m].label}".strip(),
+        rows.append({t("gears.col_member"): t("fig.member", number=m,
+                                              member_label=train.members[m].label).strip(),
                      "ω [s⁻¹]": num(w, 5),
                      t("gears.col_book"): "" if book is None else num(book, 5)})
     show_table(pd.DataFrame(rows), f"{train.id}-omega.csv", "csv")

@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from mechanisms import load_preset, preset_ids
-from ui.i18n import LANGUAGES, num, parse_number, t, table
+from ui.i18n import LANGUAGES, member_labels, num, parse_number, t, table
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *ROOT.glob("figures/*.py")]
@@ -15,7 +15,7 @@ SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *RO
 def used_keys() -> set[str]:
     """Every quoted string in the app's code that looks like a key ("area.name")."""
     text = "\n".join(p.read_text() for p in SOURCES)
-    return set(re.findall(r"""["']([a-z][a-z0-9]*\.[A-Za-z0-9_]+)["']""", text)) - {"app.py"}
+    return set(re.findall(r"""["']([a-z][a-z0-9]*\.[A-Za-z0-9_]+)["']""", text)) - {"app.py", "labels.toml"}  # file names
 
 
 def test_every_language_has_the_same_keys():
@@ -101,3 +101,19 @@ def test_serbian_preset_texts_keep_their_notation_latin():
         prose = re.sub(r"(^|[.:;]\s+)(U|I|A|O|K|S)\s", r"\1", prose)  # u, i, a, … opening a sentence
         for word in re.findall(r"[^\s⟨⟩(]+", prose):
             assert not NOTATION.fullmatch(word), (pid, word)
+
+
+def test_every_preset_member_label_has_its_serbian_words():
+    """Legends and tables name members by their labels: each preset label is in the labels
+    table, with notation in ⟨⟩; an unknown label (an uploaded scene's) stays as written."""
+    labels = member_labels("sr")
+    for pid in preset_ids():
+        for member in getattr(load_preset(pid), "members", {}).values():
+            if member.label:
+                assert member.label in labels, (pid, member.label)
+    for english, serbian in labels.items():
+        for word in re.findall(r"[^\s⟨⟩()]+", KEEP_OUT.sub("", serbian)):
+            assert not NOTATION.fullmatch(word), (english, word)
+    assert t("fig.member", language="sr-cyrl", number=3, member_label="slider C") == "3 клизач C"
+    assert t("fig.member", language="sr", number=3, member_label="my part") == "3 my part"
+    assert t("fig.member", language="en", number=2, member_label="crank") == "2 crank"

@@ -35,6 +35,18 @@ def table(language: str) -> dict[str, str]:
         return tomllib.load(f)
 
 
+@cache
+def member_labels(language: str) -> dict[str, str]:
+    """The presets' member labels in one language, keyed by the English label in the file
+    (``locales/labels.toml``; Cyrillic made from the Latin)."""
+    if language == "en":
+        return {}
+    if language == "sr-cyrl":
+        return {k: _to_cyrillic(v) for k, v in member_labels("sr").items()}
+    with open(LOCALES / "labels.toml", "rb") as f:
+        return tomllib.load(f)
+
+
 def _to_cyrillic(text: str) -> str:
     parts = LATIN.split(text)  # even indices: prose, odd: spans kept in Latin
     return "".join(cyrtranslit.to_cyrillic(p, "sr") if i % 2 == 0 else p
@@ -53,10 +65,16 @@ def default_language() -> str:
 
 
 def t(key: str, language: str | None = None, **values) -> str:
-    """The string ``key`` in the current language, with ``values`` formatted in."""
-    text = KEEP.sub(r"\1", table(language or current())[key])
+    """The string ``key`` in the current language, with ``values`` formatted in. A value
+    named ``member_label`` is a scene's member label: shown in the language's words where
+    the labels table has them (an uploaded scene's own labels stay as written)."""
+    language = language or current()
+    text = KEEP.sub(r"\1", table(language)[key])
     if not values:
         return text
+    if "member_label" in values:
+        label = values["member_label"]
+        values["member_label"] = KEEP.sub(r"\1", member_labels(language).get(label, label))
     return text.format(**{k: num(v, language=language) if isinstance(v, float) else v
                           for k, v in values.items()})
 
