@@ -157,8 +157,11 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         textfont=dict(size=look.font + 2), marker=dict(size=5 * look.line, color="black")))
     fig.add_raw(traces)
     fig.add_raw_annotations(annotations)
-    x0, x1, y0, y1 = bounds(list(drawing.labels.values()))
+    corners = list(drawing.labels.values())
+    x0, x1, y0, y1 = bounds(corners)
     span = max(x1 - x0, y1 - y0)
+    if span > 20:  # labels are drawn at a fixed font size: leave them room on a long plan
+        x0, x1, y0, y1 = bounds(corners, pad=span / 20)
     grid = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, showline=True,
                 linecolor="black", mirror=True)
     if span <= 125:
@@ -167,7 +170,9 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         title=dict(text=title, font=dict(size=look.font + 4)), height=look.height,
         margin=dict(l=10, r=10, t=60, b=10), plot_bgcolor="white",
         font=dict(size=look.font, color="black"),
-        legend=dict(orientation="h", yanchor="top", y=-0.08, x=0.0),
+        # anchored to the figure's bottom edge: with equal axes the plot area shrinks to
+        # fit, and a legend placed relative to it would sit on the x-axis title
+        legend=dict(orientation="h", yref="container", yanchor="bottom", y=0.0, x=0.0),
         xaxis=dict(range=[x0, x1], title=dict(text="[cm]"), **grid),
         yaxis=dict(range=[y0, y1], title=dict(text="[cm]"), scaleanchor="x", scaleratio=1, **grid)))
     return fig
