@@ -10,7 +10,7 @@ from solvers.kinetostatics import Kinetostatics
 from .linkage import Text, mechanism_traces, pose, scatter, typical_length
 from .polygon import arrows
 from .raw import RawFigure
-from .style import NORMAL, Look, member_colour, path_colour, plane_layout
+from .style import AXIS, LEGEND, NORMAL, Look, margins, member_colour, path_colour, plane_layout
 
 LOAD_COLOURS = {"external": "#d62728", "inertia": "#ff7f0e", "weight": "#7f7f7f",
                 "reaction": "#1f77b4"}
@@ -122,12 +122,11 @@ def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marke
     fig.merge_layout(dict(
         title=dict(text=title, font=dict(size=look.font + 4)), height=int(look.height * 0.7),
         font=dict(size=look.font, color="black"), plot_bgcolor="white",
-        margin=dict(l=10, r=10, t=60, b=10),
-        legend=dict(orientation="h", yanchor="top", y=-0.18, x=0.0),
-        xaxis=dict(title=dict(text=x_title), showgrid=True, gridcolor="#e5e5e5", showline=True,
-                   linecolor="black", mirror=True),
-        yaxis=dict(title=dict(text=y_title or series[0][0]), showgrid=True, gridcolor="#e5e5e5",
-                   zeroline=True, zerolinecolor="#999999")))
+        margin=dict(margins(fig, look.font), r=int(4.5 * look.font + 2)),  # y2 on the right
+        legend=LEGEND,
+        xaxis=dict(AXIS, title=dict(text=x_title)),
+        yaxis=dict(AXIS, title=dict(text=y_title or series[0][0]), mirror=False, zeroline=True,
+                   zerolinecolor="#999999")))
     if any(axis == "y2" for *_, axis in series):
         fig.merge_layout(dict(yaxis2=dict(title=dict(text=series[-1][0]), overlaying="y",
                                           side="right", showgrid=False)))

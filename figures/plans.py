@@ -14,10 +14,11 @@ from dataclasses import dataclass
 from solvers.kinematics import Motion
 from solvers.plans import POLE, Arrow, Plan, Plans
 
+from .arrows import arrow_traces
 from .linkage import Text, mechanism_traces, pose, scatter
 from .paper import PaperArrow, PaperLabel, bounds, true_scale_svg
 from .raw import RawFigure
-from .style import NORMAL, Look, plane_layout
+from .style import AXIS, LEGEND, NARROW, NORMAL, Look, margins, plane_layout
 
 SUPERSCRIPT = {"n": "ⁿ", "t": "ᵗ", "k": "ᵏ", "r": "ʳ"}
 KIND_COLOURS = {"absolute": "#222222", "relative": "#1f5fbf", "normal": "#2a9d3a",
@@ -121,18 +122,14 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
     """The plan on a 1-cm grid, arrows coloured by kind (legend), labels like the book's,
     and a hover on each arrow with its length on the plan and its value."""
     fig = RawFigure()
-    faded = any(d.current for d in drawing.arrows)
+    visible = [d for d in drawing.arrows if _visible(d)]
+    faded = any(d.current for d in visible)
+    for current in (False, True):  # the highlighted step drawn last, on top
+        group = [(d.tail, d.head, KIND_COLOURS[d.arrow.kind]) for d in visible if d.current == current]
+        fig.add_raw(arrow_traces(group, (3.0 if current else 1.8) * look.line,
+                                 opacity=0.45 if faded and not current else 1.0))
     hover_x, hover_y, hover_text = [], [], []
-    annotations = []
-    for d in drawing.arrows:
-        if not _visible(d):
-            continue
-        width = (3.0 if d.current else 1.8) * look.line
-        annotations.append(dict(
-            x=d.head.real, y=d.head.imag, ax=d.tail.real, ay=d.tail.imag, xref="x", yref="y",
-            axref="x", ayref="y", showarrow=True, arrowhead=2, arrowsize=1, standoff=0,
-            arrowwidth=width, arrowcolor=KIND_COLOURS[d.arrow.kind],
-            opacity=1.0 if d.current or not faded else 0.45, text=""))
+    for d in visible:
         mid = (d.head + d.tail) / 2
         length = abs(d.head - d.tail)
         hover_x.append(mid.real)
@@ -156,23 +153,19 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         textposition="top right", hoverinfo="skip", showlegend=False,
         textfont=dict(size=look.font + 2), marker=dict(size=5 * look.line, color="black")))
     fig.add_raw(traces)
-    fig.add_raw_annotations(annotations)
     corners = list(drawing.labels.values())
     x0, x1, y0, y1 = bounds(corners)
     span = max(x1 - x0, y1 - y0)
     if span > 20:  # labels are drawn at a fixed font size: leave them room on a long plan
         x0, x1, y0, y1 = bounds(corners, pad=span / 20)
-    grid = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, showline=True,
-                linecolor="black", mirror=True)
+    grid = dict(AXIS)
     if span <= 125:
         grid["dtick"] = 1 if span <= 25 else 5
     fig.merge_layout(dict(
         title=dict(text=title, font=dict(size=look.font + 4)), height=look.height,
-        margin=dict(l=10, r=10, t=60, b=10), plot_bgcolor="white",
+        margin=margins(fig, look.font, NARROW), plot_bgcolor="white",
         font=dict(size=look.font, color="black"),
-        # anchored to the figure's bottom edge: with equal axes the plot area shrinks to
-        # fit, and a legend placed relative to it would sit on the x-axis title
-        legend=dict(orientation="h", yref="container", yanchor="bottom", y=0.0, x=0.0),
+        legend=LEGEND,
         xaxis=dict(range=[x0, x1], title=dict(text="[cm]"), **grid),
         yaxis=dict(range=[y0, y1], title=dict(text="[cm]"), scaleanchor="x", scaleratio=1, **grid)))
     return fig

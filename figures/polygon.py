@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .arrows import arrow_traces, label_trace
 from .linkage import scatter
 from .paper import PaperArrow, PaperLabel, subscripts, true_scale_svg
 from .raw import RawFigure
@@ -16,17 +17,10 @@ CLOSING = "#d62728"
 
 def arrows(fig: RawFigure, starts: list[complex], ends: list[complex], colours: list[str],
            labels: list[str], look: Look) -> None:
-    """Arrows as layout annotations (a handful per figure), labelled at their middles."""
-    notes = []
-    for a, b, colour, label in zip(starts, ends, colours, labels):
-        a, b = complex(a), complex(b)
-        mid = (a + b) / 2
-        notes += [dict(x=b.real, y=b.imag, ax=a.real, ay=a.imag, xref="x", yref="y", axref="x",
-                       ayref="y", showarrow=True, arrowhead=3, arrowsize=1.2,
-                       arrowwidth=2 * look.line, arrowcolor=colour, text=""),
-                  dict(x=mid.real, y=mid.imag, xref="x", yref="y", text=label, showarrow=False,
-                       font=dict(size=look.font + 1, color=colour), xshift=10, yshift=10)]
-    fig.add_raw_annotations(notes)
+    """Arrows (see figures.arrows), each labelled at its middle in its own colour."""
+    fig.add_raw(arrow_traces(zip(starts, ends, colours), 2 * look.line))
+    fig.add_raw([label_trace([(complex(a) + complex(b)) / 2 for a, b in zip(starts, ends)],
+                             labels, colours, look.font + 1)])
 
 
 def polygon_figure(known: list[tuple[str, complex]], closing: list[tuple[str, complex]],

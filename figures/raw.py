@@ -19,14 +19,19 @@ class RawFigure(go.Figure):
         self._raw_frames: list[dict] = []
         self._raw_layout: dict = {}
 
-    def add_raw_annotations(self, annotations: list[dict]) -> None:
-        """Annotations (arrows, labels) as plain dicts, appended unvalidated."""
-        self._raw_layout.setdefault("annotations", []).extend(annotations)
-
     def merge_layout(self, layout: dict) -> None:
         """Layout settings as a plain dict, merged over the validated layout when serialised
         (``update_layout`` and ``update_xaxes`` cost ~10 ms a figure in validation alone)."""
         _merge(self._raw_layout, layout)
+
+    def underlay(self, layout: dict) -> None:
+        """Layout defaults placed under the figure's own settings (those win)."""
+        self._raw_layout = _merge(_merge({}, layout), self._raw_layout)
+
+    def legend_names(self) -> list[str]:
+        """Names of the traces that appear in the legend."""
+        return [str(tr["name"]) for tr in self._raw_data
+                if tr.get("showlegend", True) and tr.get("name") is not None]
 
     def add_raw(self, traces: list[dict]) -> list[int]:
         """Append traces; returns their indices (for animation frames)."""

@@ -23,6 +23,36 @@ class Look:
     height: int = 600
 
 
+# What Streamlit's own chart theme would add, set once here instead: the pages draw with
+# theme=None because that theme costs the browser 0.5–0.9 s a redraw (bench/browser.py)
+HOUSE = dict(font=dict(family='"Source Sans", "Source Sans Pro", sans-serif'),
+             title=dict(x=0.0, xanchor="left", font=dict(weight="bold")),
+             paper_bgcolor="white")
+# under the figure, anchored to its bottom edge: placed relative to the plot area it would
+# sit on the x-axis title whenever equal axes shrink that area
+LEGEND = dict(orientation="h", yref="container", yanchor="bottom", y=0.0,
+              xref="container", xanchor="left", x=0.0)
+# a drawing's axes: grid and a frame all round
+AXIS = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, showline=True,
+            linecolor="black", mirror=True)
+WIDE, NARROW = 740, 360  # px: a chart across the page's main column, and in half of it
+
+
+def margins(fig: RawFigure, font: int, width: int = WIDE) -> dict:
+    """Fixed margins with room for tick labels, axis titles and the legend's rows.
+
+    Plotly's ``automargin`` would measure them instead, but every margin it pushes makes it
+    draw the figure a second time (20–50 ms a figure in the browser). A horizontal legend
+    wraps at its widest entry, so its rows follow from that entry and the chart's width."""
+    names = fig.legend_names()
+    rows = 0
+    if names:
+        widest = max(0.55 * font * len(name) + 50 for name in names)  # text, sample, gap
+        rows = math.ceil(len(names) / max(1, int(width // widest)))
+    return dict(l=int(4.5 * font + 2), r=10, t=int(2.5 * font + 25),
+                b=int(2 * font + 30 + rows * (font + 11)))
+
+
 NORMAL = Look()
 PROJECTOR = Look(font=24, line=2.0, height=860)
 
@@ -46,15 +76,13 @@ def path_colour(index: int) -> str:
 def plane_layout(fig: RawFigure, title: str, look: Look = NORMAL, x_title: str = "x [m]",
                  y_title: str = "y [m]", equal: bool = True) -> RawFigure:
     """Equal scaling on x and y (a linkage must not look sheared), metres on both axes."""
-    grid = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, linecolor="black",
-                mirror=True, showline=True)
     layout = dict(
         title=dict(text=title, font=dict(size=look.font + 4)), height=look.height,
-        margin=dict(l=10, r=10, t=60, b=10), plot_bgcolor="white",
+        margin=margins(fig, look.font), plot_bgcolor="white",
         font=dict(size=look.font, color="black"), showlegend=True,
-        legend=dict(orientation="h", yanchor="top", y=-0.1, xanchor="left", x=0.0),
-        xaxis=dict(title=dict(text=x_title), **grid),
-        yaxis=dict(title=dict(text=y_title), **grid))
+        legend=LEGEND,
+        xaxis=dict(title=dict(text=x_title), **AXIS),
+        yaxis=dict(title=dict(text=y_title), **AXIS))
     if equal:
         layout["yaxis"].update(scaleanchor="x", scaleratio=1)
     fig.merge_layout(layout)

@@ -9,7 +9,7 @@ from solvers.kinematics import Motion
 
 from .linkage import Text, mechanism_traces, pose, scatter
 from .raw import RawFigure
-from .style import NORMAL, Look, path_colour, plane_layout
+from .style import NORMAL, Look, margins, path_colour, plane_layout
 
 TRAIL = 40  # frames a trail lasts
 SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -144,7 +144,8 @@ def animation_figure(motion: Motion, order: np.ndarray, points: list[str], title
                                                        mode="immediate")])
                              for s in range(len(order))])]))
     plane_layout(fig, title, look)
-    fig.merge_layout(dict(legend=dict(y=-0.3), margin=dict(b=40)))
+    room = margins(fig, look.font)["b"] + 4 * look.font + 30  # the frame slider above the legend
+    fig.merge_layout(dict(margin=dict(b=room)))
     return fig
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.test_pages import chart, page
+from tests.test_pages import chart, page, texts
 
 PAGE = "pages/kinetostatics.py"
 
@@ -20,8 +20,7 @@ def test_the_lecture_example_shows_three_equal_driving_torques():
     assert torque[0] == torque[1] == torque[2] and torque[0].startswith("4.53")
     reactions = at.dataframe[0].value
     assert set(reactions["F_pq"]) == {"F_12", "F_14", "F_16", "F_23", "F_34", "F_45", "F_56"}
-    labels = [a["text"] for a in chart(at, "fig_loads")["layout"]["annotations"]]
-    assert "F<sub>5</sub> = 100 N" in labels
+    assert "F<sub>5</sub> = 100 N" in texts(chart(at, "fig_loads"))
 
 
 def test_moving_the_crank_and_adding_inertia_change_the_torque():

@@ -39,6 +39,21 @@ def chart(at: AppTest, key: str) -> dict:
     raise KeyError(key)
 
 
+def arrows(spec: dict) -> list[tuple[float, float, float, float]]:
+    """(tail x, tail y, head x, head y) of every arrow a figure draws (figures.arrows)."""
+    drawn = []
+    for tr in spec["data"]:
+        if tr.get("marker", {}).get("symbol") == "arrow":
+            x, y = tr["x"], tr["y"]
+            drawn += [(x[i], y[i], x[i + 1], y[i + 1]) for i in range(0, len(x), 3)]
+    return drawn
+
+
+def texts(spec: dict) -> list[str]:
+    """Every text a figure writes beside its points (labels of arrows, points, corners)."""
+    return [text for tr in spec["data"] if "text" in tr.get("mode", "") for text in tr["text"]]
+
+
 def traces(spec: dict, name_start: str) -> list[dict]:
     return [tr for tr in spec["data"] if str(tr.get("name", "")).startswith(name_start)]
 

@@ -2,6 +2,7 @@
 
 import pytest
 
+from .test_pages import arrows as drawn_arrows
 from .test_pages import chart, page
 from .test_plans import LINKAGES
 
@@ -13,8 +14,7 @@ def plan_page(**state):
 
 
 def arrows(at, key: str) -> list[tuple]:
-    spec = chart(at, key)
-    return [(a["ax"], a["ay"], a["x"], a["y"]) for a in spec["layout"]["annotations"]]
+    return drawn_arrows(chart(at, key))
 
 
 @pytest.mark.parametrize("pid", [p for p in LINKAGES if not p.startswith("zbirka-1.3")])

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import pandas as pd
-import plotly.graph_objects as go
 import streamlit as st
 
+from figures.raw import RawFigure
+from figures.style import HOUSE
 from ui.i18n import t
 
 
@@ -16,10 +17,12 @@ def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
                        icon=":material/download:")
 
 
-def chart(fig: go.Figure, filename: str, key: str) -> None:
-    """A Plotly chart whose camera button saves SVG or PNG, as the user picks."""
+def chart(fig: RawFigure, filename: str, key: str) -> None:
+    """A Plotly chart in the house style (figures.style.HOUSE) whose camera button saves
+    SVG or PNG, as the user picks."""
     fmt = st.session_state.get(f"{key}_format", "svg")
-    st.plotly_chart(fig, key=key, config={"displaylogo": False, "toImageButtonOptions":
+    fig.underlay(HOUSE)
+    st.plotly_chart(fig, key=key, theme=None, config={"displaylogo": False, "toImageButtonOptions":
                                           {"format": fmt, "filename": filename, "scale": 2}})
     st.segmented_control(t("export.figure_format"), ["svg", "png"], key=f"{key}_format",
                          default="svg", format_func=str.upper, label_visibility="visible")
