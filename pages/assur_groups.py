@@ -14,6 +14,7 @@ from solvers.diagnostics import (TOLERANCES, Unsolvable, format_range, newton_ac
                                  sweep_values)
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
+from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
 from ui.export import chart, show_table
@@ -130,3 +131,6 @@ with controls:
             quantities += [Quantity(f"x_{name} [m]", z.real, "m"), Quantity(f"y_{name} [m]", z.imag, "m"),
                            Quantity(f"v_{name} [m/s]", float(abs(p.v[CYCLE])), "m/s")]
     answer_box(quantities, key="self")
+
+with main:
+    speed_panel("assur_groups", base.id)

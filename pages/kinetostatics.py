@@ -17,6 +17,7 @@ from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_r
 from solvers.kinetostatics import Kinetostatics, analyse, free_body
 from solvers.report import has_loads
 from solvers.structure import StructureError
+from ui.benchmarks import speed_panel
 from ui.book import book_section
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
@@ -261,3 +262,6 @@ with controls:
     quantities += [Quantity(f"|F_{p}{q}| [N]", float(r.magnitude[now]), "N")
                    for (p, q), r in sorted(k.reactions.items()) if p < q]
     answer_box(quantities, key="self")
+
+with main:
+    speed_panel("kinetostatics", scene.id, ("kinetostatics",))

@@ -9,6 +9,7 @@ from figures.style import nice_scale
 from figures.gears import schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
 from solvers.gears import TrainError, geometry_notes, solve_train, willis_table
+from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.export import chart, show_table
 from ui.i18n import num, t
@@ -126,3 +127,6 @@ with main:
             t("gears.col_radii"): num(w.ratio, 5), t("gears.col_solved"): num(w.check(solution.omega), 5)}
             for w in willis_table(train)]), f"{train.id}-willis.csv", "csv_willis")
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")
+
+with main:
+    speed_panel("planetary_gears", train.id)

@@ -12,6 +12,7 @@ from figures.balancing import end_view_figure, rotor_3d_figure
 from figures.polygon import polygon_figure, polygon_svg
 from mechanisms.rotor import PLANES, Correction, Mass, Rotor
 from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
+from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.export import chart, print_button, show_table
 from ui.i18n import num, scaled_title, t
@@ -236,3 +237,6 @@ with main:
             st.markdown(t("rotor.step_plane", plane=plane, Y=num(u.imag * MM, 5),
                           Z=num(u.real * MM, 5), tan=num(u.imag / u.real, 5) if u.real else "∞",
                           angle=num(math.degrees(result.corrections[plane].angle), 5)))
+
+with main:
+    speed_panel("rotor_balancing", rotor.id)

@@ -14,6 +14,7 @@ from solvers.analytic import equations, solved_values
 from solvers.diagnostics import Unsolvable
 from solvers.plans import Plans, build, describe, readings
 from solvers.structure import StructureError
+from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.book import book_section
 from ui.chapters import page_title
@@ -181,3 +182,6 @@ if tab_accuracy.open:
 with controls:
     answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty)
                 for r in values], key="self")
+
+with main:
+    speed_panel("velocity_plans", scene.id, ("kinematics",))
