@@ -33,8 +33,9 @@ def group_labels(structure: Structure, t: Text) -> dict[int, str]:
 
 
 def structure_figure(motion: Motion, index: int, upto: int, title: str, t: Text,
-                     look: Look = NORMAL) -> RawFigure:
-    """The driver and the first ``upto`` groups at position ``index``; S where it is finite."""
+                     look: Look = NORMAL, survey: Motion | None = None) -> RawFigure:
+    """The driver and the first ``upto`` groups at position ``index``; S where it is finite,
+    on its path over ``survey`` (a sweep of the driver; ``motion`` itself when None)."""
     scene, structure = motion.scene, motion.structure
     shown = {FRAME, DRIVER} | {m for g in structure.groups[:upto] for m in g.members}
     positions, rotations = pose(motion, index)
@@ -52,22 +53,23 @@ def structure_figure(motion: Motion, index: int, upto: int, title: str, t: Text,
     shown_groups = structure.groups[:upto]
     for name, (group, b1, b2) in special_pairs(scene, structure.groups).items():
         if group in shown_groups:
-            traces += special_traces(motion, name, group, (b1, b2), index, t, look)
+            traces += special_traces(motion, name, group, (b1, b2), index, t, look,
+                                     survey or motion)
     fig = RawFigure()
     fig.add_raw(traces)
     return plane_layout(fig, title, look)
 
 
 def special_traces(motion: Motion, name: str, group: Group, pair: tuple[int, int], index: int,
-                   t: Text, look: Look) -> list[dict]:
-    """The path of special point ``name``, its construction lines (from each binary member's
-    joint along the member's line to S) and S itself."""
-    path = _near(motion.special[name].z, motion, index)
+                   t: Text, look: Look, survey: Motion) -> list[dict]:
+    """The path of special point ``name`` over ``survey``, its construction lines (from each
+    binary member's joint along the member's line to S) and S itself at ``index``."""
+    path = _near(survey.special[name].z, motion, index)
     traces = [scatter(x=path.real, y=path.imag, mode="lines", name=t("assur.s_path", name=name),
                       hoverinfo="name", line=dict(color=S_COLOUR, width=1.5 * look.line,
                                                   dash="dash"))]
-    s = complex(path[index])
-    if not np.isfinite(s):
+    s = complex(motion.special[name].z[index])
+    if not np.isfinite(s) or abs(s - centre(motion, index)) >= reach(motion, index):
         return traces
     bodies = {m: _body(motion, m, index) for m in [FRAME, *motion.members]}
     xs, ys = [], []
@@ -86,14 +88,22 @@ def special_traces(motion: Motion, name: str, group: Group, pair: tuple[int, int
     return traces
 
 
+def centre(motion: Motion, index: int) -> complex:
+    """The middle of the mechanism's points at ``index``."""
+    return complex(np.mean([complex(p.z[index]) for p in motion.points.values()]))
+
+
+def reach(motion: Motion, index: int) -> float:
+    """Three mechanism sizes about its centre: how far S is drawn."""
+    points = np.array([complex(p.z[index]) for p in motion.points.values()])
+    return 3 * max(float(np.abs(points - centre(motion, index)).max()), 1e-9)
+
+
 def _near(path: np.ndarray, motion: Motion, index: int) -> np.ndarray:
     """The path where S stays within three mechanism sizes: near parallel lines it runs off
     toward infinity, and drawing that would shrink the mechanism to a dot."""
-    points = np.array([complex(p.z[index]) for p in motion.points.values()])
-    centre = points.mean()
-    reach = 3 * max(np.abs(points - centre).max(), 1e-9)
     with np.errstate(invalid="ignore"):
-        return np.where(np.abs(path - centre) < reach, path, np.nan)
+        return np.where(np.abs(path - centre(motion, index)) < reach(motion, index), path, np.nan)
 
 
 def _body(motion: Motion, member: int, index: int) -> Body:

@@ -11,11 +11,11 @@ import streamlit as st
 from figures.assur import structure_figure
 from mechanisms.schema import Scene
 from solvers.diagnostics import (TOLERANCES, Unsolvable, format_range, newton_accuracy,
-                                 sweep_values)
+                                 solve_instant, sweep_values)
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
-from ui.cache import BY_REPR, instant
+from ui.cache import BY_REPR
 from ui.chapters import page_title
 from ui.export import chart, show_table
 from ui.i18n import num, t, title_of
@@ -31,8 +31,15 @@ CYCLE = 360
 
 @st.cache_resource(max_entries=32, hash_funcs=BY_REPR)
 def cycle(scene: Scene, tol: float) -> Motion:
-    """A survey of the driver (``CYCLE`` positions) and, last, the scene's own instant."""
-    return solve(scene, np.append(sweep_values(scene, CYCLE), scene.driver.at), tol=tol)
+    """A survey of the driver (``CYCLE`` positions)."""
+    return solve(scene, sweep_values(scene, CYCLE), tol=tol)
+
+
+@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
+def now(scene: Scene, tol: float) -> Motion:
+    """The scene at its own instant, at the chosen tolerance (raises Unsolvable with the
+    reason when the groups cannot be there)."""
+    return solve_instant(scene, None, tol)
 
 
 def counts(scene: Scene) -> None:
@@ -91,12 +98,12 @@ with main:
         st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
         upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
     try:
-        instant(scene)  # raises with the reason when the group cannot be at this instant
+        current = now(scene, tol)
     except (Unsolvable, StructureError) as exc:
         st.error(t("plans.unsolvable", reason=str(exc)))
         st.stop()
-    survey = cycle(scene, tol)
-    chart(structure_figure(survey, CYCLE, upto, t("assur.fig_title"), t, look()),
+    survey = cycle(scene.with_(at=base.driver.at), tol)  # per geometry: φ₂ does not survey again
+    chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
           f"{scene.id}-structure", key="structure")
     for issue in survey.issues:
         ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
@@ -105,14 +112,14 @@ with main:
     if survey.special:
         st.subheader(t("assur.special"))
         st.caption(t("assur.special_hint"))
-        table = special_table(survey, CYCLE)
+        table = special_table(current, 0)
         show_table(table, f"{scene.id}-special-points.csv", "special_csv")
     if survey.newton:
         with st.expander(t("assur.accuracy"), expanded=False):
             st.caption(t("assur.accuracy_hint"))
-            report = next(iter(survey.newton.values()))
-            st.write(t("assur.instant_newton", iterations=int(report.iterations[CYCLE]),
-                       residual=f"{report.residual[CYCLE]:.1e}"))
+            report = next(iter(current.newton.values()))
+            st.write(t("assur.instant_newton", iterations=int(report.iterations[0]),
+                       residual=f"{report.residual[0]:.1e}"))
             table = measured(base, "newton", lambda done: newton_accuracy(
                 base, sweep_values(base, CYCLE), progress=done), t("app.measuring"))
             rows = pd.DataFrame([{t("assur.col_tol"): f"{r['tol']:.0e}",
@@ -125,11 +132,11 @@ with main:
 with controls:
     quantities = [Quantity("W", float(degrees_of_freedom(scene)), ""),
                   Quantity(t("assur.self_groups"), float(len(structure.groups)), "")]
-    for name, p in survey.special.items():
-        z = complex(p.z[CYCLE])
+    for name, p in current.special.items():
+        z = complex(p.z[0])
         if np.isfinite(z):
             quantities += [Quantity(f"x_{name} [m]", z.real, "m"), Quantity(f"y_{name} [m]", z.imag, "m"),
-                           Quantity(f"v_{name} [m/s]", float(abs(p.v[CYCLE])), "m/s")]
+                           Quantity(f"v_{name} [m/s]", float(abs(p.v[0])), "m/s")]
     answer_box(quantities, key="self")
 
 with main:

@@ -95,12 +95,12 @@ def _driver_value(scene: Scene, at: float | None) -> float:
     return math.radians(at) if scene.driver.kind == "rotating" else at
 
 
-def solve_instant(scene: Scene, at: float | None) -> Motion:
+def solve_instant(scene: Scene, at: float | None, tol: float = 1e-10) -> Motion:
     """Solve one instant (driver value in degrees or metres, default the scene's own), or
-    raise ``Unsolvable`` with the reason."""
+    raise ``Unsolvable`` with the reason; ``tol`` as for ``solve``."""
     value = _driver_value(scene, at)
     structure = decompose(scene)
-    motion = solve(scene, value, structure=structure)
+    motion = solve(scene, value, structure=structure, tol=tol)
     for issue in motion.issues:
         if issue.problem == "open":
             raise Unsolvable(explain_open(scene, value, issue, structure))

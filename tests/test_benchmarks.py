@@ -42,14 +42,19 @@ def documented(name: str, page_name: str) -> str:
 @pytest.mark.parametrize("path, name", [("pages/trajectories.py", "trajectories"),
                                         ("pages/planetary_gears.py", "planetary_gears")])
 def test_each_page_quotes_its_own_rerun_time(path, name):
-    at = page(path, lang="en")
+    at = page(path, lang="en", bench=True)  # the panel open
     assert not at.exception
     shown = {m.label: m.value for m in at.metric}
     assert shown["Rerun on the server"] == f"{documented('pages', name)} ms"
 
 
+def test_a_closed_panel_computes_nothing():
+    at = page("pages/planetary_gears.py", lang="en")
+    assert "Rerun on the server" not in [m.label for m in at.metric]
+
+
 def test_the_kinetostatics_page_shows_its_scenes_rows_in_serbian():
-    at = page("pages/kinetostatics.py", lang="sr")
+    at = page("pages/kinetostatics.py", lang="sr", bench=True)
     assert not at.exception
     table = next(d.value for d in at.dataframe if "položaja" in d.value.columns)
     assert set(table.iloc[:, 0]) == {"predavanja-kinetostatika"}

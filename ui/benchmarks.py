@@ -47,7 +47,7 @@ def parse(text: str, name: str) -> Measured | None:
     return Measured(caption, pd.DataFrame(body, columns=header))
 
 
-@st.cache_data(max_entries=8)
+@st.cache_resource(max_entries=8)  # shared and never mutated: no copy per rerun
 def _read(name: str, stamp: float) -> Measured | None:
     return parse(DOC.read_text(encoding="utf-8"), name)
 
@@ -71,8 +71,12 @@ def page_row(name: str, page: str) -> list[str] | None:
 
 def speed_panel(page: str, scene_id: str, chapter_tables: tuple[str, ...] = ()) -> None:
     """What the benchmarks measured for this page (its rerun on the server, slider → figure
-    in a browser) and for this scene in the chapter's own benchmarks."""
-    with st.expander(t("bench.title")):
+    in a browser) and for this scene in the chapter's own benchmarks. Filled only while
+    open: a closed panel costs the rerun nothing."""
+    panel = st.expander(t("bench.title"), key="bench", on_change="rerun")
+    if not panel.open:
+        return
+    with panel:
         st.caption(t("bench.hint"))
         cols = st.columns(3)
         server, browser = page_row("pages", page), page_row("browser", page)

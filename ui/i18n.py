@@ -100,18 +100,18 @@ def language_picker() -> str:
                       label_visibility="collapsed")
 
 
-def _in_language(scene, field: str) -> str:
-    """A scene's text field in the current language: its Serbian version (data in the preset,
-    notation in ⟨⟩ kept Latin) for sr and sr-cyrl, else the English one."""
-    language = current()
+def _in_language(scene, field: str, language: str | None = None) -> str:
+    """A scene's text field in the language (default the current one): its Serbian version
+    (data in the preset, notation in ⟨⟩ kept Latin) for sr and sr-cyrl, else the English one."""
+    language = language or current()
     serbian = getattr(scene, f"{field}_sr", "")
     if not language.startswith("sr") or not serbian:
         return getattr(scene, field)
     return KEEP.sub(r"\1", _to_cyrillic(serbian) if language == "sr-cyrl" else serbian)
 
 
-def title_of(scene) -> str:
-    return _in_language(scene, "title")
+def title_of(scene, language: str | None = None) -> str:
+    return _in_language(scene, "title", language)
 
 
 def note_of(scene) -> str:

@@ -11,7 +11,7 @@ from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
 from mechanisms.writer import gears_to_toml, rotor_to_toml, to_toml
 from ui.cache import preset
-from ui.i18n import note_of, source_of, t, title_of
+from ui.i18n import current, note_of, source_of, t, title_of
 from ui.url import url_choice
 
 UPLOADED = "upload"
@@ -35,6 +35,12 @@ def _read_upload(kind: str) -> None:
         st.session_state["upload_error"] = str(exc)
 
 
+@st.cache_resource(max_entries=16)
+def preset_titles(kind: str, language: str) -> dict[str, str]:
+    """"id — title" of every preset of a kind, for the select box (made once per language)."""
+    return {pid: f"{pid} — {title_of(preset(pid), language)}" for pid in preset_ids(kind)}
+
+
 def scene_picker(kind: str = "linkage", default: str | None = None):
     """The scene select box (kept in the URL; ``default`` when the link names none), an
     upload, and a download of the scene."""
@@ -45,9 +51,10 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
     if uploaded is not None:
         options.append(UPLOADED)
 
+    titles = preset_titles(kind, current())
+
     def label(pid: str) -> str:
-        scene = uploaded if pid == UPLOADED else preset(pid)
-        return f"{pid} — {title_of(scene)}"
+        return f"{pid} — {title_of(uploaded)}" if pid == UPLOADED else titles[pid]
 
     choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", default=default,
                         format_func=label)
