@@ -140,4 +140,4 @@ with controls:
     answer_box(quantities, key="self")
 
 with main:
-    speed_panel("assur_groups", base.id)
+    speed_panel("assur_groups", base.id, ("newton",))

@@ -194,4 +194,4 @@ with main:
     csv_button(table, f"{scene.id}-paths.csv", key="csv")
 
 with main:
-    speed_panel("trajectories", scene.id, ("kinematics", "peers"))
+    speed_panel("trajectories", scene.id, ("kinematics", "differences", "peers"))

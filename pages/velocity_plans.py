@@ -184,4 +184,4 @@ with controls:
                 for r in values], key="self")
 
 with main:
-    speed_panel("velocity_plans", scene.id, ("kinematics",))
+    speed_panel("velocity_plans", scene.id, ("kinematics", "graphical"))

@@ -21,8 +21,11 @@ DOC = Path(__file__).resolve().parents[1] / "docs/performance.md"
 # a chapter's benchmark: its title and its columns ("a; b; c") in the page's language
 CHAPTER_TABLES = {"kinematics": ("bench.table_kinematics", "bench.cols_kinematics"),
                   "kinetostatics": ("bench.table_kinetostatics", "bench.cols_kinetostatics"),
-                  "peers": ("bench.table_peers", "bench.cols_peers")}
-CAPTION = re.compile(r"Measured (\S+) on (\S+), Python (\S+), median of (\d+) runs")
+                  "peers": ("bench.table_peers", "bench.cols_peers"),
+                  "differences": ("bench.table_differences", "bench.cols_differences"),
+                  "newton": ("bench.table_newton", "bench.cols_newton"),
+                  "graphical": ("bench.table_graphical", "bench.cols_graphical")}
+CAPTION = re.compile(r"Measured (\S+) on (\S+), Python ([^,:]+)(?:, median of (\d+) runs)?")
 
 
 @dataclass(frozen=True)
@@ -102,5 +105,5 @@ def speed_panel(page: str, scene_id: str, chapter_tables: tuple[str, ...] = ()) 
                                       axis=1), f"benchmark-{name}.csv", f"csv_bench_{name}")
             when = CAPTION.match(found.caption)
             if when:
-                st.caption(t("bench.when", date=when[1], machine=when[2], python=when[3],
-                             runs=when[4]))
+                st.caption(t("bench.when", date=when[1], machine=when[2], python=when[3])
+                           + (" " + t("bench.runs", runs=when[4]) if when[4] else ""))
