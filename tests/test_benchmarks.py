@@ -62,7 +62,7 @@ def test_the_kinetostatics_page_shows_its_scenes_rows_in_serbian():
 
 
 @pytest.mark.parametrize("path, scene, column", [
-    ("pages/assur_groups.py", "triad-full-turn", "tolerance"),
+    ("pages/assur_groups.py", "triad-full-turn", "time [ms] (360 positions)"),
     ("pages/velocity_plans.py", "zbirka-2.1", "values read")])
 def test_a_chapter_page_quotes_its_own_accuracy_rows(path, scene, column):
     """The Assur page quotes Newton's tolerance rows of its scene, the plans page the
