@@ -44,20 +44,25 @@ async def measure(url: str, name: str, key: str, values: list) -> tuple[float, f
     return 1e3 * statistics.median(report.times), session.figure_bytes / 1024
 
 
-def table() -> str:
+def rerun_ms(script: Path, pages: list) -> list[tuple[str, float, float]]:
+    """(page, median rerun ms, figures kB) for each page of an app served from ``script``."""
     port = free_port()
-    server = start_server(port)
+    server = start_server(port, script)
     url = f"ws://127.0.0.1:{port}/_stcore/stream"
     try:
         asyncio.run(wait_ready(url))
-        rows = ["| page | slider → page redrawn on the server, ms (median of 12) | figures sent, kB |",
-                "|---|---:|---:|"]
-        for name, key, values in PAGES:
-            ms, kb = asyncio.run(measure(url, name, key, values))
-            rows.append(f"| {name} | {ms:.0f} | {kb:.0f} |")
+        return [(name, *asyncio.run(measure(url, name, key, values))) for name, key, values in pages]
     finally:
         server.terminate()
         server.wait(timeout=30)
+
+
+def table() -> str:
+    rows = ["| page | slider → page redrawn on the server, ms (median of 12) | figures sent, kB |",
+            "|---|---:|---:|"]
+    rows += [f"| {name} | {ms:.0f} | {kb:.0f} |" for name, ms, kb in rerun_ms(ROOT / "app.py", PAGES)]
+    ((_, floor, _),) = rerun_ms(ROOT / "bench" / "floor_app.py", PAGES[:1])
+    rows.append(f"| (Streamlit's floor: one slider, one line of text) | {floor:.0f} | 0 |")
     return "\n".join(rows)
 
 
