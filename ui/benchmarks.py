@@ -52,6 +52,7 @@ def parse(text: str, name: str) -> Measured | None:
 
 @st.cache_resource(max_entries=8)  # shared and never mutated: no copy per rerun
 def _read(name: str, stamp: float) -> Measured | None:
+    """``stamp`` (the file's mtime) is only part of the cache key: a new file, a new read."""
     return parse(DOC.read_text(encoding="utf-8"), name)
 
 
