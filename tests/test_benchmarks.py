@@ -59,6 +59,7 @@ def test_the_kinetostatics_page_shows_its_scenes_rows_in_serbian():
     table = next(d.value for d in at.dataframe if "položaja" in d.value.columns)
     assert set(table.iloc[:, 0]) == {"predavanja-kinetostatika"}
     assert list(table.iloc[:, 1]) == ["12", "72", "360", "3600"]
+    assert all("," in cell and "." not in cell for cell in table.iloc[:, 2])  # decimal comma
 
 
 @pytest.mark.parametrize("path, scene, column", [

@@ -15,7 +15,7 @@ import pandas as pd
 import streamlit as st
 
 from ui.export import show_table
-from ui.i18n import t
+from ui.i18n import current, t
 
 DOC = Path(__file__).resolve().parents[1] / "docs/performance.md"
 # a chapter's benchmark: its title and its columns ("a; b; c") in the page's language
@@ -100,6 +100,9 @@ def speed_panel(page: str, scene_id: str, chapter_tables: tuple[str, ...] = ()) 
                 if len(own) == 0:
                     st.caption(t("bench.other_scenes"))
                 table = own if len(own) else table
+            if current().startswith("sr"):  # decimal comma in the numbers (not in the ids)
+                table = pd.concat([table.iloc[:, :1], table.iloc[:, 1:].map(
+                    lambda cell: re.sub(r"(?<=\d)\.(?=\d)", ",", cell))], axis=1)
             names = t(columns).split("; ")
             st.markdown(f"**{t(title)}**")
             show_table(table.set_axis(names if len(names) == table.shape[1] else table.columns,
