@@ -10,7 +10,6 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-
 from solvers.kinematics import Motion
 from solvers.plans import POLE, Arrow, Plan, Plans
 

@@ -9,7 +9,17 @@ joined to the (validated) layout only when the figure is serialised — by
 
 from __future__ import annotations
 
+import copy
+
 import plotly.graph_objects as go
+
+# Every figure starts from what Streamlit's own chart theme would add: the pages draw with
+# theme=None (ui.export.chart) because that theme costs the browser 0.5–0.9 s a redraw
+# (bench/browser.py). Set here, the look is part of the figure: no chart call has to add it
+# to a figure that may be cached and shared.
+HOUSE = dict(font=dict(family='"Source Sans", "Source Sans Pro", sans-serif'),
+             title=dict(x=0.0, xanchor="left", font=dict(weight="bold")),
+             paper_bgcolor="white")
 
 
 class RawFigure(go.Figure):
@@ -17,16 +27,12 @@ class RawFigure(go.Figure):
         super().__init__()
         self._raw_data: list[dict] = []
         self._raw_frames: list[dict] = []
-        self._raw_layout: dict = {}
+        self._raw_layout: dict = copy.deepcopy(HOUSE)
 
     def merge_layout(self, layout: dict) -> None:
         """Layout settings as a plain dict, merged over the validated layout when serialised
         (``update_layout`` and ``update_xaxes`` cost ~10 ms a figure in validation alone)."""
         _merge(self._raw_layout, layout)
-
-    def underlay(self, layout: dict) -> None:
-        """Layout defaults placed under the figure's own settings (those win)."""
-        self._raw_layout = _merge(_merge({}, layout), self._raw_layout)
 
     def legend_names(self) -> list[str]:
         """Names of the traces that appear in the legend."""

@@ -23,11 +23,6 @@ class Look:
     height: int = 600
 
 
-# What Streamlit's own chart theme would add, set once here instead: the pages draw with
-# theme=None because that theme costs the browser 0.5–0.9 s a redraw (bench/browser.py)
-HOUSE = dict(font=dict(family='"Source Sans", "Source Sans Pro", sans-serif'),
-             title=dict(x=0.0, xanchor="left", font=dict(weight="bold")),
-             paper_bgcolor="white")
 # under the figure, anchored to its bottom edge: placed relative to the plot area it would
 # sit on the x-axis title whenever equal axes shrink that area
 LEGEND = dict(orientation="h", yref="container", yanchor="bottom", y=0.0,

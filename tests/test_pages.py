@@ -104,3 +104,14 @@ def test_every_table_has_its_csv_download(chapter):
     at = page(chapter.file, lang="en")
     csv = [b for b in at.get("download_button") if b.proto.label == t("export.csv", "en")]
     assert len(csv) >= len(at.dataframe) - EDITORS.get(chapter.file, 0) > 0
+
+
+@pytest.mark.parametrize("chapter", CHAPTERS, ids=lambda c: c.file)
+def test_every_chart_is_drawn_without_streamlit_s_theme_in_the_house_style(chapter):
+    """Streamlit's theme costs the browser 0.5–0.9 s a redraw (docs/performance.md): each
+    chart carries its own font and title style instead."""
+    at = page(chapter.file, lang="en")
+    for element in at.get("plotly_chart"):
+        layout = json.loads(element.proto.spec)["layout"]
+        assert element.proto.theme == ""
+        assert "Source Sans" in layout["font"]["family"] and layout["title"]["x"] == 0.0

@@ -6,7 +6,6 @@ import pandas as pd
 import streamlit as st
 
 from figures.raw import RawFigure
-from figures.style import HOUSE
 from ui.i18n import t
 
 
@@ -18,10 +17,9 @@ def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
 
 
 def chart(fig: RawFigure, filename: str, key: str) -> None:
-    """A Plotly chart in the house style (figures.style.HOUSE) whose camera button saves
-    SVG or PNG, as the user picks."""
+    """A Plotly chart whose camera button saves SVG or PNG, as the user picks. Drawn without
+    Streamlit's theme: the figure carries its own look (figures.raw.HOUSE)."""
     fmt = st.session_state.get(f"{key}_format", "svg")
-    fig.underlay(HOUSE)
     st.plotly_chart(fig, key=key, theme=None, config={"displaylogo": False, "toImageButtonOptions":
                                           {"format": fmt, "filename": filename, "scale": 2}})
     st.segmented_control(t("export.figure_format"), ["svg", "png"], key=f"{key}_format",
