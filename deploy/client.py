@@ -77,8 +77,8 @@ class Session:
         elif which == "number_input":
             self.widgets[element.number_input.id.rsplit("-", 1)[-1]] = (element.number_input.id,
                                                                          "number")
-        elif which == "plotly_chart":
-            self.figure_bytes += len(element.plotly_chart.spec)
+        elif which == "bidi_component" and element.bidi_component.component_name == "mehanizmi_plot":
+            self.figure_bytes += len(element.bidi_component.bytes)
 
 
 def percentile(values: list[float], q: float) -> float:
@@ -103,7 +103,7 @@ def free_port() -> int:
 
 def start_server(port: int, script: Path = ROOT / "app.py") -> subprocess.Popen:
     server = subprocess.Popen(
-        [sys.executable, "-m", "streamlit", "run", str(script), "--server.port", str(port),
+        [sys.executable, str(ROOT / "scripts" / "serve.py"), str(script), "--server.port", str(port),
          "--server.address", "127.0.0.1", "--server.headless", "true",
          "--browser.gatherUsageStats", "false"],
         cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

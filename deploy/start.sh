@@ -25,7 +25,7 @@ trap stop EXIT INT TERM
 servers=""
 for i in $(seq 0 $((PROCESSES - 1))); do
   port=$((FIRST + i))
-  STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/streamlit run app.py \
+  STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/python scripts/serve.py app.py \
     --server.port "$port" --server.address 127.0.0.1 --server.headless true \
     > "$RUN/app-$port.log" 2>&1 &
   pids+=($!)

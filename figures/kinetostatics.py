@@ -129,5 +129,6 @@ def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marke
                    zerolinecolor="#999999")))
     if any(axis == "y2" for *_, axis in series):
         fig.merge_layout(dict(yaxis2=dict(title=dict(text=series[-1][0]), overlaying="y",
-                                          side="right", showgrid=False)))
+                                          side="right", showgrid=False,
+                                          ticklabeloverflow="allow")))
     return fig

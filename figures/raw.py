@@ -4,7 +4,7 @@ Plotly checks every property of every trace it is given: here about 0.5 ms a tra
 6 ms an animation frame, so a 120-frame animation cost over a second per rerun. The
 traces come from a few builders that the tests exercise, so they are kept as dicts and
 joined to the (validated) layout only when the figure is serialised — by
-``st.plotly_chart``, ``to_json`` or an image export, which all go through ``to_dict``.
+``ui.plot``, ``to_json`` or an image export, which all go through ``to_dict``.
 """
 
 from __future__ import annotations

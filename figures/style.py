@@ -27,9 +27,11 @@ class Look:
 # sit on the x-axis title whenever equal axes shrink that area
 LEGEND = dict(orientation="h", yref="container", yanchor="bottom", y=0.0,
               xref="container", xanchor="left", x=0.0)
-# a drawing's axes: grid and a frame all round
+# a drawing's axes: grid and a frame all round. Tick labels may overflow the figure: the
+# margins leave them room, and Plotly's default check (hide any that would) measures every
+# label on every redraw, ~18 ms a chart (bench/browser.py)
 AXIS = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, showline=True,
-            linecolor="black", mirror=True)
+            linecolor="black", mirror=True, ticklabeloverflow="allow")
 WIDE, NARROW = 740, 360  # px: a chart across the page's main column, and in half of it
 
 

@@ -4,4 +4,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 python3 -m venv .venv
 .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
-exec .venv/bin/python -m streamlit run app.py --server.port 8501 --browser.gatherUsageStats false "$@"
+exec .venv/bin/python scripts/serve.py app.py --server.port 8501 --browser.gatherUsageStats false "$@"

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
-from tests.test_pages import page
+from tests.test_pages import chart, charts, page
 
 PAGE = "pages/assur_groups.py"
 
@@ -21,16 +23,16 @@ def test_the_default_scene_is_task_4_1_with_its_structure_and_special_point():
     special = at.dataframe[1].value
     assert list(special.iloc[:, 0]) == ["S"]
     assert any("cannot close" in w.value for w in at.warning)  # the locked range, explained
-    assert len(at.get("plotly_chart")) == 1
+    assert len(charts(at)) == 1
 
 
 def test_two_dyads_in_series_step_through_group_by_group():
     at = page(PAGE, lang="en", scene="zbirka-2.1")
     assert "I(1,2) → II(3,4) → II(5,6)" in texts(at)
-    full = len(at.get("plotly_chart")[0].proto.spec)
+    full = len(json.dumps(chart(at, "structure")))
     at.slider(key="upto").set_value(1).run()
     assert not at.exception
-    assert len(at.get("plotly_chart")[0].proto.spec) < full  # members 5, 6 not drawn yet
+    assert len(json.dumps(chart(at, "structure"))) < full  # members 5, 6 not drawn yet
 
 
 @pytest.mark.parametrize("lang", ["sr", "en", "sr-cyrl"])

@@ -41,7 +41,7 @@ def app_url(tmp_path_factory):
     port = free_port()
     log = open(tmp_path_factory.mktemp("server") / "streamlit.log", "w")
     server = subprocess.Popen(
-        [sys.executable, "-m", "streamlit", "run", "app.py", "--server.headless", "true",
+        [sys.executable, "scripts/serve.py", "app.py", "--server.headless", "true",
          "--server.port", str(port), "--browser.gatherUsageStats", "false"],
         cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
     url = f"http://localhost:{port}"
@@ -188,13 +188,13 @@ def test_the_rotor_page_draws_both_polygons(app_url, browser, tmp_path):
 def test_the_gear_page_draws_the_train_and_its_velocity_diagram(app_url, browser, tmp_path):
     page = open_page(browser, f"{app_url}/planetary_gears?lang=en&scene=zbirka-6.8")
     shot = tmp_path / "gears-schematic.png"
-    page.locator("[data-testid='stPlotlyChart']").first.screenshot(path=str(shot))
+    page.locator(".mehanizmi-plot").first.screenshot(path=str(shot))
     keep(shot)
     page.get_by_role("tab", name="Velocity diagram (Kutzbach)").click()
     page.get_by_text("pitch points").first.wait_for(timeout=30_000)
     wait_idle(page)
     shot = tmp_path / "gears-velocity-diagram.png"
-    page.locator("[data-testid='stPlotlyChart']").first.screenshot(path=str(shot))
+    page.locator(".mehanizmi-plot").first.screenshot(path=str(shot))
     keep(shot)
 
 
@@ -240,6 +240,17 @@ def test_the_book_plans_of_task_2_1_step_by_step(app_url, browser, tmp_path):
     step.press("End")
     wait_idle(page)
     page.wait_for_function(f"n => ({ARROWS})(1) == n", arg=full_a, timeout=30_000)
+    # the charts were redrawn in place (ui.plot): the same divs, never unmounted
+    assert page.evaluate("() => [...document.querySelectorAll('.js-plotly-plot')]"
+                         ".every(gd => gd.__marked)") is False
+    page.evaluate("() => document.querySelectorAll('.js-plotly-plot')"
+                  ".forEach(gd => { gd.__marked = true; })")
+    step.press("Home")
+    wait_idle(page)
+    page.wait_for_function(f"n => ({ARROWS})(1) < n", arg=full_a, timeout=30_000)
+    assert page.evaluate("() => [...document.querySelectorAll('.js-plotly-plot')]"
+                         ".every(gd => gd.__marked)")
+    assert page.locator(".modebar-btn[data-title^='Full screen']").count() == 3
     shot = tmp_path / "velocity-acceleration-plans.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)

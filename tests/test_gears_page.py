@@ -4,7 +4,7 @@ import pytest
 
 from mechanisms import preset_ids
 
-from .test_pages import linked, page
+from .test_pages import charts, linked, page
 
 
 @pytest.mark.parametrize("pid", preset_ids("gears"))
@@ -12,7 +12,7 @@ from .test_pages import linked, page
 def test_every_train_draws_its_views(pid, tab):
     at = page("pages/planetary_gears.py", lang="en", scene=pid, tab=tab)
     assert not at.exception
-    assert len(at.get("plotly_chart")) == 1
+    assert len(charts(at)) == 1
 
 
 def test_doubling_the_input_doubles_every_speed():

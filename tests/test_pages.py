@@ -32,11 +32,17 @@ def decode(value):
     return value
 
 
+def charts(at: AppTest) -> dict[str, dict]:
+    """Every chart on the page (ui.plot), by key: what the browser is sent to draw, with the
+    figure under "figure"."""
+    return {element.proto.id.rsplit("-", 1)[-1]: json.loads(element.proto.bytes)
+            for element in at.get("bidi_component")
+            if element.proto.component_name == "mehanizmi_plot"}
+
+
 def chart(at: AppTest, key: str) -> dict:
-    for element in at.get("plotly_chart"):
-        if element.proto.id.endswith(key) or key in element.proto.id:
-            return json.loads(element.proto.spec)
-    raise KeyError(key)
+    """The figure of chart ``key``."""
+    return charts(at)[key]["figure"]
 
 
 def arrows(spec: dict) -> list[tuple[float, float, float, float]]:
@@ -107,11 +113,15 @@ def test_every_table_has_its_csv_download(chapter):
 
 
 @pytest.mark.parametrize("chapter", CHAPTERS, ids=lambda c: c.file)
-def test_every_chart_is_drawn_without_streamlit_s_theme_in_the_house_style(chapter):
-    """Streamlit's theme costs the browser 0.5–0.9 s a redraw (docs/performance.md): each
-    chart carries its own font and title style instead."""
+def test_every_chart_is_drawn_in_place_in_the_house_style(chapter):
+    """Charts go through ui.plot (Plotly.react into a div kept between reruns), never
+    st.plotly_chart, whose theme and remounts cost the browser most of a redraw
+    (docs/performance.md); each figure carries its own font and title style instead."""
     at = page(chapter.file, lang="en")
-    for element in at.get("plotly_chart"):
-        layout = json.loads(element.proto.spec)["layout"]
-        assert element.proto.theme == ""
+    assert not at.get("plotly_chart")
+    drawn = charts(at)
+    assert drawn
+    for body in drawn.values():
+        layout = body["figure"]["layout"]
         assert "Source Sans" in layout["font"]["family"] and layout["title"]["x"] == 0.0
+        assert body["src"].endswith(".js") and body["config"]["displaylogo"] is False

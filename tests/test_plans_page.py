@@ -3,7 +3,7 @@
 import pytest
 
 from .test_pages import arrows as drawn_arrows
-from .test_pages import chart, page
+from .test_pages import chart, charts, page
 from .test_plans import LINKAGES
 
 PAGE = "pages/velocity_plans.py"
@@ -22,7 +22,7 @@ def test_every_linkage_preset_draws_both_plans(pid):
     at = plan_page(scene=pid)
     assert not at.exception
     assert not at.error, [e.value for e in at.error]
-    assert len(at.get("plotly_chart")) == 3  # mechanism, velocity plan, acceleration plan
+    assert len(charts(at)) == 3  # mechanism, velocity plan, acceleration plan
 
 
 def test_moving_the_crank_changes_the_plan():

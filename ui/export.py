@@ -7,6 +7,7 @@ import streamlit as st
 
 from figures.raw import RawFigure
 from ui.i18n import t
+from ui.plot import plot
 
 
 def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
@@ -20,8 +21,9 @@ def chart(fig: RawFigure, filename: str, key: str) -> None:
     """A Plotly chart whose camera button saves SVG or PNG, as the user picks. Drawn without
     Streamlit's theme: the figure carries its own look (figures.raw.HOUSE)."""
     fmt = st.session_state.get(f"{key}_format", "svg")
-    st.plotly_chart(fig, key=key, theme=None, config={"displaylogo": False, "toImageButtonOptions":
-                                          {"format": fmt, "filename": filename, "scale": 2}})
+    plot(fig, key, {"displaylogo": False,
+                    "toImageButtonOptions": {"format": fmt, "filename": filename, "scale": 2}},
+         t("export.fullscreen"))
     st.segmented_control(t("export.figure_format"), ["svg", "png"], key=f"{key}_format",
                          default="svg", format_func=str.upper, label_visibility="visible")
     st.caption(t("export.camera_hint"))

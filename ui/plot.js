@@ -1,0 +1,48 @@
+// A Plotly chart that stays on the page across reruns: each new figure is drawn into the
+// same div with Plotly.react, which changes only what changed. (st.plotly_chart names its
+// element after the figure, so every change unmounted the chart and drew it from scratch.)
+
+function plotly(src) {
+  // plotly.js is loaded once per page, from the app's static files (ui/plot.py puts it there)
+  if (!window.__mehanizmiPlotly) {
+    window.__mehanizmiPlotly = new Promise((resolve, reject) => {
+      const script = document.createElement("script");
+      script.src = src;
+      script.onload = () => resolve(window.Plotly);
+      script.onerror = () => reject(new Error(`plotly.js could not be loaded from ${src}`));
+      document.head.appendChild(script);
+    });
+  }
+  return window.__mehanizmiPlotly;
+}
+
+function fullscreenButton(Plotly, label) {
+  return {
+    name: "fullscreen", title: label, icon: Plotly.Icons.autoscale,
+    click: (gd) => (document.fullscreenElement ? document.exitFullscreen()
+                                               : gd.requestFullscreen()),
+  };
+}
+
+export default function (component) {
+  const { data, parentElement } = component;
+  let gd = parentElement.querySelector(".mehanizmi-plot");
+  if (!gd) {
+    gd = document.createElement("div");
+    gd.className = "mehanizmi-plot";
+    gd.style.background = "white";
+    parentElement.appendChild(gd);
+  }
+  const text = new TextDecoder().decode(data);
+  if (gd.__drawn === text) return;
+  gd.__drawn = text;
+  const spec = JSON.parse(text);
+  plotly(spec.src).then((Plotly) => {
+    if (gd.__drawn !== text) return;  // a newer figure came while plotly.js was loading
+    const config = { ...spec.config, responsive: true,
+                     modeBarButtonsToAdd: [fullscreenButton(Plotly, spec.fullscreen)] };
+    return Plotly.react(gd, { ...spec.figure, config });
+  }).catch((error) => { gd.textContent = String(error); });
+  // called when the chart leaves the page (not between reruns): free Plotly's listeners
+  return () => { if (window.Plotly) window.Plotly.purge(gd); };
+}

@@ -1,0 +1,51 @@
+"""Plotly charts drawn in place: a Streamlit component (components v2) that keeps one div
+per chart and updates it with ``Plotly.react`` (ui/plot.js).
+
+``st.plotly_chart`` takes its element's identity from the figure itself, so in the browser
+every slider step unmounted each chart and drew it from scratch, twice. Measured with
+bench/browser.py: slider → figure on the plans page went from ~510 to ~350 ms.
+
+plotly.js comes from the installed ``plotly`` package, copied once into ``static/`` and served
+by Streamlit's static file serving (``.streamlit/config.toml``): no network needed.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import plotly
+import plotly.io as pio
+import streamlit as st
+
+from figures.raw import RawFigure
+
+ROOT = Path(__file__).resolve().parents[1]
+PLOTLY_JS = f"plotly-{plotly.__version__}.min.js"  # named after the package that ships it
+URL = f"app/static/{PLOTLY_JS}"  # relative to a page's URL: a page is one level deep
+
+_render = st.components.v2.component(
+    "mehanizmi_plot", js=Path(__file__).with_suffix(".js").read_text(encoding="utf-8"),
+    isolate_styles=False)  # plotly.js styles the chart from the page's own stylesheet
+
+
+def publish_plotly_js(static: Path = ROOT / "static") -> Path:
+    """Copy plotly.js from the installed package where Streamlit serves static files."""
+    target = static / PLOTLY_JS
+    if not target.exists():
+        static.mkdir(exist_ok=True)
+        source = Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
+        partial = target.with_suffix(".partial")
+        partial.write_bytes(source.read_bytes())
+        partial.replace(target)  # atomic: a server started meanwhile never serves half a file
+    return target
+
+
+def plot(fig: RawFigure, key: str, config: dict, fullscreen_label: str) -> None:
+    """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns."""
+    body = (f'{{"src": {json.dumps(URL)}, "fullscreen": {json.dumps(fullscreen_label)}, '
+            f'"config": {json.dumps(config)}, "figure": {pio.to_json(fig, validate=False)}}}')
+    _render(key=key, data=body.encode("utf-8"))
+
+
+publish_plotly_js()
