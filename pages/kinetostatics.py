@@ -35,8 +35,15 @@ RESOLUTIONS = (12, 72, 360, 3600)
 
 @st.cache_resource(max_entries=32, hash_funcs=BY_REPR)
 def over_cycle(scene: Scene, steps: int, inertia: bool) -> Kinetostatics:
-    """``steps`` positions over the cycle and, last, the scene's own instant."""
-    return analyse(scene, np.append(sweep_values(scene, steps), scene.driver.at), inertia=inertia)
+    """``steps`` positions over the cycle. Called with the scene at its preset instant, so
+    that moving φ₂ does not analyse the cycle again (only the marker moves)."""
+    return analyse(scene, sweep_values(scene, steps), inertia=inertia)
+
+
+@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
+def at_instant(scene: Scene, inertia: bool) -> Kinetostatics:
+    """The scene's own instant alone (the same numbers as that position of a survey)."""
+    return analyse(scene, np.array([scene.driver.at]), inertia=inertia)
 
 
 def defaults(base: Scene) -> dict[str, object]:
@@ -138,11 +145,11 @@ with main:
         st.info(t("forces.no_loads"))
     try:
         instant(scene)  # raises with the reason when the mechanism cannot be in this position
-        k = over_cycle(scene, steps, st.session_state["inertia"])
+        k = at_instant(scene, st.session_state["inertia"])
     except (Unsolvable, StructureError) as exc:
         st.error(t("plans.unsolvable", reason=str(exc)))
         st.stop()
-    now = steps  # the instant is the last position of the survey
+    now = 0  # k holds the instant only
     if not np.isfinite(k.driving[now]):
         st.warning(t("forces.singular"))
     driving_metrics(k, now)
@@ -210,14 +217,15 @@ if tabs[2].open:
 
 if tabs[3].open:
     with tabs[3]:
-        x = k.motion.at[:now]
+        c = over_cycle(scene.with_(at=base.driver.at), steps, st.session_state["inertia"])
+        x = c.motion.at
         x = np.degrees(x) if rotating else x
         symbol = "M_p [N·m]" if rotating else "F_p [N]"
-        chart(cycle_figure(x, [(symbol, k.driving[:now], "y"), ("P [W]", k.power[:now], "y2")],
+        chart(cycle_figure(x, [(symbol, c.driving, "y"), ("P [W]", c.power, "y2")],
                            st.session_state["at"], t("forces.cycle_title"),
                            t("plans.phi") if rotating else t("plans.s"), look()),
               f"{scene.id}-torque", key="fig_cycle")
-        power = k.power[:now]
+        power = c.power
         feasible = np.isfinite(power)
         peak = float(np.nanmax(np.abs(power), initial=0))
         # the mean over a cycle of loads that do no net work is zero up to rounding: show 0
@@ -228,14 +236,14 @@ if tabs[3].open:
         cols[1].metric(t("forces.peak_power"), f"{num(peak, 4)} W")
         name, unit = ("M_p", "N·m") if rotating else ("F_p", "N")
         cols[2].metric(t("forces.peak_driving", symbol=name),
-                       f"{num(np.nanmax(np.abs(k.driving[:now]), initial=0), 4)} {unit}")
+                       f"{num(np.nanmax(np.abs(c.driving), initial=0), 4)} {unit}")
         if not feasible.all():
             st.caption(t("forces.part_cycle", share=num(100 * feasible.mean(), 3)))
-        for issue in k.motion.issues:
+        for issue in c.motion.issues:
             ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
             if issue.problem == "near-singular":
                 st.warning(t("forces.dead_point", group=issue.group, ranges=ranges))
-        pairs = [(f"|F_{p}{q}|", r.magnitude[:now], "y") for (p, q), r in sorted(k.reactions.items())
+        pairs = [(f"|F_{p}{q}|", r.magnitude, "y") for (p, q), r in sorted(c.reactions.items())
                  if p < q]
         chart(cycle_figure(x, pairs, st.session_state["at"], t("forces.reactions_cycle"),
                            t("plans.phi") if rotating else t("plans.s"), look(), y_title="|F| [N]"),

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.test_pages import chart, page, texts
+from tests.test_pages import chart, decode, page, texts
 
 PAGE = "pages/kinetostatics.py"
 
@@ -49,6 +49,19 @@ def test_every_tab_draws(tab):
             3: ["fig_cycle", "fig_reactions_cycle"]}[tab]
     for key in keys:
         assert chart(at, key)["data"]
+
+
+def test_the_cycle_curves_pass_through_the_instant_and_only_the_marker_follows_the_crank():
+    at = page(PAGE, lang="en", tab="Over the cycle")
+    at.slider(key="at").set_value(90.0).run()
+    curves = chart(at, "fig_cycle")
+    (torque, _) = curves["data"]
+    at_90 = decode(torque["y"])[list(decode(torque["x"])).index(90.0)]
+    assert float(metrics(at)[0].split()[0]) == pytest.approx(at_90, rel=1e-4)  # 5 digits shown
+    at.slider(key="at").set_value(200.0).run()
+    moved = chart(at, "fig_cycle")
+    assert moved["data"] == curves["data"]
+    assert [s["x0"] for s in moved["layout"]["shapes"]] == [200.0]
 
 
 def test_the_polygon_follows_the_force_scale():
