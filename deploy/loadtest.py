@@ -75,7 +75,7 @@ async def user(url: str, index: int, until: float, report: Report) -> None:
 
 
 def check(session: Session, phi: float, report: Report) -> None:
-    shown = session.metrics.get("M_p group by group", "")
+    shown = session.metrics.get("M_p group by group [N·m]", "")
     try:
         value = float(shown.split()[0])
     except (ValueError, IndexError):

@@ -120,10 +120,11 @@ def inertia_table(k: Kinetostatics, i: int) -> pd.DataFrame:
 def driving_metrics(k: Kinetostatics, i: int) -> None:
     unit, symbol = ("N·m", "M_p") if k.rotating else ("N", "F_p")
     cols = st.columns(4)
-    cols[0].metric(t("forces.by_groups", symbol=symbol), f"{num(k.driving[i], 5)} {unit}")
-    cols[1].metric(t("forces.by_lever", symbol=symbol), f"{num(k.driving_lever[i], 5)} {unit}")
-    cols[2].metric(t("forces.by_power", symbol=symbol), f"{num(k.driving_power[i], 5)} {unit}")
-    cols[3].metric(t("forces.power"), f"{num(k.power[i], 5)} W")
+    # units beside the names: four values with their units did not fit a column and were cut
+    cols[0].metric(f"{t('forces.by_groups', symbol=symbol)} [{unit}]", num(k.driving[i], 5))
+    cols[1].metric(f"{t('forces.by_lever', symbol=symbol)} [{unit}]", num(k.driving_lever[i], 5))
+    cols[2].metric(f"{t('forces.by_power', symbol=symbol)} [{unit}]", num(k.driving_power[i], 5))
+    cols[3].metric(f"{t('forces.power')} [W]", num(k.power[i], 5))
     st.caption(t("forces.agreement", spread=f"{k.disagreement[i]:.1e}",
                  residual=f"{k.power_residual[i]:.1e}"))
     if k.crank_force is not None:

@@ -251,6 +251,11 @@ def test_the_book_plans_of_task_2_1_step_by_step(app_url, browser, tmp_path):
     assert page.evaluate("() => [...document.querySelectorAll('.js-plotly-plot')]"
                          ".every(gd => gd.__marked)")
     assert page.locator(".modebar-btn[data-title^='Full screen']").count() == 3
+    assert page.locator(".modebar-btn[data-title^='Share chart']").count() == 0  # no cloud
+    page.locator(".js-plotly-plot").first.hover()
+    page.locator(".modebar-btn[data-title^='Full screen']").first.click()
+    page.wait_for_function("() => document.fullscreenElement?.classList.contains('js-plotly-plot')")
+    page.evaluate("() => document.exitFullscreen()")
     shot = tmp_path / "velocity-acceleration-plans.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)

@@ -18,6 +18,7 @@ def test_the_lecture_example_shows_three_equal_driving_torques():
     assert not at.exception and not at.error
     torque = metrics(at)[:3]
     assert torque[0] == torque[1] == torque[2] and torque[0].startswith("4.53")
+    assert [m.label.rsplit(" ", 1)[-1] for m in at.metric] == ["[N·m]"] * 3 + ["[W]"]
     reactions = at.dataframe[0].value
     assert set(reactions["F_pq"]) == {"F_12", "F_14", "F_16", "F_23", "F_34", "F_45", "F_56"}
     assert "F<sub>5</sub> = 100 N" in texts(chart(at, "fig_loads"))

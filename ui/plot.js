@@ -16,9 +16,15 @@ function plotly(src) {
   return window.__mehanizmiPlotly;
 }
 
-function fullscreenButton(Plotly, label) {
+// four corners, drawn as is (no ascent: Plotly flips only icons that give one)
+const FULLSCREEN_ICON = {
+  width: 24, height: 24,
+  path: "M3 3h7v2H5v5H3zM14 3h7v7h-2V5h-5zM3 14h2v5h5v2H3zM19 19v-5h2v7h-7v-2z",
+};
+
+function fullscreenButton(label) {
   return {
-    name: "fullscreen", title: label, icon: Plotly.Icons.autoscale,
+    name: "fullscreen", title: label, icon: FULLSCREEN_ICON,
     click: (gd) => (document.fullscreenElement ? document.exitFullscreen()
                                                : gd.requestFullscreen()),
   };
@@ -39,8 +45,10 @@ export default function (component) {
   const spec = JSON.parse(text);
   plotly(spec.src).then((Plotly) => {
     if (gd.__drawn !== text) return;  // a newer figure came while plotly.js was loading
-    const config = { ...spec.config, responsive: true,
-                     modeBarButtonsToAdd: [fullscreenButton(Plotly, spec.fullscreen)] };
+    // no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a page's own
+    // link shares it, and the app needs no network
+    const config = { ...spec.config, responsive: true, showSendToCloud: false,
+                     modeBarButtonsToAdd: [fullscreenButton(spec.fullscreen)] };
     return Plotly.react(gd, { ...spec.figure, config });
   }).catch((error) => { gd.textContent = String(error); });
   // called when the chart leaves the page (not between reruns): free Plotly's listeners
