@@ -18,8 +18,8 @@ def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
 
 
 def chart(fig: RawFigure, filename: str, key: str) -> None:
-    """A Plotly chart whose camera button saves SVG or PNG, as the user picks. Drawn without
-    Streamlit's theme: the figure carries its own look (figures.raw.HOUSE)."""
+    """A Plotly chart whose camera button saves SVG or PNG, as the user picks. Redrawn in
+    place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE)."""
     fmt = st.session_state.get(f"{key}_format", "svg")
     plot(fig, key, {"displaylogo": False,
                     "toImageButtonOptions": {"format": fmt, "filename": filename, "scale": 2}},

@@ -12,6 +12,7 @@ by Streamlit's static file serving (``.streamlit/config.toml``): no network need
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import plotly
@@ -35,9 +36,9 @@ def publish_plotly_js(static: Path = ROOT / "static") -> Path:
     if not target.exists():
         static.mkdir(exist_ok=True)
         source = Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
-        partial = target.with_suffix(".partial")
+        partial = target.with_suffix(f".{os.getpid()}.partial")  # one per process (deploy/)
         partial.write_bytes(source.read_bytes())
-        partial.replace(target)  # atomic: a server started meanwhile never serves half a file
+        partial.replace(target)  # atomic: a server never serves half a file
     return target
 
 
