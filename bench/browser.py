@@ -6,6 +6,7 @@ machine. This is what a user waits for: the rerun, the network, and Plotly drawi
     .venv/bin/python bench/browser.py --write   # and regenerate its part of docs/performance.md
 """
 
+import asyncio
 import statistics
 import sys
 import tempfile
@@ -18,7 +19,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from bench.publish import publish  # noqa: E402
-from deploy.client import free_port, start_server  # noqa: E402
+from deploy.client import free_port, start_server, wait_ready  # noqa: E402
 
 CHANGES = 20
 # page, part of the label of a slider that changes the page's first figure (English page),
@@ -65,18 +66,13 @@ def table() -> str:
     server = start_server(port)
     rows = [f"| page | slider → figure redrawn in chromium, ms (median of {CHANGES}) |", "|---|---:|"]
     try:
+        asyncio.run(wait_ready(f"ws://127.0.0.1:{port}/_stcore/stream"))
         with sync_playwright() as p, tempfile.TemporaryDirectory() as profile:
             context = p.chromium.launch_persistent_context(
                 profile, executable_path="/usr/bin/chromium", headless=True,
                 args=["--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"],
                 viewport={"width": 1400, "height": 900})
             page = context.new_page()
-            for _ in range(60):  # the server is starting
-                try:
-                    page.goto(f"http://127.0.0.1:{port}/", timeout=5_000)
-                    break
-                except Exception:
-                    time.sleep(1)
             for name, label, expander in PAGES:
                 ms = measure(page, f"http://127.0.0.1:{port}/{name}?lang=en", label, expander)
                 rows.append(f"| {name} | {ms:.0f} |")

@@ -101,13 +101,15 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def start_server(port: int, script: Path = ROOT / "app.py") -> subprocess.Popen:
-    server = subprocess.Popen(
+def start_server(port: int, script: Path = ROOT / "app.py", log=subprocess.DEVNULL
+                 ) -> subprocess.Popen:
+    """The app served on 127.0.0.1:``port`` as scripts/start.sh serves it; its output to
+    ``log`` (an open file, or discarded)."""
+    return subprocess.Popen(
         [sys.executable, str(ROOT / "scripts" / "serve.py"), str(script), "--server.port", str(port),
          "--server.address", "127.0.0.1", "--server.headless", "true",
          "--browser.gatherUsageStats", "false"],
-        cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return server
+        cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
 
 
 async def wait_ready(url: str, seconds: float = 60) -> None:

@@ -10,7 +10,8 @@ from solvers.kinetostatics import Kinetostatics
 from .linkage import Text, mechanism_traces, pose, scatter, typical_length
 from .polygon import arrows
 from .raw import RawFigure
-from .style import AXIS, LEGEND, NORMAL, Look, margins, member_colour, path_colour, plane_layout
+from .style import (AXIS, LEGEND, NORMAL, TICKS, Look, margins, member_colour, path_colour,
+                    plane_layout)
 
 LOAD_COLOURS = {"external": "#d62728", "inertia": "#ff7f0e", "weight": "#7f7f7f",
                 "reaction": "#1f77b4"}
@@ -129,6 +130,5 @@ def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marke
                    zerolinecolor="#999999")))
     if any(axis == "y2" for *_, axis in series):
         fig.merge_layout(dict(yaxis2=dict(title=dict(text=series[-1][0]), overlaying="y",
-                                          side="right", showgrid=False,
-                                          ticklabeloverflow="allow")))
+                                          side="right", showgrid=False, **TICKS)))
     return fig

@@ -13,10 +13,10 @@ import copy
 
 import plotly.graph_objects as go
 
-# Every figure starts from what Streamlit's own chart theme would add: the pages draw with
-# theme=None (ui.export.chart) because that theme costs the browser 0.5–0.9 s a redraw
-# (bench/browser.py). Set here, the look is part of the figure: no chart call has to add it
-# to a figure that may be cached and shared.
+# Every figure starts from what Streamlit's own chart theme added (font, left bold title,
+# white paper): the pages draw through ui.plot, without that theme, which cost the browser
+# 0.5–0.9 s a redraw (bench/browser.py). Set here, the look is part of the figure: no chart
+# call has to add it to a figure that may be cached and shared.
 HOUSE = dict(font=dict(family='"Source Sans", "Source Sans Pro", sans-serif'),
              title=dict(x=0.0, xanchor="left", font=dict(weight="bold")),
              paper_bgcolor="white")

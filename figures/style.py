@@ -27,11 +27,13 @@ class Look:
 # sit on the x-axis title whenever equal axes shrink that area
 LEGEND = dict(orientation="h", yref="container", yanchor="bottom", y=0.0,
               xref="container", xanchor="left", x=0.0)
-# a drawing's axes: grid and a frame all round. Tick labels may overflow the figure: the
-# margins leave them room, and Plotly's default check (hide any that would) measures every
-# label on every redraw, ~18 ms a chart (bench/browser.py)
+# every axis: tick labels may overflow the figure. The margins leave them room, and Plotly's
+# default check (hide any that would) measures every label on every redraw, ~18 ms a chart
+# (bench/browser.py)
+TICKS = dict(ticklabeloverflow="allow")
+# a drawing's axes: grid and a frame all round
 AXIS = dict(showgrid=True, gridcolor="#e5e5e5", zeroline=False, showline=True,
-            linecolor="black", mirror=True, ticklabeloverflow="allow")
+            linecolor="black", mirror=True, **TICKS)
 WIDE, NARROW = 740, 360  # px: a chart across the page's main column, and in half of it
 
 

@@ -11,11 +11,11 @@ import streamlit as st
 from figures.assur import structure_figure
 from mechanisms.schema import Scene
 from solvers.diagnostics import (TOLERANCES, Unsolvable, format_range, newton_accuracy,
-                                 solve_instant, sweep_values)
+                                 sweep_values)
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
-from ui.cache import BY_REPR
+from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
 from ui.export import chart, show_table
 from ui.i18n import num, t, title_of
@@ -33,13 +33,6 @@ CYCLE = 360
 def cycle(scene: Scene, tol: float) -> Motion:
     """A survey of the driver (``CYCLE`` positions)."""
     return solve(scene, sweep_values(scene, CYCLE), tol=tol)
-
-
-@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
-def now(scene: Scene, tol: float) -> Motion:
-    """The scene at its own instant, at the chosen tolerance (raises Unsolvable with the
-    reason when the groups cannot be there)."""
-    return solve_instant(scene, None, tol)
 
 
 def counts(scene: Scene) -> None:
@@ -98,7 +91,7 @@ with main:
         st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
         upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
     try:
-        current = now(scene, tol)
+        current = instant(scene, tol)
     except (Unsolvable, StructureError) as exc:
         st.error(t("plans.unsolvable", reason=str(exc)))
         st.stop()

@@ -20,7 +20,6 @@ from ui.url import seed, table_to_url, url_table
 
 page_title("pages/planetary_gears.py")
 
-controls, main = st.columns([1, 3], gap="large")
 
 def defaults(base: GearTrain) -> dict[str, object]:
     """Each input's ω (or peripheral v), and drawing scales that fit the train on ~8 cm."""
@@ -37,6 +36,7 @@ def meshes_table(base: GearTrain) -> pd.DataFrame:
                           "R_b [m]": m.radii[1], "ring": m.internal or 0} for m in base.meshes])
 
 
+controls, main = st.columns([1, 3], gap="large")
 with controls:
     base = scene_picker("gears")
     seed(defaults(base), st.session_state["scene"])

@@ -10,6 +10,7 @@ import numpy as np
 from mechanisms.schema import Scene
 
 from .kinematics import SINGULAR, GroupIssue, Motion, solve
+from .triads import TOL
 from .kinetostatics import analyse
 from .structure import Structure, decompose
 
@@ -95,7 +96,7 @@ def _driver_value(scene: Scene, at: float | None) -> float:
     return math.radians(at) if scene.driver.kind == "rotating" else at
 
 
-def solve_instant(scene: Scene, at: float | None, tol: float = 1e-10) -> Motion:
+def solve_instant(scene: Scene, at: float | None, tol: float = TOL) -> Motion:
     """Solve one instant (driver value in degrees or metres, default the scene's own), or
     raise ``Unsolvable`` with the reason; ``tol`` as for ``solve``."""
     value = _driver_value(scene, at)

@@ -22,7 +22,7 @@ from mechanisms.schema import DRIVER, FRAME, Scene
 from .loops import build_loop, cross, group_size, solve_dyad
 from .state import Body, unit
 from .structure import Group, Structure, StructureError, decompose
-from .triads import assemble, prepare_march, solve_triad
+from .triads import TOL, assemble, prepare_march, solve_triad
 
 # A class III group's assembly and branch-carrying march depend on its geometry (not on the
 # driver's position, speed or the requested values inside the marched range) and cost
@@ -139,7 +139,7 @@ def driver_body(scene: Scene, at: np.ndarray) -> Body:
 
 
 def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = None,
-          structure: Structure | None = None, tol: float = 1e-10) -> Motion:
+          structure: Structure | None = None, tol: float = TOL) -> Motion:
     """Solve the scene at driver value(s) ``at`` (rad or m; default: the scene's instant).
 
     ``tol`` is Newton's stopping residual for class III groups, relative to the group's size.

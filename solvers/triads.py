@@ -37,6 +37,7 @@ MAX_ITERATIONS = 40
 MARCH_STEPS = 36  # coarse nodes per full turn of a crank (10°)
 MARCH_SPLITS = 5  # halvings of a march step that Newton cannot close from its prediction
 MARCH_ITERATIONS = 12  # more than this from a predicted pose means Newton wandered
+TOL = 1e-10  # Newton's default stopping residual, relative to the group's size
 MARCH_TOL = 1e-12  # the march carries the branch: always tight, whatever the user's tolerance
 
 
@@ -213,7 +214,7 @@ def rates(system: _System, known: dict[int, Body], bodies: dict[int, Body], leve
 
 def solve_triad(scene: Scene, group: Group, at: np.ndarray, known: dict[int, Body], order: int,
                 start: tuple[np.ndarray, np.ndarray],
-                known_at: Callable[[np.ndarray], dict[int, Body]], *, tol: float = 1e-10,
+                known_at: Callable[[np.ndarray], dict[int, Body]], *, tol: float = TOL,
                 size: float = 1.0, march: tuple | None = None) -> TriadSolution:
     """Positions (and rates up to ``order``) of a class III group at driver values ``at``.
 

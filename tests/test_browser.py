@@ -4,17 +4,15 @@ Skipped on a developer machine without /usr/bin/chromium; in CI (CI=true) a miss
 browser is a failure, never a silent skip.
 """
 
+import asyncio
 import json
 import os
 import shutil
-import socket
-import subprocess
-import sys
-import time
-import urllib.request
 from pathlib import Path
 
 import pytest
+
+from deploy.client import free_port, start_server, wait_ready
 
 ROOT = Path(__file__).resolve().parents[1]
 CHROMIUM = "/usr/bin/chromium"
@@ -30,31 +28,14 @@ if not Path(CHROMIUM).exists():
     pytest.skip(f"{CHROMIUM} not installed (run .ci/run or see README)", allow_module_level=True)
 
 
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 @pytest.fixture(scope="module")
 def app_url(tmp_path_factory):
     port = free_port()
     log = open(tmp_path_factory.mktemp("server") / "streamlit.log", "w")
-    server = subprocess.Popen(
-        [sys.executable, "scripts/serve.py", "app.py", "--server.headless", "true",
-         "--server.port", str(port), "--browser.gatherUsageStats", "false"],
-        cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
-    url = f"http://localhost:{port}"
+    server = start_server(port, log=log)
     try:
-        for _ in range(200):
-            try:
-                if urllib.request.urlopen(f"{url}/_stcore/health", timeout=1).read() == b"ok":
-                    break
-            except OSError:
-                time.sleep(0.1)
-        else:
-            raise RuntimeError("the app did not start")
-        yield url
+        asyncio.run(wait_ready(f"ws://127.0.0.1:{port}/_stcore/stream"))
+        yield f"http://127.0.0.1:{port}"
     finally:
         server.terminate()
         server.wait(timeout=10)

@@ -13,6 +13,7 @@ from mechanisms import Scene, load_preset
 from solvers import Motion, solve
 from solvers.diagnostics import solve_instant
 from solvers.paths import cycle_values
+from solvers.triads import TOL
 
 BY_REPR = {Scene: repr}
 
@@ -30,6 +31,7 @@ def cycle(scene: Scene, steps: int, order: int = 0) -> Motion:
 
 
 @st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
-def instant(scene: Scene) -> Motion:
-    """The scene solved at its own instant (raises Unsolvable with the reason)."""
-    return solve_instant(scene, None)
+def instant(scene: Scene, tol: float = TOL) -> Motion:
+    """The scene solved at its own instant, class III groups to ``tol`` (raises Unsolvable
+    with the reason)."""
+    return solve_instant(scene, None, tol)
