@@ -102,7 +102,7 @@ def reactions_table(k: Kinetostatics, i: int) -> pd.DataFrame:
         if r.pair.kind == "prismatic":
             row["h [m]"] = num(float(r.offset[i]), 4)
         rows.append(row)
-    return pd.DataFrame(rows)
+    return pd.DataFrame(rows).fillna("—")  # h belongs to sliding pairs only
 
 
 def inertia_table(k: Kinetostatics, i: int) -> pd.DataFrame:

@@ -21,6 +21,10 @@ def test_the_lecture_example_shows_three_equal_driving_torques():
     assert [m.label.rsplit(" ", 1)[-1] for m in at.metric] == ["[N·m]"] * 3 + ["[W]"]
     reactions = at.dataframe[0].value
     assert set(reactions["F_pq"]) == {"F_12", "F_14", "F_16", "F_23", "F_34", "F_45", "F_56"}
+    sliding = reactions.iloc[:, 1].str.startswith("P")  # the pair's letter: R or P
+    assert 0 < sliding.sum() < len(reactions)
+    assert (reactions.loc[~sliding, "h [m]"] == "—").all()  # no offset shown as "None"
+    assert (reactions.loc[sliding, "h [m]"] != "—").all()
     assert "F<sub>5</sub> = 100 N" in texts(chart(at, "fig_loads"))
 
 
