@@ -201,6 +201,20 @@ ARROWS = ("i => document.querySelectorAll('.js-plotly-plot')[i].data"
           ".reduce((n, t) => n + t.x.length / 3, 0)")  # figures.arrows: tail, head, gap
 
 
+# the frame (counted with requestAnimationFrame) in which each Plotly.react starts
+COUNT_FRAMES = """() => {
+  window.__frame = 0;
+  const tick = () => { window.__frame += 1; requestAnimationFrame(tick); };
+  requestAnimationFrame(tick);
+  window.__drawnInFrame = [];
+  const react = window.Plotly.react;
+  window.Plotly.react = function (...args) {
+    window.__drawnInFrame.push(window.__frame);
+    return react.apply(this, args);
+  };
+}"""
+
+
 def arrow_count(page, which: int) -> int:
     return page.evaluate(ARROWS, which)
 
@@ -225,12 +239,19 @@ def test_the_book_plans_of_task_2_1_step_by_step(app_url, browser, tmp_path):
     assert page.evaluate("() => [...document.querySelectorAll('.js-plotly-plot')]"
                          ".every(gd => gd.__marked)") is False
     page.evaluate("() => document.querySelectorAll('.js-plotly-plot')"
-                  ".forEach(gd => { gd.__marked = true; })")
+                  ".forEach(gd => { gd.__marked = true; gd.querySelector('.main-svg').__marked = true; })")
+    page.evaluate(COUNT_FRAMES)
     step.press("Home")
     wait_idle(page)
     page.wait_for_function(f"n => ({ARROWS})(1) < n", arg=full_a, timeout=30_000)
     assert page.evaluate("() => [...document.querySelectorAll('.js-plotly-plot')]"
                          ".every(gd => gd.__marked)")
+    # ... by Plotly.react, not from scratch (a changed config made it start with newPlot)
+    assert page.evaluate("() => [...document.querySelectorAll('.js-plotly-plot')]"
+                         ".every(gd => gd.querySelector('.main-svg').__marked)")
+    # one chart per frame, so the first is on the screen before the others are drawn
+    frames = page.evaluate("() => window.__drawnInFrame")
+    assert len(frames) >= 2 and len(set(frames)) == len(frames), frames
     assert page.locator(".modebar-btn[data-title^='Full screen']").count() == 3
     assert page.locator(".modebar-btn[data-title^='Share chart']").count() == 0  # no cloud
     page.locator(".js-plotly-plot").first.hover()

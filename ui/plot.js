@@ -22,12 +22,52 @@ const FULLSCREEN_ICON = {
   path: "M3 3h7v2H5v5H3zM14 3h7v7h-2V5h-5zM3 14h2v5h5v2H3zM19 19v-5h2v7h-7v-2z",
 };
 
+function toggleFullscreen(gd) {
+  return document.fullscreenElement ? document.exitFullscreen() : gd.requestFullscreen();
+}
+
+// One button object per label, kept: Plotly.react compares the new config with the old one,
+// functions by identity, and a config that differs makes it draw the chart from scratch
+// (Plotly.newPlot) before reacting — a fresh button each rerun doubled every redraw.
+const BUTTONS = new Map();
+
 function fullscreenButton(label) {
-  return {
-    name: "fullscreen", title: label, icon: FULLSCREEN_ICON,
-    click: (gd) => (document.fullscreenElement ? document.exitFullscreen()
-                                               : gd.requestFullscreen()),
-  };
+  if (!BUTTONS.has(label)) {
+    BUTTONS.set(label, { name: "fullscreen", title: label, icon: FULLSCREEN_ICON,
+                         click: toggleFullscreen });
+  }
+  return BUTTONS.get(label);
+}
+
+// Charts waiting to be drawn, one per frame, those on screen first. Drawn one after
+// another without a paint between them, the plans page's three charts (which a rerun
+// brings in two or three React commits) kept its first figure off the screen until the
+// last was done (bench/browser.py).
+const waiting = new Map();  // chart div → its draw
+let drawing = false;  // a chart was drawn and the page has not been painted since
+
+function onScreen(gd) {
+  const box = gd.getBoundingClientRect();
+  return box.bottom > 0 && box.top < window.innerHeight;
+}
+
+function drawNext() {
+  if (!waiting.size) {
+    drawing = false;
+    return;
+  }
+  const [gd, draw] = [...waiting].find(([div]) => onScreen(div)) || waiting.entries().next().value;
+  waiting.delete(gd);
+  draw();
+  requestAnimationFrame(() => setTimeout(drawNext));  // after the next paint
+}
+
+function schedule(gd, draw) {
+  waiting.set(gd, draw);  // a newer figure replaces one still waiting
+  if (!drawing) {
+    drawing = true;
+    queueMicrotask(drawNext);  // after the other charts of this commit are queued too
+  }
 }
 
 export default function (component) {
@@ -43,14 +83,17 @@ export default function (component) {
   if (gd.__drawn === text) return;
   gd.__drawn = text;
   const spec = JSON.parse(text);
-  plotly(spec.src).then((Plotly) => {
-    if (gd.__drawn !== text) return;  // a newer figure came while plotly.js was loading
+  plotly(spec.src).then((Plotly) => schedule(gd, () => {
     // no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a page's own
     // link shares it, and the app needs no network
     const config = { ...spec.config, responsive: true, showSendToCloud: false,
                      modeBarButtonsToAdd: [fullscreenButton(spec.fullscreen)] };
-    return Plotly.react(gd, { ...spec.figure, config });
-  }).catch((error) => { gd.textContent = String(error); });
+    Plotly.react(gd, { ...spec.figure, config })
+      .catch((error) => { gd.textContent = String(error); });
+  })).catch((error) => { gd.textContent = String(error); });
   // called when the chart leaves the page (not between reruns): free Plotly's listeners
-  return () => { if (window.Plotly) window.Plotly.purge(gd); };
+  return () => {
+    waiting.delete(gd);
+    if (window.Plotly) window.Plotly.purge(gd);
+  };
 }
