@@ -1,7 +1,8 @@
 """The mechanism drawn at one position: members, pivots, sliders with their guides, letters.
 
 Every call returns the same number of traces in the same order for any position of a
-scene, so animation frames can replace them one for one. Traces are plain dicts.
+scene, so animation frames can replace them one for one; a scene without sliders has no
+guide or block traces. Traces are plain dicts.
 """
 
 from __future__ import annotations
@@ -75,9 +76,8 @@ def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dic
     guide_y: list = []
     blocks = []
     reach = 0.6 * typical_length(scene)
-    for pair in scene.pairs:
-        if pair.kind != "prismatic":
-            continue
+    sliding = [pair for pair in scene.pairs if pair.kind == "prismatic"]
+    for pair in sliding:
         at = positions.get(pair.point)
         rot = rotations.get(pair.members[0])
         if at is None or rot is None:
@@ -87,22 +87,24 @@ def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dic
         guide_x += x + [None]
         guide_y += y + [None]
         blocks.append(at)
-    traces.append(scatter(x=guide_x, y=guide_y, mode="lines", showlegend=False, hoverinfo="skip",
-                             opacity=opacity, line=dict(color=FRAME_COLOUR, width=1.5 * look.line,
-                                                        dash="dot")))
-    x, y = _xy(blocks)
-    traces.append(scatter(x=x, y=y, mode="markers", showlegend=False, hoverinfo="skip",
-                             opacity=opacity, marker=dict(symbol="square-open", size=16 * look.line,
-                                                          color=FRAME_COLOUR,
-                                                          line=dict(width=2 * look.line))))
+    if sliding:  # guides and blocks only where the scene has sliders: a trace costs the browser
+        traces.append(scatter(x=guide_x, y=guide_y, mode="lines", showlegend=False,
+                              hoverinfo="skip", opacity=opacity,
+                              line=dict(color=FRAME_COLOUR, width=1.5 * look.line, dash="dot")))
+        x, y = _xy(blocks)
+        traces.append(scatter(x=x, y=y, mode="markers", showlegend=False, hoverinfo="skip",
+                              opacity=opacity,
+                              marker=dict(symbol="square-open", size=16 * look.line,
+                                          color=FRAME_COLOUR, line=dict(width=2 * look.line))))
     x, y = _xy([positions[p] for p in scene.frame if p in positions])
     traces.append(scatter(x=x, y=y, mode="markers", name=t("fig.frame"), showlegend=legend,
                              opacity=opacity, hoverinfo="skip",
                              marker=dict(symbol="triangle-up", size=14 * look.line,
                                          color=FRAME_COLOUR)))
-    names = sorted(positions) if letters else []
-    x, y = _xy([positions[n] for n in names])
-    traces.append(scatter(x=x, y=y, mode="text", text=names, textposition="top right",
-                             showlegend=False, hoverinfo="skip",
-                             textfont=dict(size=look.font + 2, color="black")))
+    if letters:
+        names = sorted(positions)
+        x, y = _xy([positions[n] for n in names])
+        traces.append(scatter(x=x, y=y, mode="text", text=names, textposition="top right",
+                              showlegend=False, hoverinfo="skip",
+                              textfont=dict(size=look.font + 2, color="black")))
     return traces

@@ -9,7 +9,7 @@ from solvers.kinematics import Motion
 
 from .linkage import Text, mechanism_traces, pose, scatter
 from .raw import RawFigure
-from .style import NORMAL, Look, margins, path_colour, plane_layout
+from .style import FRAME_COLOUR, NORMAL, Look, margins, path_colour, plane_layout
 
 TRAIL = 40  # frames a trail lasts
 SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -32,10 +32,7 @@ def construction_figure(steps: Motion, smooth: Motion | None, points: list[str],
     fig = RawFigure()
     scene = steps.scene
     fig.add_raw(compass_circles(scene, t, look))
-    faint = [mechanism_traces(scene, *pose(steps, k), t, look, opacity=0.18, legend=False,
-                              letters=False)
-             for k in range(len(steps.at)) if steps.feasible[k]]
-    fig.add_raw(merged(faint))
+    fig.add_raw(pencil_copies(steps, t, look))
     for i, name in enumerate(points):
         colour = path_colour(i)
         if smooth is None:
@@ -58,20 +55,28 @@ def construction_figure(steps: Motion, smooth: Motion | None, points: list[str],
     return plane_layout(fig, title, look)
 
 
-def merged(poses: list[list[dict]]) -> list[dict]:
-    """The same traces at several positions joined into one trace each (gaps between them):
-    a browser draws 8 traces much faster than 12 × 8."""
-    out = []
-    for same in zip(*poses):
-        trace = dict(same[0])
-        for axis in ("x", "y"):
-            joined: list = []
-            for tr in same:
-                joined += list(tr[axis]) + [None]
-            trace[axis] = joined
-        trace.pop("text", None)
-        out.append(trace)
-    return out
+def pencil_copies(steps: Motion, t: Text, look: Look) -> list[dict]:
+    """The mechanism faint in every position it reaches, in pencil grey as on paper: all its
+    members in one trace, its pivots (and sliders) in one each. A browser draws a few traces
+    much faster than 12 copies of eight."""
+    scene = steps.scene
+    copies = [mechanism_traces(scene, *pose(steps, k), t, look, opacity=0.18, legend=False,
+                               letters=False, colour=lambda _: FRAME_COLOUR)
+              for k in range(len(steps.at)) if steps.feasible[k]]
+    if not copies:
+        return []
+    members = len(scene.members)
+    pencil = _joined([trace for copy in copies for trace in copy[:members]])
+    pencil.update(name=None, legendgroup=None, hoverinfo="skip")
+    return [pencil] + [_joined(list(same)) for same in zip(*(copy[members:] for copy in copies))]
+
+
+def _joined(traces: list[dict]) -> dict:
+    """Traces of one kind as one trace, a gap between each."""
+    trace = dict(traces[0])
+    for axis in ("x", "y"):
+        trace[axis] = [v for tr in traces for v in [*tr[axis], None]]
+    return trace
 
 
 def compass_circles(scene: Scene, t: Text, look: Look) -> list[dict]:

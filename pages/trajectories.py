@@ -13,7 +13,7 @@ from figures.trajectories import animation_figure, construction_figure, field_fi
 from mechanisms.schema import Scene, Travel
 from solvers.diagnostics import dead_zones, format_range
 from solvers.paths import (animation_order, cycle_time, field_path, loops_backward,
-                           path_length, resolution_table, strokes, swings)
+                           path_errors, path_length, solve_times, strokes, swings)
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, cycle
 from ui.chapters import page_title
@@ -30,15 +30,22 @@ MAX_FRAMES = 120
 page_title("pages/trajectories.py")
 
 
+@st.cache_data(max_entries=16, hash_funcs=BY_REPR)
+def _solve_times(base: Scene) -> dict[int, float]:
+    return solve_times(base, RESOLUTIONS)
+
+
 @st.cache_data(max_entries=64, hash_funcs=BY_REPR)
-def _accuracy(scene: Scene, points: tuple[str, ...]) -> list[dict]:
-    return resolution_table(scene, list(points), RESOLUTIONS)
+def _path_errors(scene: Scene, points: tuple[str, ...]) -> dict[int, float]:
+    return path_errors(scene, list(points), RESOLUTIONS)
 
 
-def accuracy(scene: Scene, points: tuple[str, ...]) -> list[dict]:
-    """The resolution table, measured once per geometry: neither the solve time nor the
-    paths depend on ω₂, so moving ω₂ does not measure again."""
-    return _accuracy(scene.with_(speed=1.0), points)
+def accuracy(base: Scene, scene: Scene, points: tuple[str, ...]) -> list[dict]:
+    """The resolution table: solve times measured once per mechanism as loaded (lengths do
+    not change them), path errors once per geometry (ω₂ changes neither)."""
+    times = _solve_times(base.with_(speed=1.0))
+    errors = _path_errors(scene.with_(speed=1.0), points)
+    return [{"positions": n, "solve_ms": times[n], "deviation_m": errors[n]} for n in RESOLUTIONS]
 
 
 @st.cache_resource(max_entries=16, hash_funcs=BY_REPR)
@@ -177,14 +184,17 @@ with controls:
     for name, stroke in strokes(fine).items():
         st.metric(t("traj.stroke", pair=name), f"{num(stroke)} m")
     for number, (low, high) in swings(fine).items():
-        st.metric(t("traj.swing", member=number), f"{num(low, 4)}° … {num(high, 4)}°")
+        # the limits under the angle, in small type: "101.4° … 147.3°" is too wide for the column
+        st.metric(t("traj.swing", member=number), f"{num(high - low, 4)}°",
+                  f"{num(low, 4)}° … {num(high, 4)}°", delta_color="off", delta_arrow="off",
+                  delta_description=t("traj.limits"))
 
 with main:
     st.subheader(t("traj.accuracy_title"))
     rows = [{t("traj.col_positions"): r["positions"], t("traj.col_solve"): num(r["solve_ms"], 3),
              t("traj.col_deviation"): num(r["deviation_m"] * 1e3, 3),
              t("traj.col_current"): "◀" if r["positions"] == steps else ""}
-            for r in accuracy(scene, tuple(points))]
+            for r in accuracy(base, scene, tuple(points))]
     show_table(pd.DataFrame(rows), f"{scene.id}-resolution.csv", "csv_resolution")
     st.caption(t("traj.timing", solve=num(solve_ms, 3), figure=num(figure_ms, 3), steps=steps))
     table = pd.DataFrame({"phi2_deg": np.degrees(fine.at)})

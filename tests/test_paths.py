@@ -9,7 +9,8 @@ from mechanisms import load_preset
 from mechanisms.schema import Travel
 from solvers import solve
 from solvers.paths import (animation_order, chord_deviation, cycle_time, cycle_values, field_path,
-                           loops_backward, path_length, resolution_table, strokes)
+                           loops_backward, path_errors, path_length, solve_times,
+                           strokes)
 
 from . import scenes
 
@@ -98,11 +99,15 @@ def test_the_tedder_tine_makes_a_true_trochoid_at_the_books_speed():
     assert loops and slowest < 0
 
 
-def test_resolution_table_reports_time_and_error_per_resolution():
-    rows = resolution_table(scenes.fourbar(r2=0.1), ["A"], repeat=1)
-    assert [r["positions"] for r in rows] == [12, 72, 360, 3600]
-    assert all(r["solve_ms"] > 0 for r in rows)
-    assert rows[0]["deviation_m"] == pytest.approx(0.1 * (1 - math.cos(math.pi / 12)), rel=1e-3)
+def test_solve_times_and_path_errors_per_resolution():
+    scene = scenes.fourbar(r2=0.1)
+    times = solve_times(scene, repeat=1)
+    errors = path_errors(scene, ["A"])
+    assert list(times) == list(errors) == [12, 72, 360, 3600]
+    assert all(ms > 0 for ms in times.values())
+    # the crank pin's path is a circle: a chord of 30° misses it by r(1 − cos 15°)
+    assert errors[12] == pytest.approx(0.1 * (1 - math.cos(math.pi / 12)), rel=1e-3)
+    assert errors[72] == pytest.approx(0.1 * (1 - math.cos(math.pi / 72)), rel=1e-3)
 
 
 def test_a_rockers_limit_positions_are_its_extreme_angles():

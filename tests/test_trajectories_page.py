@@ -1,6 +1,7 @@
 """Chapter 1 page as a user drives it (AppTest): the numbers in the figures follow the inputs."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -36,6 +37,31 @@ def test_a_longer_crank_draws_a_bigger_crank_circle():
     at.slider(key="L2").set_value(0.12).run()
     assert not at.exception
     assert np.abs(positions(at, "A")) == pytest.approx(np.full(12, 0.12))
+
+
+def test_the_resolution_table_follows_the_lengths_and_times_each_mechanism_once():
+    """A length changes the drawn paths' error (the crank pin's circle: r(1 − cos 15°) at 12
+    positions) but not the solve times, measured once for the mechanism as loaded."""
+    at = fourbar()
+
+    def table():
+        frame = at.dataframe[0].value
+        return frame["solve time [ms]"].tolist(), frame["largest chord deviation [mm]"].tolist()
+
+    times, errors = table()
+    at.slider(key="L2").set_value(0.12).run()
+    new_times, new_errors = table()
+    assert new_times == times
+    assert float(new_errors[0]) > float(errors[0])
+    assert float(new_errors[0]) >= 1e3 * 0.12 * (1 - math.cos(math.pi / 12)) * 0.999
+
+
+def test_a_rockers_swing_angle_is_shown_with_its_limit_positions():
+    at = fourbar()
+    (metric,) = [m for m in at.metric if m.label == "Swing angle of member 4"]
+    low, high = (float(v) for v in re.findall(r"(-?[\d.]+)°", metric.delta))
+    assert 0 < high - low < 180
+    assert float(metric.value.rstrip("°")) == pytest.approx(high - low, abs=0.1)
 
 
 def test_the_tedder_advances_by_its_travel_each_cycle_and_closes_relative_to_the_machine():
