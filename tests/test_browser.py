@@ -298,3 +298,19 @@ def test_a_table_downloads_as_csv_when_asked(app_url, browser, tmp_path):
         page.get_by_role("button", name="Download the table (CSV)").first.click()
     text = Path(download.value.path()).read_text(encoding="utf-8")
     assert text.splitlines()[0].startswith("F_pq,") and "F_45" in text
+
+
+@pytest.mark.parametrize("fmt, start", [("SVG", "<svg"), ("PNG", "\x89PNG")])
+def test_a_figure_saves_as_svg_or_png_from_its_toolbar(app_url, browser, fmt, start):
+    """Each chart's toolbar has one button per format (Plotly's camera, which
+    saves one format chosen in advance, is gone); the file is named after scene and chart."""
+    page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=zbirka-2.1", size=(1600, 1000))
+    page.wait_for_function("() => document.querySelectorAll('.js-plotly-plot').length >= 3")
+    assert page.locator(f".modebar-btn[data-title^='Save as {fmt}']").count() == 3
+    assert page.locator(".modebar-btn[data-title^='Download plot']").count() == 0
+    page.locator(".js-plotly-plot").first.hover()  # the toolbar shows on hover
+    with page.expect_download(timeout=30_000) as download:
+        page.locator(f".modebar-btn[data-title^='Save as {fmt}']").first.click()
+    assert download.value.suggested_filename == f"zbirka-2.1-velocity-plan.{fmt.lower()}"
+    data = Path(download.value.path()).read_bytes()
+    assert data.decode("latin-1").startswith(start)

@@ -124,4 +124,5 @@ def test_every_chart_is_drawn_in_place_in_the_house_style(chapter):
     for body in drawn.values():
         layout = body["figure"]["layout"]
         assert "Source Sans" in layout["font"]["family"] and layout["title"]["x"] == 0.0
-        assert body["src"].endswith(".js") and body["config"]["displaylogo"] is False
+        assert body["src"].endswith(".js") and body["filename"]
+        assert set(body["labels"]) == {"svg", "png", "fullscreen"}

@@ -18,15 +18,10 @@ def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
 
 
 def chart(fig: RawFigure, filename: str, key: str) -> None:
-    """A Plotly chart whose camera button saves SVG or PNG, as the user picks. Redrawn in
-    place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE)."""
-    fmt = st.session_state.get(f"{key}_format", "svg")
-    plot(fig, key, {"displaylogo": False,
-                    "toImageButtonOptions": {"format": fmt, "filename": filename, "scale": 2}},
-         t("export.fullscreen"))
-    st.segmented_control(t("export.figure_format"), ["svg", "png"], key=f"{key}_format",
-                         default="svg", format_func=str.upper, label_visibility="visible")
-    st.caption(t("export.camera_hint"))
+    """A Plotly chart whose toolbar saves it as SVG (to print) or PNG, and shows it full screen.
+    Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE)."""
+    plot(fig, key, filename, {"svg": t("export.save_svg"), "png": t("export.save_png"),
+                              "fullscreen": t("export.fullscreen")})
 
 
 def print_button(svg: str, filename: str, key: str) -> None:

@@ -26,17 +26,26 @@ function toggleFullscreen(gd) {
   return document.fullscreenElement ? document.exitFullscreen() : gd.requestFullscreen();
 }
 
-// One button object per label, kept: Plotly.react compares the new config with the old one,
-// functions by identity, and a config that differs makes it draw the chart from scratch
-// (Plotly.newPlot) before reacting — a fresh button each rerun doubled every redraw.
+// Saved under the name the page gives the chart now (a button outlives the rerun that made it)
+function save(format) {
+  return (gd) => window.Plotly.downloadImage(gd, { format, filename: gd.__filename, scale: 2 });
+}
+
+// Button objects made once per label and kept: Plotly.react compares the new config with the
+// old one, functions by identity, and a config that differs makes it draw the chart from
+// scratch (Plotly.newPlot) before reacting — a fresh button each rerun doubled every redraw.
 const BUTTONS = new Map();
 
-function fullscreenButton(label) {
-  if (!BUTTONS.has(label)) {
-    BUTTONS.set(label, { name: "fullscreen", title: label, icon: FULLSCREEN_ICON,
-                         click: toggleFullscreen });
-  }
-  return BUTTONS.get(label);
+function button(name, title, icon, click) {
+  const key = `${name}\n${title}`;
+  if (!BUTTONS.has(key)) BUTTONS.set(key, { name, title, icon, click });
+  return BUTTONS.get(key);
+}
+
+function toolbar(Plotly, labels) {
+  return [button("save-svg", labels.svg, Plotly.Icons.pencil, save("svg")),
+          button("save-png", labels.png, Plotly.Icons.camera, save("png")),
+          button("fullscreen", labels.fullscreen, FULLSCREEN_ICON, toggleFullscreen)];
 }
 
 // Charts waiting to be drawn, one per frame, those on screen first. Drawn one after
@@ -83,11 +92,13 @@ export default function (component) {
   if (gd.__drawn === text) return;
   gd.__drawn = text;
   const spec = JSON.parse(text);
+  gd.__filename = spec.filename;
   plotly(spec.src).then((Plotly) => schedule(gd, () => {
-    // no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a page's own
-    // link shares it, and the app needs no network
-    const config = { ...spec.config, responsive: true, showSendToCloud: false,
-                     modeBarButtonsToAdd: [fullscreenButton(spec.fullscreen)] };
+    // one toolbar button per file format instead of Plotly's camera (one format, set in
+    // advance); no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a
+    // page's own link shares it, and the app needs no network
+    const config = { responsive: true, displaylogo: false, showSendToCloud: false, modeBarButtonsToRemove: ["toImage"],
+                     modeBarButtonsToAdd: toolbar(Plotly, spec.labels) };
     Plotly.react(gd, { ...spec.figure, config })
       .catch((error) => { gd.textContent = String(error); });
   })).catch((error) => { gd.textContent = String(error); });

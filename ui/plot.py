@@ -42,11 +42,12 @@ def publish_plotly_js(static: Path = ROOT / "static") -> Path:
     return target
 
 
-def plot(fig: RawFigure, key: str, config: dict, fullscreen_label: str) -> None:
-    """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns."""
-    body = (f'{{"src": {json.dumps(URL)}, "fullscreen": {json.dumps(fullscreen_label)}, '
-            f'"config": {json.dumps(config)}, "figure": {pio.to_json(fig, validate=False)}}}')
+def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str]) -> None:
+    """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns. Its
+    toolbar saves it as ``filename``.svg or .png; ``labels`` name the buttons ("svg", "png",
+    "fullscreen")."""
+    body = (f'{{"src": {json.dumps(URL)}, "filename": {json.dumps(filename)}, '
+            f'"labels": {json.dumps(labels)}, "figure": {pio.to_json(fig, validate=False)}}}')
     _render(key=key, data=body.encode("utf-8"))
-
 
 publish_plotly_js()
