@@ -6,6 +6,10 @@ import re
 import numpy as np
 import pytest
 
+from mechanisms import load_preset
+from solvers import solve
+from solvers.paths import cycle_values
+
 from .test_pages import chart, decode, page, traces
 
 
@@ -125,3 +129,20 @@ def test_the_construction_numbers_the_crank_pin_and_draws_the_compass_circles():
     first, second = np.split(x + 1j * y, np.flatnonzero(np.isnan(x))[:2])[:2]
     radii = sorted([np.nanmean(np.abs(first - 0)), np.nanmean(np.abs(second[1:] - 0.2))])
     assert radii == pytest.approx([0.06, 0.16], abs=1e-3)  # crank AB about A, rocker DC about D
+
+
+def test_the_construction_shows_the_mechanism_in_pencil_in_each_position_it_reaches():
+    """One grey line trace holds every member of every copy (a member with three points is a
+    closed outline of four), a gap after each; the frame's pivots are drawn once, bold."""
+    at = page("pages/trajectories.py", lang="en", scene="analitika-2.1")
+    figure = chart(at, "paths")
+    faint = [tr for tr in figure["data"] if tr.get("opacity") == 0.18]
+    pencil = faint[0]
+    assert pencil["mode"] == "lines" and "marker" not in pencil
+    scene = load_preset("analitika-2.1")
+    motion = solve(scene, cycle_values(scene, 12))
+    per_copy = sum(len(m.points) + (len(m.points) > 2) + 1 for m in scene.members.values())
+    assert len(pencil["x"]) == per_copy * int(motion.feasible.sum())
+    assert motion.feasible.sum() < 12  # this four-bar cannot pass a range: fewer copies
+    (frame,) = traces(figure, "1 frame")
+    assert frame["opacity"] == 1.0
