@@ -67,8 +67,11 @@ function drawNext() {
   }
   const [gd, draw] = [...waiting].find(([div]) => onScreen(div)) || waiting.entries().next().value;
   waiting.delete(gd);
-  draw();
-  requestAnimationFrame(() => setTimeout(drawNext));  // after the next paint
+  try {
+    draw();
+  } finally {  // a chart that fails to draw must not stop the others
+    requestAnimationFrame(() => setTimeout(drawNext));  // after the next paint
+  }
 }
 
 function schedule(gd, draw) {
