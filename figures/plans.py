@@ -123,10 +123,13 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
     fig = RawFigure()
     visible = [d for d in drawing.arrows if _visible(d)]
     faded = any(d.current for d in visible)
+    arrows = []
     for current in (False, True):  # the highlighted step drawn last, on top
         group = [(d.tail, d.head, KIND_COLOURS[d.arrow.kind]) for d in visible if d.current == current]
-        fig.add_raw(arrow_traces(group, (3.0 if current else 1.8) * look.line,
-                                 opacity=0.45 if faded and not current else 1.0))
+        arrows += arrow_traces(group, (3.0 if current else 1.8) * look.line,
+                               opacity=0.45 if faded and not current else 1.0)
+    _name_kinds(arrows, t)
+    fig.add_raw(arrows)
     hover_x, hover_y, hover_text = [], [], []
     for d in visible:
         mid = (d.head + d.tail) / 2
@@ -139,10 +142,6 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
     traces = [scatter(x=hover_x, y=hover_y, mode="markers", hoverinfo="text",
                       hovertext=hover_text, showlegend=False,
                       marker=dict(size=10 * look.line, color="rgba(0,0,0,0)"))]
-    for kind, colour in KIND_COLOURS.items():  # legend entries for the arrow colours
-        if any(d.arrow.kind == kind and _visible(d) for d in drawing.arrows):
-            traces.append(scatter(x=[None], y=[None], mode="lines", name=t(KIND_KEYS[kind]),
-                                  line=dict(color=colour, width=3 * look.line)))
     pole = "P<sub>v</sub>" if drawing.unit == "m/s" else "P<sub>a</sub>"
     places = _merged(drawing.labels)
     traces.append(scatter(
@@ -168,6 +167,20 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         xaxis=dict(range=[x0, x1], title=dict(text="[cm]"), **grid),
         yaxis=dict(range=[y0, y1], title=dict(text="[cm]"), scaleanchor="x", scaleratio=1, **grid)))
     return fig
+
+
+def _name_kinds(arrows: list[dict], t: Text) -> None:
+    """The legend names the arrows' kinds from the arrow traces themselves, one entry per
+    colour in the order of KIND_COLOURS, drawn like the current step's arrows where it has
+    that kind (they come last); a kind's faded and current arrows hide together. (An empty
+    trace per entry cost the browser a trace each, on every redraw.)"""
+    kinds = {colour: kind for kind, colour in KIND_COLOURS.items()}
+    named = set()
+    for trace in reversed(arrows):
+        kind = kinds[trace["line"]["color"]]
+        trace.update(name=t(KIND_KEYS[kind]), legendgroup=kind, showlegend=kind not in named,
+                     legendrank=list(KIND_COLOURS).index(kind))
+        named.add(kind)
 
 
 def plan_svg(drawing: PlanDrawing, caption: str) -> str:

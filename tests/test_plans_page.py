@@ -100,3 +100,16 @@ length = 0.2
     assert not at.exception
     assert not [s for s in at.slider if s.key == "step"]
     assert at.latex[0].value.strip("$\n") == r"\vec v_{A} = \vec v_{AO}"
+
+
+def test_the_legend_names_each_kind_of_arrow_once_from_the_arrows_themselves():
+    """No empty traces for the legend (each costs the browser a trace on every redraw): the
+    arrow traces carry it, one entry per kind drawn, and a kind's arrows hide together."""
+    at = plan_page(scene="zbirka-2.1", step=3)
+    figure = chart(at, "fig_a")
+    assert all(any(v is not None for v in tr["x"]) for tr in figure["data"])
+    named = [tr for tr in figure["data"] if tr.get("showlegend") and tr.get("name")]
+    assert sorted(tr["name"] for tr in named) == ["absolute", "normal", "tangential"]
+    for entry in named:
+        group = [tr for tr in figure["data"] if tr.get("legendgroup") == entry["legendgroup"]]
+        assert {tr["line"]["color"] for tr in group} == {entry["line"]["color"]}
