@@ -35,6 +35,20 @@ def arrow_traces(arrows: Iterable[tuple[complex, complex, str]], width: float,
             for colour, (xs, ys, sizes) in by_colour.items()]
 
 
+def name_by_colour(traces: list[dict], names: dict[str, str]) -> None:
+    """Legend entries from the arrow traces themselves, one per colour drawn, named and
+    ordered as in ``names`` (colour → name): the entry takes the look of the last trace of
+    its colour (drawn on top), and all of a colour's arrows hide together. An empty trace
+    per entry cost the browser a whole trace on every redraw."""
+    order = list(names)
+    named = set()
+    for trace in reversed(traces):
+        colour = trace["line"]["color"]
+        trace.update(name=names[colour], legendgroup=colour, showlegend=colour not in named,
+                     legendrank=order.index(colour))
+        named.add(colour)
+
+
 def label_trace(places: list[complex], labels: list[str], colours: list[str],
                 size: float) -> dict:
     """Labels beside points (an arrow's middle), each in its arrow's colour."""

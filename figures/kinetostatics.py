@@ -57,11 +57,8 @@ def forces_figure(k: Kinetostatics, index: int, forces: list[tuple[str, complex,
     if biggest > 0:
         arrows(fig, [p for _, p, _ in forces], [p + f / biggest * reach for _, p, f in forces],
                [LOAD_COLOURS[_kind(n)] for n, *_ in forces],
-               [f"{html(n)} = {abs(f):.4g} N" for n, _, f in forces], look)
-    for kind, colour in LOAD_COLOURS.items():
-        if any(_kind(n) == kind for n, *_ in forces):
-            fig.add_raw([scatter(x=[None], y=[None], mode="lines", name=t(LEGEND_KEYS[kind]),
-                                 line=dict(color=colour, width=3))])
+               [f"{html(n)} = {abs(f):.4g} N" for n, _, f in forces], look,
+               {colour: t(LEGEND_KEYS[kind]) for kind, colour in LOAD_COLOURS.items()})
     return plane_layout(fig, title, look)
 
 

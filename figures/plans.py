@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from solvers.kinematics import Motion
 from solvers.plans import POLE, Arrow, Plan, Plans
 
-from .arrows import arrow_traces
+from .arrows import arrow_traces, name_by_colour
 from .linkage import Text, mechanism_traces, pose, scatter
 from .paper import PaperArrow, PaperLabel, bounds, true_scale_svg
 from .raw import RawFigure
@@ -128,7 +128,7 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         group = [(d.tail, d.head, KIND_COLOURS[d.arrow.kind]) for d in visible if d.current == current]
         arrows += arrow_traces(group, (3.0 if current else 1.8) * look.line,
                                opacity=0.45 if faded and not current else 1.0)
-    _name_kinds(arrows, t)
+    name_by_colour(arrows, {colour: t(KIND_KEYS[kind]) for kind, colour in KIND_COLOURS.items()})
     fig.add_raw(arrows)
     hover_x, hover_y, hover_text = [], [], []
     for d in visible:
@@ -167,20 +167,6 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         xaxis=dict(range=[x0, x1], title=dict(text="[cm]"), **grid),
         yaxis=dict(range=[y0, y1], title=dict(text="[cm]"), scaleanchor="x", scaleratio=1, **grid)))
     return fig
-
-
-def _name_kinds(arrows: list[dict], t: Text) -> None:
-    """The legend names the arrows' kinds from the arrow traces themselves, one entry per
-    colour in the order of KIND_COLOURS, drawn like the current step's arrows where it has
-    that kind (they come last); a kind's faded and current arrows hide together. (An empty
-    trace per entry cost the browser a trace each, on every redraw.)"""
-    kinds = {colour: kind for kind, colour in KIND_COLOURS.items()}
-    named = set()
-    for trace in reversed(arrows):
-        kind = kinds[trace["line"]["color"]]
-        trace.update(name=t(KIND_KEYS[kind]), legendgroup=kind, showlegend=kind not in named,
-                     legendrank=list(KIND_COLOURS).index(kind))
-        named.add(kind)
 
 
 def plan_svg(drawing: PlanDrawing, caption: str) -> str:

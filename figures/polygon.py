@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .arrows import arrow_traces, label_trace
+from .arrows import arrow_traces, label_trace, name_by_colour
 from .linkage import scatter
 from .paper import PaperArrow, PaperLabel, subscripts, true_scale_svg
 from .raw import RawFigure
@@ -16,9 +16,13 @@ CLOSING = "#d62728"
 
 
 def arrows(fig: RawFigure, starts: list[complex], ends: list[complex], colours: list[str],
-           labels: list[str], look: Look) -> None:
-    """Arrows (see figures.arrows), each labelled at its middle in its own colour."""
-    fig.add_raw(arrow_traces(zip(starts, ends, colours), 2 * look.line))
+           labels: list[str], look: Look, names: dict[str, str] | None = None) -> None:
+    """Arrows (see figures.arrows), each labelled at its middle in its own colour; with
+    ``names`` (colour → name) the legend names the colours."""
+    traces = arrow_traces(zip(starts, ends, colours), 2 * look.line)
+    if names:
+        name_by_colour(traces, names)
+    fig.add_raw(traces)
     fig.add_raw([label_trace([(complex(a) + complex(b)) / 2 for a, b in zip(starts, ends)],
                              labels, colours, look.font + 1)])
 
@@ -37,11 +41,8 @@ def polygon_figure(known: list[tuple[str, complex]], closing: list[tuple[str, co
                          textposition="bottom left", hoverinfo="skip",
                          marker=dict(size=5 * look.line, color="black"))])
     colours = [KNOWN] * len(known) + [CLOSING] * len(closing)
-    arrows(fig, list(points[:-1]), list(points[1:]), colours, [name for name, _ in vectors], look)
-    fig.add_raw([scatter(x=[None], y=[None], mode="lines", name=legend[0],
-                         line=dict(color=KNOWN, width=3)),
-                 scatter(x=[None], y=[None], mode="lines", name=legend[1],
-                         line=dict(color=CLOSING, width=3))])
+    arrows(fig, list(points[:-1]), list(points[1:]), colours, [name for name, _ in vectors], look,
+           {KNOWN: legend[0], CLOSING: legend[1]})
     plane_layout(fig, title, look, x_title=f"{axes[0]} [cm]", y_title=f"{axes[1]} [cm]")
     pad = 0.1 * max(np.ptp(points.real), np.ptp(points.imag), 1.0)
     fig.merge_layout(dict(
