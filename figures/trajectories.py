@@ -35,20 +35,22 @@ def construction_figure(steps: Motion, smooth: Motion | None, points: list[str],
     fig.add_raw(pencil_copies(steps, t, look))
     for i, name in enumerate(points):
         colour = path_colour(i)
-        if smooth is None:
-            z = _closed(steps.points[name].z)
-            label = t("fig.path_steps", point=name)
-        else:
-            z = _closed(smooth.points[name].z)
-            label = t("fig.path_of", point=name)
-        fig.add_raw([scatter(x=z.real, y=z.imag, mode="lines", name=label, hoverinfo="skip",
-                                 line=dict(color=colour, width=2 * look.line))])
         z = steps.points[name].z
-        fig.add_raw([scatter(
-            x=z.real, y=z.imag, mode="markers+text", name=t("fig.positions_of", point=name),
-            text=[numbered(name, k + 1) for k in range(len(z))], textposition="top center",
-            textfont=dict(size=look.font, color=colour),
-            marker=dict(size=7 * look.line, color=colour), hoverinfo="text")])
+        marks = dict(text=[numbered(name, k + 1) for k in range(len(z))], textposition="top center",
+                     textfont=dict(size=look.font, color=colour), hoverinfo="text",
+                     marker=dict(size=7 * look.line, color=colour))
+        line = dict(color=colour, width=2 * look.line)
+        if smooth is None:  # the path through the 12 positions: one trace draws both
+            closed = _closed(z)
+            fig.add_raw([scatter(x=closed.real, y=closed.imag, mode="lines+markers+text",
+                                 name=t("fig.positions_path", point=name), line=line,
+                                 **{**marks, "text": marks["text"] + [""]})])
+        else:
+            path = _closed(smooth.points[name].z)
+            fig.add_raw([scatter(x=path.real, y=path.imag, mode="lines", hoverinfo="skip",
+                                 name=t("fig.path_of", point=name), line=line),
+                         scatter(x=z.real, y=z.imag, mode="markers+text",
+                                 name=t("fig.positions_of", point=name), **marks)])
     if steps.feasible[0]:
         positions, rotations = pose(steps, 0)
         fig.add_raw(mechanism_traces(scene, positions, rotations, t, look))

@@ -15,7 +15,8 @@ from .test_pages import chart, decode, page, traces
 
 def positions(at, point: str) -> np.ndarray:
     (trace,) = traces(chart(at, "paths"), f"positions of {point}")
-    return np.asarray(decode(trace["x"]), float) + 1j * np.asarray(decode(trace["y"]), float)
+    z = np.asarray(decode(trace["x"]), float) + 1j * np.asarray(decode(trace["y"]), float)
+    return z[[bool(label) for label in trace["text"]]]  # the path's closing point has none
 
 
 def fourbar(**state):
