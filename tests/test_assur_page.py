@@ -55,7 +55,7 @@ def test_the_plans_page_sends_a_class_iii_scene_here():
 
 
 def test_check_my_answer_grades_the_degrees_of_freedom_and_s():
-    at = page(PAGE, lang="en", scene="triad-full-turn")
+    at = page(PAGE, lang="en", scene="triad-full-turn", self_open=True)
     at.text_input(key="self_value").input("1").run()  # W
     assert any("Correct" in s.value for s in at.success)
     labels = at.selectbox(key="self_quantity").options

@@ -90,7 +90,7 @@ def test_the_page_speaks_serbian(lang):
 
 
 def test_check_my_answer_grades_the_driving_torque():
-    at = page(PAGE, lang="en")
+    at = page(PAGE, lang="en", self_open=True)
     at.text_input(key="self_value").input("4,535").run()  # M_p of the lecture example
     assert any("Correct" in s.value for s in at.success)
     at.text_input(key="self_value").input("4,9").run()
@@ -114,7 +114,7 @@ def test_turning_the_load_changes_the_torque_as_the_power_says():
 
 
 def test_the_scene_note_reads_in_serbian_cyrillic_with_latin_notation():
-    at = page(PAGE, lang="sr-cyrl")
+    at = page(PAGE, lang="sr-cyrl", about=True)  # the scene's note is under "about"
     note = next(m.value for m in at.markdown if "F₅ = 100 N" in m.value)
     assert "Криваја" in note  # prose transliterated …
     assert "OA" in note and "⟨" not in note  # … notation kept as the course writes it

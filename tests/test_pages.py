@@ -126,3 +126,13 @@ def test_every_chart_is_drawn_in_place_in_the_house_style(chapter):
         assert "Source Sans" in layout["font"]["family"] and layout["title"]["x"] == 0.0
         assert body["src"].endswith(".js") and body["filename"]
         assert set(body["labels"]) == {"svg", "png", "fullscreen"}
+
+
+@pytest.mark.parametrize("chapter", CHAPTERS, ids=lambda c: c.file)
+def test_closed_panels_cost_a_rerun_nothing(chapter):
+    """The scene's note and upload, and the answer check, are filled only while open: closed,
+    a rerun sends none of their elements to the browser."""
+    closed = page(chapter.file, lang="en")
+    assert not closed.get("file_uploader") and not [w for w in closed.text_input if w.key == "self_value"]
+    opened = page(chapter.file, lang="en", about=True, self_open=True)
+    assert opened.get("file_uploader") and [w for w in opened.text_input if w.key == "self_value"]

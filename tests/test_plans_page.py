@@ -71,7 +71,7 @@ def test_the_other_tabs_render(tab):
 
 
 def test_self_check_accepts_a_value_within_drawing_precision():
-    at = plan_page(scene="analitika-2.1", Uv=0.5, prec=0.5)
+    at = plan_page(scene="analitika-2.1", Uv=0.5, prec=0.5, self_open=True)
     box = at.selectbox(key="self_quantity")
     index = next(i for i, o in enumerate(box.options) if o.startswith("v_C "))
     box.set_value(index).run()

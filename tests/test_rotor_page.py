@@ -61,7 +61,7 @@ def test_every_task_draws_every_view_and_only_the_open_one(tab, key):
 
 
 def test_a_student_checks_a_graphical_answer():
-    at = rotor_page(scene="zbirka-7.1")
+    at = rotor_page(scene="zbirka-7.1", self_open=True)
     at.text_input(key="self_value").input("0,354").run()  # the first quantity: m_I [kg]
     assert "Correct" in at.success[0].value
     at.text_input(key="self_value").input("0,358").run()  # 1.1 % off: within ±0.005 kg of a drawing

@@ -59,13 +59,15 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
     choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", default=default,
                         format_func=label)
     scene = uploaded if choice == UPLOADED else preset(choice)
-    with st.expander(t("scene.about")):
-        st.caption(source_of(scene))
-        st.write(note_of(scene))
-        st.file_uploader(t("scene.upload"), type=["toml"], key="upload_file", on_change=_read_upload,
-                         args=(kind,))
-        if st.session_state.get("upload_error"):
-            st.error(st.session_state["upload_error"])
+    about = st.expander(t("scene.about"), key="about", on_change="rerun")
+    if about.open:  # filled only while open: closed, it costs a rerun nothing
+        with about:
+            st.caption(source_of(scene))
+            st.write(note_of(scene))
+            st.file_uploader(t("scene.upload"), type=["toml"], key="upload_file",
+                             on_change=_read_upload, args=(kind,))
+            if st.session_state.get("upload_error"):
+                st.error(st.session_state["upload_error"])
     return scene
 
 

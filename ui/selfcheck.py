@@ -30,8 +30,13 @@ def grade(typed: float, quantity: Quantity, tolerance: float = 0.005) -> tuple[s
 
 
 def answer_box(quantities: list[Quantity], key: str) -> None:
-    """Pick a quantity, type a value (0,25 or 0.25), see the verdict."""
-    with st.expander(t("self.title"), icon=":material/school:"):
+    """Pick a quantity, type a value (0,25 or 0.25), see the verdict. Filled only while open:
+    closed, it costs a rerun nothing."""
+    box = st.expander(t("self.title"), icon=":material/school:", key=f"{key}_open",
+                      on_change="rerun")
+    if not box.open:
+        return
+    with box:
         labels = [q.label for q in quantities]
         choice = st.selectbox(t("self.quantity"), range(len(labels)), format_func=labels.__getitem__,
                               key=f"{key}_quantity")
