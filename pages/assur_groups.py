@@ -29,7 +29,7 @@ page_title("pages/assur_groups.py")
 CYCLE = 360
 
 
-@st.cache_resource(max_entries=32, hash_funcs=BY_REPR)
+@st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR)
 def cycle(scene: Scene, tol: float) -> Motion:
     """A survey of the driver (``CYCLE`` positions)."""
     return solve(scene, sweep_values(scene, CYCLE), tol=tol)

@@ -40,7 +40,7 @@ def over_cycle(scene: Scene, steps: int, inertia: bool) -> Kinetostatics:
     return analyse(scene, sweep_values(scene, steps), inertia=inertia)
 
 
-@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
+@st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
 def at_instant(scene: Scene, inertia: bool) -> Kinetostatics:
     """The scene's own instant alone (the same numbers as that position of a survey)."""
     return analyse(scene, np.array([scene.driver.at]), inertia=inertia)

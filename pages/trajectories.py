@@ -30,12 +30,12 @@ MAX_FRAMES = 120
 page_title("pages/trajectories.py")
 
 
-@st.cache_data(max_entries=16, hash_funcs=BY_REPR)
+@st.cache_data(max_entries=16, show_spinner=False, hash_funcs=BY_REPR)
 def _solve_times(base: Scene) -> dict[int, float]:
     return solve_times(base, RESOLUTIONS)
 
 
-@st.cache_data(max_entries=64, hash_funcs=BY_REPR)
+@st.cache_data(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
 def _path_errors(scene: Scene, points: tuple[str, ...]) -> dict[int, float]:
     return path_errors(scene, list(points), RESOLUTIONS)
 
@@ -48,7 +48,7 @@ def accuracy(base: Scene, scene: Scene, points: tuple[str, ...]) -> list[dict]:
     return [{"positions": n, "solve_ms": times[n], "deviation_m": errors[n]} for n in RESOLUTIONS]
 
 
-@st.cache_resource(max_entries=16, hash_funcs=BY_REPR)
+@st.cache_resource(max_entries=16, show_spinner=False, hash_funcs=BY_REPR)
 def animation(scene: Scene, steps: int, points: tuple[str, ...], language: str, look_: Look):
     """The animation figure (the costliest to build); shared, never mutated."""
     fine = cycle(scene, steps, order=1)

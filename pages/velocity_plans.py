@@ -30,7 +30,7 @@ SVG_CAPTIONS = {"v": "plans.svg_caption_v", "a": "plans.svg_caption_a"}
 page_title("pages/velocity_plans.py")
 
 
-@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
+@st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
 def solved_plans(scene: Scene) -> Plans:
     """Both plans at the scene's instant."""
     return build(instant(scene))

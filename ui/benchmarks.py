@@ -50,7 +50,7 @@ def parse(text: str, name: str) -> Measured | None:
     return Measured(caption, pd.DataFrame(body, columns=header))
 
 
-@st.cache_resource(max_entries=8)  # shared and never mutated: no copy per rerun
+@st.cache_resource(max_entries=8, show_spinner=False)  # shared and never mutated: no copy per rerun
 def _read(name: str, stamp: float) -> Measured | None:
     """``stamp`` (the file's mtime) is only part of the cache key: a new file, a new read."""
     return parse(DOC.read_text(encoding="utf-8"), name)

@@ -18,7 +18,7 @@ from ui.cache import BY_REPR
 T = TypeVar("T")
 
 
-@st.cache_resource(max_entries=64, hash_funcs=BY_REPR)
+@st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
 def _memo(scene, what: str, variant: object) -> dict:
     return {}
 

@@ -35,7 +35,7 @@ def _read_upload(kind: str) -> None:
         st.session_state["upload_error"] = str(exc)
 
 
-@st.cache_resource(max_entries=16)
+@st.cache_resource(max_entries=16, show_spinner=False)
 def preset_titles(kind: str, language: str) -> dict[str, str]:
     """"id — title" of every preset of a kind, for the select box (made once per language)."""
     return {pid: f"{pid} — {title_of(preset(pid), language)}" for pid in preset_ids(kind)}
