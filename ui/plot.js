@@ -75,7 +75,7 @@ function drawNext() {
 }
 
 function schedule(gd, draw) {
-  waiting.set(gd, draw);  // a newer figure replaces one still waiting
+  waiting.set(gd, draw);  // a newer figure replaces one still waiting (or plotly.js loading)
   if (!drawing) {
     drawing = true;
     queueMicrotask(drawNext);  // after the other charts of this commit are queued too
@@ -100,7 +100,8 @@ export default function (component) {
     // one toolbar button per file format instead of Plotly's camera (one format, set in
     // advance); no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a
     // page's own link shares it, and the app needs no network
-    const config = { responsive: true, displaylogo: false, showSendToCloud: false, modeBarButtonsToRemove: ["toImage"],
+    const config = { responsive: true, displaylogo: false, showSendToCloud: false,
+                     modeBarButtonsToRemove: ["toImage"],
                      modeBarButtonsToAdd: toolbar(Plotly, spec.labels) };
     Plotly.react(gd, { ...spec.figure, config })
       .catch((error) => { gd.textContent = String(error); });
