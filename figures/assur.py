@@ -64,12 +64,15 @@ def special_traces(motion: Motion, name: str, group: Group, pair: tuple[int, int
                    t: Text, look: Look, survey: Motion) -> list[dict]:
     """The path of special point ``name`` over ``survey``, its construction lines (from each
     binary member's joint along the member's line to S) and S itself at ``index``."""
-    path = _near(survey.special[name].z, motion, index)
+    centre, reach = _extent(motion, index)
+    path = survey.special[name].z
+    with np.errstate(invalid="ignore"):
+        path = np.where(np.abs(path - centre) < reach, path, np.nan)
     traces = [scatter(x=path.real, y=path.imag, mode="lines", name=t("assur.s_path", name=name),
                       hoverinfo="name", line=dict(color=S_COLOUR, width=1.5 * look.line,
                                                   dash="dash"))]
     s = complex(motion.special[name].z[index])
-    if not np.isfinite(s) or abs(s - centre(motion, index)) >= reach(motion, index):
+    if not np.isfinite(s) or abs(s - centre) >= reach:
         return traces
     bodies = {m: _body(motion, m, index) for m in [FRAME, *motion.members]}
     xs, ys = [], []
@@ -88,22 +91,13 @@ def special_traces(motion: Motion, name: str, group: Group, pair: tuple[int, int
     return traces
 
 
-def centre(motion: Motion, index: int) -> complex:
-    """The middle of the mechanism's points at ``index``."""
-    return complex(np.mean([complex(p.z[index]) for p in motion.points.values()]))
-
-
-def reach(motion: Motion, index: int) -> float:
-    """Three mechanism sizes about its centre: how far S is drawn."""
+def _extent(motion: Motion, index: int) -> tuple[complex, float]:
+    """The middle of the mechanism's points at ``index``, and three mechanism sizes about it:
+    how far S and its path are drawn. Near parallel lines S runs off toward infinity, and
+    drawing that would shrink the mechanism to a dot."""
     points = np.array([complex(p.z[index]) for p in motion.points.values()])
-    return 3 * max(float(np.abs(points - centre(motion, index)).max()), 1e-9)
-
-
-def _near(path: np.ndarray, motion: Motion, index: int) -> np.ndarray:
-    """The path where S stays within three mechanism sizes: near parallel lines it runs off
-    toward infinity, and drawing that would shrink the mechanism to a dot."""
-    with np.errstate(invalid="ignore"):
-        return np.where(np.abs(path - centre(motion, index)) < reach(motion, index), path, np.nan)
+    centre = complex(points.mean())
+    return centre, 3 * max(float(np.abs(points - centre).max()), 1e-9)
 
 
 def _body(motion: Motion, member: int, index: int) -> Body:

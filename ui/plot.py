@@ -50,4 +50,5 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str]) -> Non
             f'"labels": {json.dumps(labels)}, "figure": {pio.to_json(fig, validate=False)}}}')
     _render(key=key, data=body.encode("utf-8"))
 
+
 publish_plotly_js()
