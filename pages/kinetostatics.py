@@ -42,8 +42,9 @@ def over_cycle(scene: Scene, steps: int, inertia: bool) -> Kinetostatics:
 
 @st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
 def at_instant(scene: Scene, inertia: bool) -> Kinetostatics:
-    """The scene's own instant alone (the same numbers as that position of a survey)."""
-    return analyse(scene, np.array([scene.driver.at]), inertia=inertia)
+    """The scene's own instant alone (the same numbers as that position of a survey), from
+    its cached kinematics: the page solves that instant first, to explain a failure."""
+    return analyse(scene, inertia=inertia, motion=instant(scene))
 
 
 def defaults(base: Scene) -> dict[str, object]:
