@@ -173,6 +173,12 @@ def parse_scene(data: bytes | str, source: str = "<scene>", default_id: str = "s
     return _build(_read_toml(data, source), _Reader(source), default_id)
 
 
+def build_scene(raw: dict, source: str = "builder", default_id: str = "my-mechanism") -> Scene:
+    """Validate a scene document made elsewhere (the builder's tables): the table a TOML file
+    parses to, checked by the same rules with the same messages."""
+    return _build(raw, _Reader(source), default_id)
+
+
 def _read_toml(data: bytes | str, source: str) -> dict:
     """Bytes → TOML table, refusing what is too big, not UTF-8 or not TOML."""
     if isinstance(data, str):

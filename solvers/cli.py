@@ -1,4 +1,5 @@
-"""Command line: ``python -m solvers list | solve | plan | structure | forces | bench`` (see docs/cli.md).
+"""Command line: ``python -m solvers list | solve | plan | structure | forces | link | bench``
+(see docs/cli.md).
 
 Exit codes: 0 done; 2 the scene or the command is wrong; 3 the mechanism cannot be in
 the asked position (the message says why and where it can be).
@@ -13,6 +14,7 @@ import sys
 from mechanisms import SceneError, Scene, load_any, load_preset, preset_ids
 
 from mechanisms.gears import GearTrain
+from mechanisms.link import PARAMETER, decode, encode
 from mechanisms.rotor import Rotor
 
 from .balancing import BalanceError, balance
@@ -43,33 +45,56 @@ def _parser() -> argparse.ArgumentParser:
     p = sub.add_parser("list", help="list the presets with their titles")
     p.set_defaults(run=_list)
     p = sub.add_parser("solve", help="positions, velocities and accelerations at one instant")
-    p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")
+    _scene_arguments(p)
     p.add_argument("--at", type=float, help="driver coordinate: φ₂ in degrees for a rotating "
                                              "driver, s in metres for a linear one")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.set_defaults(run=_solve)
     p = sub.add_parser("plan", help="the velocity and acceleration plans at one instant")
-    p.add_argument("scene")
+    _scene_arguments(p)
     p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.set_defaults(run=_plan)
     p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
-    p.add_argument("scene")
+    _scene_arguments(p)
     p.add_argument("--json", action="store_true")
     p.set_defaults(run=_structure)
     p = sub.add_parser("forces", help="joint reactions and the driving torque at one instant")
-    p.add_argument("scene")
+    _scene_arguments(p)
     p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver")
     p.add_argument("--no-inertia", action="store_true",
                    help="leave the inertia forces out (as tasks 5.1–5.2 do)")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.set_defaults(run=_forces)
+    p = sub.add_parser("link", help=f"the share parameter ({PARAMETER}=…) that carries a scene "
+                                    "in any page's link")
+    p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")
+    p.set_defaults(run=_link)
     p = sub.add_parser("bench", help="time the solver against a closed-form numpy baseline")
     p.add_argument("scene")
     p.add_argument("--steps", type=int, default=3600, help="positions per cycle")
     p.add_argument("--repeat", type=int, default=200, help="timed repetitions (median is shown)")
     p.set_defaults(run=_bench)
     return parser
+
+
+def _scene_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("scene", nargs="?", help="a preset id (see `list`) or a path to a .toml scene")
+    p.add_argument("--link", metavar="TEXT", help=f"a page's link (a whole URL, or just its "
+                                                  f"{PARAMETER}= value) in place of a scene")
+
+
+def _load(args):
+    """The scene named on the command line, or carried by ``--link``."""
+    if (args.scene is None) == (args.link is None):
+        raise SceneError("give a scene (a preset id or a .toml file) or --link TEXT, not both "
+                         "and not neither")
+    return decode(args.link) if args.link is not None else load_any(args.scene)
+
+
+def _link(args) -> int:
+    print(f"{PARAMETER}={encode(load_any(args.scene))}")
+    return 0
 
 
 def _list(args) -> int:
@@ -123,7 +148,7 @@ def _solve_gears(train: GearTrain, as_json: bool) -> int:
 
 
 def _solve(args) -> int:
-    scene = load_any(args.scene)
+    scene = _load(args)
     if isinstance(scene, Rotor):
         return _solve_rotor(scene, args.json)
     if isinstance(scene, GearTrain):
@@ -157,15 +182,16 @@ def _solve(args) -> int:
     return 0
 
 
-def _linkage(name: str) -> Scene:
-    scene = load_any(name)
+def _linkage(args) -> Scene:
+    scene = _load(args)
     if not isinstance(scene, Scene):
-        raise SceneError(f"{name} is a {type(scene).__name__.lower()}, not a linkage")
+        raise SceneError(f"{args.scene or 'the link'} is a {type(scene).__name__.lower()}, "
+                         "not a linkage")
     return scene
 
 
 def _plan(args) -> int:
-    data = plan_json(build(solve_instant(_linkage(args.scene), args.at)))
+    data = plan_json(build(solve_instant(_linkage(args), args.at)))
     if args.json:
         return _print_json(data)
     for quantity in ("velocity", "acceleration"):
@@ -179,7 +205,7 @@ def _plan(args) -> int:
 
 
 def _forces(args) -> int:
-    scene = _linkage(args.scene)
+    scene = _linkage(args)
     data = forces_json(analyse(scene, motion=solve_instant(scene, args.at),
                                inertia=not args.no_inertia))
     if args.json:
@@ -203,7 +229,7 @@ def _forces(args) -> int:
 
 
 def _structure(args) -> int:
-    st = decompose(_linkage(args.scene))
+    st = decompose(_linkage(args))
     data = {"dof": st.dof, "members": st.moving_members, "lower_pairs": st.lower_pairs,
             "higher_pairs": st.higher_pairs,
             "groups": [{"members": sorted(g.members), "class": g.cls, "kind": g.kind,

@@ -29,6 +29,8 @@ from .triads import TOL, assemble, prepare_march, solve_triad
 # ~0.2 s: they are kept for the last few geometries, so moving φ₂ re-solves in milliseconds.
 _PREPARED: OrderedDict[tuple, tuple] = OrderedDict()
 PREPARED_MAX = 32
+# A dyad's branch taken from the drawn positions, per geometry and group (see _drawn_branch)
+_BRANCHES: OrderedDict[tuple, int] = OrderedDict()
 NEAR_SINGULAR = 1e-3  # |sin| of the angle between a group's unknown directions
 SINGULAR = 1e-9
 
@@ -172,7 +174,8 @@ class _Solved:
         self.newton: dict[str, NewtonReport] = {}
         for i, group in enumerate(groups):
             if group.cls == 2:
-                solution = solve_dyad(build_loop(scene, group), self.bodies, order)
+                branch = _drawn_branch(scene, group, groups[:i], tol)
+                solution = solve_dyad(build_loop(scene, group, branch), self.bodies, order)
             else:
                 solution = self._triad(scene, group, groups[:i], at, order, tol)
             self._add(group, solution, at)
@@ -219,6 +222,33 @@ class _Solved:
             if weak.any():
                 self.issues.append(GroupIssue(group.name, group.kind, "near-singular",
                                               _ranges(at, weak), float(1.0 / np.nanmin(t))))
+
+
+def _drawn_branch(scene: Scene, group: Group, before, tol: float) -> int | None:
+    """The dyad's assembly closest to the points the scene draws (``[guess]``) at the instant
+    they were drawn: a file or a link never needs a ±1 sign. An explicit ``[assembly]`` sign
+    wins (old files); a group with no drawn point keeps the default (None)."""
+    members = tuple(sorted(group.members))
+    drawn = {name: local for m in members for name, local in scene.members[m].points.items()
+             if name in scene.guess}
+    if members in scene.assembly or not drawn or scene.guess_at is None:
+        return None
+    key = (repr((scene.frame, scene.members, scene.pairs, scene.guess, scene.guess_at,
+                 scene.driver.kind)), group.name)
+    if key in _BRANCHES:
+        return _BRANCHES[key]
+    known = _Solved(scene, before, np.array([scene.guess_at]), 0, tol).bodies
+    miss = {}
+    for sign in (1, -1):
+        bodies = solve_dyad(build_loop(scene, group, sign), known, 0).bodies
+        miss[sign] = sum(abs(complex(np.ravel(bodies[m].position(local))[0]) - scene.guess[name]) ** 2
+                         for m in members for name, local in scene.members[m].points.items()
+                         if name in drawn)
+    best = -1 if miss[-1] < miss[1] else 1  # NaN (cannot close as drawn) keeps +1
+    _BRANCHES[key] = best
+    while len(_BRANCHES) > PREPARED_MAX * 8:
+        _BRANCHES.pop(next(iter(_BRANCHES)), None)
+    return best
 
 
 def _march_span(scene: Scene, at: np.ndarray, a0: float) -> tuple[float, float]:

@@ -71,8 +71,9 @@ class DyadLoop:
         return [st for st in self.steps if isinstance(st, Leg)]
 
 
-def build_loop(scene: Scene, group: Group) -> DyadLoop:
-    """Lay the vector loop of a class II group (independent of the cycle)."""
+def build_loop(scene: Scene, group: Group, branch: int | None = None) -> DyadLoop:
+    """Lay the vector loop of a class II group (independent of the cycle) on ``branch``
+    (±1; default: the scene's ``[assembly]`` sign for the group, else 1)."""
     if group.cls != 2:
         raise StructureError(f"class {group.cls} group {group.label()} ({group.kind}) is "
                              "recognised but not yet supported by the kinematics core")
@@ -95,7 +96,8 @@ def build_loop(scene: Scene, group: Group) -> DyadLoop:
         ref, off = angle_of.get(st.member, (st.member, 0.0))
         steps.append(Leg(ref, st.local * cmath.exp(1j * off), st.slide))
     slides = tuple(p.name for p in group.pairs if p.kind == "prismatic")
-    branch = scene.assembly.get(tuple(sorted(group.members)), 1)
+    if branch is None:
+        branch = scene.assembly.get(tuple(sorted(group.members)), 1)
     return DyadLoop(group, start, tuple(steps), (body, at), angle_of, free, slides, branch,
                     group_size(scene, group))
 
