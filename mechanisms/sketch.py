@@ -42,8 +42,14 @@ KEEP = ("id", "title", "title_sr", "source", "source_sr", "note", "note_sr", "gr
         "scales", "special")  # what the tables do not show, carried over unchanged
 
 
+ORDER = ("four-bar", "slider-crank", "slotted-lever", "inverted-slider-crank", "watt-six-bar",
+         "stephenson-six-bar", "class-iii", "linear-drive")  # simplest first
+
+
 def template_ids() -> list[str]:
-    return sorted(p.stem for p in TEMPLATES.glob("*.toml"))
+    """The templates, simplest first (any file not named in ORDER after them)."""
+    found = {p.stem for p in TEMPLATES.glob("*.toml")}
+    return [n for n in ORDER if n in found] + sorted(found - set(ORDER))
 
 
 def template(name: str) -> dict:
@@ -255,3 +261,36 @@ def _driver_follows(doc: dict, new: Mapping[str, complex], turn: Mapping[int, co
                     and p.get("guide") == FRAME and p.get("slider") == DRIVER)
         line = cmath.exp(1j * math.radians(pair.get("angle", 0.0)))
         driver["at"] = ((new[pair["point"]] - new[pair["through"]]) / line).real
+
+
+def snap(z: complex, size: float) -> complex:
+    """A place put with the mouse, on a grid of round steps (1 mm on a drawing of 0.1–1 m), so
+    that what a student drags reads as the figure's dimensions do."""
+    step = 10.0 ** math.floor(math.log10(max(size, 1e-12) / 200))
+    return complex(round(z.real / step) * step, round(z.imag / step) * step)
+
+
+def free_letter(doc: dict) -> str:
+    """The first capital letter no point of the document uses (then A1, B1, …)."""
+    used = set(doc.get("frame", {})) | {p for s in doc.get("members", {}).values()
+                                        for p in _points_of(s)}
+    for suffix in ("", *map(str, range(1, 100))):
+        for letter in "ABCDEFGHIJKLMNOPQRSTUVWXYZ":
+            if letter + suffix not in used:
+                return letter + suffix
+    raise ValueError("no free point name")  # unreachable below 2,600 points
+
+
+def add_point(doc: dict, positions: Mapping[str, complex], rotations: Mapping[int, complex],
+              member: int, at: complex) -> dict:
+    """The document with a new point where the user clicked: a frame point (member 1), or a
+    point of a moving member (its offsets from where the member is drawn)."""
+    doc = copy.deepcopy(doc)
+    name = free_letter(doc)
+    if member == FRAME:
+        doc.setdefault("frame", {})[name] = [at.real, at.imag]
+    else:
+        spec = doc["members"][str(member)]
+        local = (at - positions[spec["points"][0]]) / rotations[member]
+        spec.setdefault("extra", {})[name] = [local.real, local.imag]
+    return doc

@@ -180,3 +180,14 @@ def _stuck_message(scene: Scene, known: set[int], remaining: set[int]) -> str:
     return (f"after {', '.join(map(str, sorted(known)))} the members "
             f"{', '.join(map(str, sorted(remaining)))} do not form a class II or III Assur "
             f"group ({'; '.join(details)}).{hint}")
+
+
+def loose_joints(scene: Scene) -> list[tuple[str, int]]:
+    """Joints left unconnected while building: (point, member) for each end of a member's
+    axis, and each frame point, that no pair uses (a guide's ``through`` point counts).
+    Extra points of a member (a coupler point) are meant to be free and are not listed."""
+    used = {(p.point, m) for p in scene.pairs for m in p.members}
+    used |= {(p.through, p.members[0]) for p in scene.pairs if p.kind == "prismatic"}
+    ends = [(name, FRAME) for name in scene.frame]
+    ends += [(name, n) for n, m in scene.members.items() for name in m.axis]
+    return [(name, member) for name, member in ends if (name, member) not in used]

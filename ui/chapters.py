@@ -27,6 +27,10 @@ CHAPTERS = (
 )
 
 
+# not a chapter: where a student's own mechanism is made, for every linkage chapter
+BUILDER = Chapter("pages/builder.py", "build.title", "build.summary", ":material/draw:")
+
+
 def chapter(file: str) -> Chapter:
     return next(c for c in CHAPTERS if c.file == file)
 

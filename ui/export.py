@@ -17,11 +17,12 @@ def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
                        icon=":material/download:")
 
 
-def chart(fig: RawFigure, filename: str, key: str) -> None:
+def chart(fig: RawFigure, filename: str, key: str, editable: bool = False):
     """A Plotly chart whose toolbar saves it as SVG (to print) or PNG, and shows it full screen.
-    Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE)."""
-    plot(fig, key, filename, {"svg": t("export.save_svg"), "png": t("export.save_png"),
-                              "fullscreen": t("export.fullscreen")})
+    Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE).
+    ``editable``: its shapes drag and its paper clicks (ui.plot.plot), read from the result."""
+    return plot(fig, key, filename, {"svg": t("export.save_svg"), "png": t("export.save_png"),
+                                     "fullscreen": t("export.fullscreen")}, editable)
 
 
 def print_button(svg: str, filename: str, key: str) -> None:

@@ -48,6 +48,10 @@ function toolbar(Plotly, labels) {
           button("fullscreen", labels.fullscreen, FULLSCREEN_ICON, toggleFullscreen)];
 }
 
+// Only the shapes (the builder's joints) move under the mouse; titles and legend stay put.
+// One object, so that Plotly.react sees the same config every time (see BUTTONS).
+const EDITABLE = { edits: { shapePosition: true } };
+
 // Charts waiting to be drawn, one per frame, those on screen first. Drawn one after
 // another without a paint between them, the plans page's three charts (which a rerun
 // brings in two or three React commits) kept its first figure off the screen until the
@@ -82,8 +86,33 @@ function schedule(gd, draw) {
   }
 }
 
+// The builder's drawing: its joints are Plotly shapes (circles) the user drags; the new
+// centre of a dragged circle goes back to Python as the trigger "drag" ({point, x, y} in
+// data units), and a click on empty paper as "click" ({x, y}). A press that moves more
+// than a few pixels (a drag, a pan) is not a click.
+function listen(gd, send) {
+  if (gd.__listening) return;
+  gd.__listening = true;
+  gd.on("plotly_relayout", (change) => {
+    const moved = Object.keys(change).map((k) => /^shapes\[(\d+)\]\.x0$/.exec(k)).find(Boolean);
+    if (!moved) return;
+    const shape = gd.layout.shapes[Number(moved[1])];
+    send.current("drag", { point: shape.name, x: (shape.x0 + shape.x1) / 2, y: (shape.y0 + shape.y1) / 2 });
+  });
+  let down = null;
+  gd.addEventListener("pointerdown", (e) => { down = [e.clientX, e.clientY]; }, true);
+  gd.addEventListener("click", (e) => {
+    const area = gd.querySelector(".nsewdrag");
+    if (!down || !area || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 4) return;
+    if (e.target !== area) return;  // on a joint, the legend or the toolbar: not paper
+    const box = area.getBoundingClientRect();
+    const { xaxis, yaxis } = gd._fullLayout;
+    send.current("click", { x: xaxis.p2c(e.clientX - box.left), y: yaxis.p2c(e.clientY - box.top) });
+  });
+}
+
 export default function (component) {
-  const { data, parentElement } = component;
+  const { data, parentElement, setTriggerValue } = component;
   let gd = parentElement.querySelector(".mehanizmi-plot");
   if (!gd) {
     gd = document.createElement("div");
@@ -96,14 +125,18 @@ export default function (component) {
   gd.__drawn = text;
   const spec = JSON.parse(text);
   gd.__filename = spec.filename;
+  gd.__send = gd.__send || { current: null };
+  gd.__send.current = setTriggerValue;  // the newest mount's, as Streamlit hands it over
   plotly(spec.src).then((Plotly) => schedule(gd, () => {
     // one toolbar button per file format instead of Plotly's camera (one format, set in
     // advance); no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a
     // page's own link shares it, and the app needs no network
     const config = { responsive: true, displaylogo: false, showSendToCloud: false,
                      modeBarButtonsToRemove: ["toImage"],
-                     modeBarButtonsToAdd: toolbar(Plotly, spec.labels) };
+                     modeBarButtonsToAdd: toolbar(Plotly, spec.labels),
+                     ...(spec.editable ? EDITABLE : {}) };
     Plotly.react(gd, { ...spec.figure, config })
+      .then(() => { if (spec.editable) listen(gd, gd.__send); })
       .catch((error) => { gd.textContent = String(error); });
   })).catch((error) => { gd.textContent = String(error); });
   // called when the chart leaves the page (not between reruns): free Plotly's listeners

@@ -42,13 +42,24 @@ def publish_plotly_js(static: Path = ROOT / "static") -> Path:
     return target
 
 
-def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str]) -> None:
+def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
+         editable: bool = False):
     """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns. Its
     toolbar saves it as ``filename``.svg or .png; ``labels`` name the buttons ("svg", "png",
-    "fullscreen")."""
+    "fullscreen").
+
+    ``editable``: the figure's shapes can be dragged and the paper clicked; the rerun that
+    follows reads the result's ``drag`` ({point, x, y}: a shape named after a point, moved
+    to x, y) or ``click`` ({x, y}), each set for that one rerun."""
     body = (f'{{"src": {json.dumps(URL)}, "filename": {json.dumps(filename)}, '
-            f'"labels": {json.dumps(labels)}, "figure": {pio.to_json(fig, validate=False)}}}')
-    _render(key=key, data=body.encode("utf-8"))
+            f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
+            f'"figure": {pio.to_json(fig, validate=False)}}}')
+    events = {"on_drag_change": _ignore, "on_click_change": _ignore} if editable else {}
+    return _render(key=key, data=body.encode("utf-8"), **events)
+
+
+def _ignore() -> None:
+    """The trigger's value is read from the result in the rerun it starts."""
 
 
 publish_plotly_js()

@@ -1,13 +1,16 @@
-"""Choosing a scene: a preset, or a TOML file the user uploads; and downloading the current one."""
+"""Choosing a scene: a preset, a scene carried by the link (``?s=``, e.g. from the builder),
+or a TOML file the user uploads; and downloading the current one."""
 
 from __future__ import annotations
 
+import hashlib
 import math
 
 import streamlit as st
 
 from mechanisms import Scene, SceneError, parse_document, preset_ids
 from mechanisms.gears import GearTrain
+from mechanisms.link import PARAMETER, decode
 from mechanisms.rotor import Rotor
 from mechanisms.writer import gears_to_toml, rotor_to_toml, to_toml
 from ui.cache import preset
@@ -18,6 +21,37 @@ UPLOADED = "upload"
 
 
 KINDS = {"linkage": Scene, "rotor": Rotor, "gears": GearTrain}
+
+
+@st.cache_resource(max_entries=64, show_spinner=False)
+def from_link(text: str):
+    """The scene a link's ``s=`` carries (SceneError, not cached, when it carries none)."""
+    return decode(text)
+
+
+def link_choice(text: str) -> str:
+    """The select box's option for a linked scene: one per scene, so that a page's inputs
+    start from each new scene's own values (ui.url.seed)."""
+    return "link-" + hashlib.sha1(text.encode("ascii", "replace")).hexdigest()[:8]
+
+
+def _linked(kind: str):
+    """(option, scene) for the link's scene, or None; a damaged link says why and is dropped,
+    and the page goes on with its default scene."""
+    text = st.query_params.get(PARAMETER) or st.session_state.get("linked_text")
+    if not text:
+        return None
+    try:
+        scene = from_link(text)
+        if not isinstance(scene, KINDS[kind]):
+            raise SceneError(t("scene.wrong_kind", file="link", kind=kind))
+    except SceneError as exc:
+        st.session_state.pop("linked_text", None)
+        st.query_params.pop(PARAMETER, None)
+        st.session_state["link_error"] = str(exc)
+        return None
+    st.session_state["linked_text"] = text
+    return link_choice(text), scene
 
 
 def _read_upload(kind: str) -> None:
@@ -45,6 +79,11 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
     """The scene select box (kept in the URL; ``default`` when the link names none), an
     upload, and a download of the scene."""
     options = preset_ids(kind)
+    linked = _linked(kind)
+    if linked is not None:
+        options.append(linked[0])
+        if PARAMETER in st.query_params and st.session_state.get("scene") != linked[0]:
+            st.session_state["scene"] = linked[0]  # a link just opened: show its scene
     uploaded = st.session_state.get("uploaded_scene")
     if not isinstance(uploaded, KINDS[kind]):
         uploaded = None
@@ -54,11 +93,22 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
     titles = preset_titles(kind, current())
 
     def label(pid: str) -> str:
-        return f"{pid} — {title_of(uploaded)}" if pid == UPLOADED else titles[pid]
+        if pid == UPLOADED:
+            return f"{pid} — {title_of(uploaded)}"
+        if linked is not None and pid == linked[0]:
+            return f"{t('scene.linked')} — {title_of(linked[1])}"
+        return titles[pid]
 
+    if st.session_state.get("link_error"):
+        st.error(t("scene.bad_link", reason=st.session_state["link_error"]))
     choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", default=default,
-                        format_func=label)
-    scene = uploaded if choice == UPLOADED else preset(choice)
+                        format_func=label, on_change=st.session_state.pop, args=("link_error", None))
+    if linked is not None and choice == linked[0]:
+        scene = linked[1]
+        st.query_params[PARAMETER] = st.session_state["linked_text"]
+    else:
+        st.query_params.pop(PARAMETER, None)
+        scene = uploaded if choice == UPLOADED else preset(choice)
     about = st.expander(t("scene.about"), key="about", on_change="rerun")
     if about.open:  # filled only while open: closed, it costs a rerun nothing
         with about:

@@ -1,0 +1,230 @@
+"""Build a mechanism: from a template, a preset or a file; by dragging on the drawing and typing
+in tables; checked live; then studied on every chapter page through its link."""
+
+from __future__ import annotations
+
+import pandas as pd
+import streamlit as st
+
+from figures.builder import builder_figure
+from mechanisms import SceneError, parse_document, preset_ids
+from mechanisms.link import PARAMETER, encode
+from mechanisms.loader import build_scene
+from mechanisms.schema import Scene
+from mechanisms.sketch import (COLUMNS, TABLES, document, driver_values, from_scene, tables,
+                               template, template_ids)
+from solvers.diagnostics import Unsolvable, dead_zones, format_range
+from solvers.structure import StructureError, decompose, degrees_of_freedom, loose_joints
+from ui import builder
+from ui.cache import preset
+from ui.chapters import CHAPTERS
+from ui.export import chart
+from ui.i18n import t, title_of
+from ui.present import look
+from ui.scenes import scene_download
+
+LINKAGE_PAGES = [c for c in CHAPTERS if c.file in (
+    "pages/trajectories.py", "pages/velocity_plans.py", "pages/assur_groups.py",
+    "pages/kinetostatics.py")]
+TEXT = {"point", "label", "first", "second", "through", "type"}
+LABELS = {"point": "build.col_point", "x": "build.col_x", "y": "build.col_y",
+          "member": "build.col_member", "label": "build.col_label", "first": "build.col_first",
+          "second": "build.col_second", "length": "build.col_length", "mass": "build.col_mass",
+          "centre_along": "build.col_centre_along", "centre_left": "build.col_centre_left",
+          "gyration": "build.col_gyration", "along": "build.col_along", "left": "build.col_left",
+          "type": "build.col_type", "p": "build.col_p", "q": "build.col_q",
+          "through": "build.col_through", "angle": "build.col_angle",
+          "slider_angle": "build.col_slider_angle", "magnitude": "build.col_magnitude",
+          "follows_member": "build.col_follows_member", "value": "build.col_value"}
+TABS = {"frame": ("build.tab_frame", "build.hint_frame"),
+        "members": ("build.tab_members", "build.hint_members"),
+        "extra": ("build.tab_extra", "build.hint_extra"),
+        "pairs": ("build.tab_pairs", "build.hint_pairs"),
+        "forces": ("build.tab_forces", "build.hint_forces"),
+        "moments": ("build.tab_moments", "build.hint_moments")}
+DRIVERS = {"rotating": ("build.driver_rotating", ("build.phi", "build.omega", "build.epsilon")),
+           "linear": ("build.driver_linear", ("build.s", "build.v", "build.a"))}
+CLICKS = {"nothing": "build.click_nothing", "frame": "build.click_frame"}
+UNITS = {"x": "m", "y": "m", "length": "m", "mass": "kg", "centre_along": "m",
+         "centre_left": "m", "gyration": "m", "along": "m", "left": "m", "angle": "°",
+         "slider_angle": "°", "magnitude": "N", "value": "N·m"}
+
+
+def column(table: str, name: str):
+    label = t(LABELS[name])
+    if name in UNITS:
+        label = f"{label} [{UNITS[name]}]"
+    if name == "type":
+        return st.column_config.SelectboxColumn(label, options=["revolute", "prismatic"])
+    if name == "follows_member":
+        return st.column_config.CheckboxColumn(label)
+    if name in TEXT:
+        return st.column_config.TextColumn(label)
+    if name in ("member", "p", "q"):
+        return st.column_config.NumberColumn(label, min_value=1, step=1, format="%d")
+    return st.column_config.NumberColumn(label, format="%.6g")
+
+
+def frame_of(table: str, rows: list[dict]) -> pd.DataFrame:
+    frame = pd.DataFrame(rows, columns=list(COLUMNS[table]))
+    for name in COLUMNS[table]:
+        if name == "follows_member":
+            frame[name] = frame[name].fillna(False).astype(bool)
+        elif name in TEXT:
+            frame[name] = frame[name].astype(object)
+        else:
+            frame[name] = pd.to_numeric(frame[name], errors="coerce").astype(float)
+    return frame
+
+
+def edited_tables(doc: dict) -> dict[str, list[dict]]:
+    """The six tables as the user has edited them."""
+    rows = tables(doc)
+    out = {}
+    tabs = st.tabs([t(TABS[n][0]) for n in TABLES] + [t("build.tab_driver")])
+    for tab, name in zip(tabs, TABLES):
+        with tab:
+            st.caption(t(TABS[name][1]))
+            edited = st.data_editor(
+                frame_of(name, rows[name]), key=f"build_{builder.version()}_{name}",
+                num_rows="dynamic", hide_index=True,
+                column_config={c: column(name, c) for c in COLUMNS[name]})
+            out[name] = edited.astype(object).where(edited.notna(), None).to_dict("records")
+    with tabs[-1]:
+        out["driver"] = driver_inputs(driver_values(doc))
+    return out
+
+
+def driver_inputs(values: dict) -> dict:
+    key = f"build_{builder.version()}_driver"
+    kinds = list(DRIVERS)
+    kind = st.radio(t("build.driver_type"), kinds, index=kinds.index(values["type"]),
+                    format_func=lambda k: t(DRIVERS[k][0]), horizontal=True, key=f"{key}_type")
+    names = DRIVERS[kind][1]
+    return {"type": kind, **{field: st.number_input(t(label), value=float(values[field]),
+                                                    format="%.6g", key=f"{key}_{field}")
+                             for field, label in zip(("at", "speed", "accel"), names)}}
+
+
+def start_controls() -> None:
+    options = [f"template:{n}" for n in template_ids()] + [f"preset:{p}" for p in preset_ids("linkage")]
+
+    def label(option: str) -> str:
+        kind, name = option.split(":", 1)
+        if kind == "template":
+            return t("build.template", name=title_of(builder.template_scene(name)))
+        return t("build.preset", name=f"{name} — {title_of(preset(name))}")
+
+    def begin() -> None:
+        kind, name = st.session_state["build_start"].split(":", 1)
+        if kind == "template":
+            builder.start(template(name))
+        else:
+            scene = preset(name)
+            builder.start(from_scene(scene, builder.drawing(scene).positions))
+        st.session_state.pop("build_message", None)
+
+    left, right = st.columns([3, 1], vertical_alignment="bottom")
+    left.selectbox(t("build.start_from"), options, format_func=label, key="build_start")
+    right.button(t("build.start"), on_click=begin, icon=":material/restart_alt:", width="stretch")
+    with st.expander(t("build.upload_title")):
+        st.file_uploader(t("scene.upload"), type=["toml"], key="build_upload", on_change=upload)
+
+
+def upload() -> None:
+    file = st.session_state.get("build_upload")
+    if file is None:
+        return
+    try:
+        scene = parse_document(file.getvalue(), source=file.name)
+        if not isinstance(scene, Scene):
+            raise SceneError(t("scene.wrong_kind", file=file.name, kind="linkage"))
+        builder.start(from_scene(scene, builder.drawing(scene).positions))
+        st.session_state.pop("build_message", None)
+    except (SceneError, StructureError, Unsolvable) as exc:
+        st.session_state["build_message"] = str(exc)
+
+
+def checks(doc: dict, scene: Scene | None, problem: str | None) -> None:
+    """What a student needs to hear while building, in words."""
+    n, p5 = len(doc.get("members", {})), len(doc.get("pairs", []))
+    w = 3 * n - 2 * p5 if scene is None else degrees_of_freedom(scene)
+    st.latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {w}")
+    if w > 1:
+        st.warning(t("build.too_free", extra=w - 1))
+    elif w < 1:
+        st.warning(t("build.too_stiff", extra=1 - w))
+    if problem:
+        st.error(problem)
+    if scene is None:
+        return
+    for point, member in loose_joints(scene):
+        st.warning(t("build.loose", point=point, member=member))
+    try:
+        structure = decompose(scene)
+    except StructureError:
+        return  # the message is the problem above
+    st.success(t("build.formula", formula=structure.formula))
+    for zone in dead_zones(scene, structure, steps=720):
+        where = "; ".join(format_range(scene, lo, hi) for lo, hi in zone.ranges)
+        st.info(t("build.dead_zone", group=zone.group, kind=zone.kind, where=where))
+
+
+def study(scene: Scene) -> None:
+    st.subheader(t("build.study"))
+    cols = st.columns(len(LINKAGE_PAGES))
+    for col, chapter in zip(cols, LINKAGE_PAGES):
+        col.button(t(chapter.title), icon=chapter.icon, key=f"open_{chapter.file}", width="stretch",
+                   on_click=builder.open_on, args=(chapter.file, scene))
+    text = encode(scene)
+    st.caption(t("build.link_caption", chars=len(text)))
+    st.code(f"{PARAMETER}={text}", language=None, wrap_lines=True)
+    scene_download(scene)
+
+
+st.title(f":material/draw: {t('build.title')}")
+st.caption(t("build.intro"))
+start_controls()
+if st.session_state.get("build_message"):
+    st.error(st.session_state["build_message"])
+
+base = builder.base()
+drawing_col, tables_col = st.columns([3, 2], gap="large")
+with tables_col:
+    edited = edited_tables(base)
+doc = document({k: edited[k] for k in TABLES}, edited["driver"], base)
+builder.remember(doc)
+
+scene, problem = None, None
+try:
+    scene = build_scene(doc, source=t("build.tables"))
+    st.session_state["build_last"] = doc, builder.drawing(scene)
+except (SceneError, StructureError, Unsolvable) as exc:
+    problem = str(exc)
+last_doc, last = st.session_state.get("build_last", (None, None))
+
+with drawing_col:
+    if last is not None:
+        mode = st.radio(t("build.click_adds"), ["nothing", "frame", *map(str, last.scene.members)],
+                        format_func=lambda m: t(CLICKS[m]) if m in CLICKS
+                        else t("build.click_member", member=m), horizontal=True, key="build_click")
+        result = chart(builder_figure(last.scene, last.positions, last.rotations, last.paths,
+                                      t("build.drawing"), t, look()),
+                       f"{last.scene.id}-drawing", "build_fig", editable=True)
+        if problem:
+            st.caption(t("build.last_valid"))
+        event = builder.moved(result.drag)
+        if event is not None:
+            builder.drop(last_doc, last, *event)
+            st.rerun()
+        if result.click and mode != "nothing":
+            builder.click(last_doc, last, 1 if mode == "frame" else int(mode),
+                          complex(result.click["x"], result.click["y"]))
+            st.rerun()
+    if st.session_state.get("build_drag_error"):
+        point, to, why = st.session_state.pop("build_drag_error")
+        st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=why))
+    checks(doc, scene, problem)
+
+if scene is not None and problem is None:
+    study(scene)

@@ -1,0 +1,135 @@
+"""The builder page's state: the scene document its tables start from, and what was drawn.
+
+``st.data_editor`` keeps a user's edits *relative to* the table it was first given, so the
+tables start from a stored document (``build_doc``) under keys that carry a version; a
+drag, a click or a new start replaces the document and bumps the version (fresh tables),
+while typing leaves both alone. The document the tables show now is saved every rerun
+(``build_now``), so that leaving the page and coming back loses nothing.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping
+
+import numpy as np
+import streamlit as st
+
+from mechanisms import Scene, SceneError
+from mechanisms.link import PARAMETER, encode
+from mechanisms.loader import build_scene
+from figures.builder import extent
+from mechanisms.sketch import add_point, drag, drawn, snap, template
+from solvers.diagnostics import Unsolvable, solve_instant, sweep_values
+from solvers.kinematics import solve
+from solvers.structure import StructureError
+from ui.cache import BY_REPR
+from ui.scenes import link_choice
+
+START = "four-bar"
+
+
+@dataclasses.dataclass(frozen=True)
+class Drawing:
+    """A scene that solves at its instant, as drawn: every point's place, every member's
+    e^{iθ}, and the moving points' paths over the cycle."""
+
+    scene: Scene
+    positions: dict[str, complex]
+    rotations: dict[int, complex]
+    paths: dict[str, np.ndarray]
+
+
+@st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR)
+def drawing(scene: Scene) -> Drawing:
+    """Solve the scene at its instant (Unsolvable or StructureError say why not)."""
+    motion = solve_instant(scene, None)
+    positions = {n: complex(p.z[0]) for n, p in motion.points.items()}
+    rotations = {m: complex(mm.rot[0]) for m, mm in motion.members.items()}
+    cycle = solve(scene, sweep_values(scene, 180), order=0)
+    paths = {n: p.z for n, p in cycle.points.items() if n not in scene.frame}
+    return Drawing(scene, positions, rotations, paths)
+
+
+def version() -> int:
+    return st.session_state.setdefault("build_version", 0)
+
+
+def base() -> dict:
+    """The document the tables start from (the four-bar template on a first visit)."""
+    if "build_doc" not in st.session_state:
+        start(template(START))
+    now = st.session_state.get("build_now")
+    if now is not None and now != st.session_state["build_doc"] and not any(
+            key.startswith(f"build_{version()}_") for key in st.session_state):
+        replace(now)  # back on the page: the tables left as they were
+    return st.session_state["build_doc"]
+
+
+def replace(doc: dict) -> None:
+    """New tables from ``doc`` (after a drag, a click, a start)."""
+    st.session_state["build_doc"] = doc
+    st.session_state["build_now"] = doc
+    st.session_state["build_version"] = version() + 1
+
+
+def start(doc: dict) -> None:
+    """Start from a document, its points drawn where it solves (so that every group keeps
+    the assembly it shows); one that does not solve starts as it is, to be mended."""
+    try:
+        solved = drawing(build_scene(doc, source=doc.get("id", "builder")))
+        doc = {**doc, "guess": drawn(doc, solved.positions)}
+    except (SceneError, StructureError, Unsolvable):
+        pass
+    doc.pop("assembly", None)
+    replace(doc)
+
+
+def remember(doc: dict) -> None:
+    st.session_state["build_now"] = doc
+
+
+def open_on(page: str, scene: Scene) -> None:
+    """Show the built scene on a chapter page, carried by the link (``?s=``)."""
+    text = encode(scene)
+    st.session_state["linked_text"] = text
+    st.session_state["scene"] = link_choice(text)
+    st.switch_page(page, query_params={PARAMETER: text, "scene": link_choice(text)})
+
+
+def moved(drag: Mapping | None) -> tuple[str, complex] | None:
+    """A drag event from the drawing as (point, place), or None."""
+    if not drag or "point" not in drag:
+        return None
+    return str(drag["point"]), complex(float(drag["x"]), float(drag["y"]))
+
+
+@st.cache_resource(max_entries=16, show_spinner=False)
+def template_scene(name: str) -> Scene:
+    return build_scene(template(name), source=f"{name}.toml")
+
+
+def _solves(doc: dict) -> str | None:
+    """Why the document does not solve at its instant, or None."""
+    try:
+        drawing(build_scene(doc))
+    except (SceneError, StructureError, Unsolvable) as exc:
+        return str(exc)
+    return None
+
+
+def drop(doc: dict, last: Drawing, point: str, to: complex) -> None:
+    """A point dragged to ``to``: new lengths and offsets, or, where the mechanism cannot be
+    drawn that way, the reason and the last valid drawing kept."""
+    to = snap(to, extent(last.positions))
+    new = drag(doc, last.positions, last.rotations, point, to)
+    problem = _solves(new)
+    if problem is None:
+        replace(new)
+    else:
+        st.session_state["build_drag_error"] = (point, to, problem)
+
+
+def click(doc: dict, last: Drawing, member: int, at: complex) -> None:
+    replace(add_point(doc, last.positions, last.rotations, member,
+                      snap(at, extent(last.positions))))
