@@ -215,6 +215,7 @@ def drag(doc: dict, positions: Mapping[str, complex], rotations: Mapping[int, co
     mechanism passes through ``to`` (a slider's point: its foot on the guide).
     """
     doc = copy.deepcopy(doc)
+    to = _onto_frame_guides(doc, positions, point, to)
     new = dict(positions)
     new[point] = to
     if point in doc.get("frame", {}):
@@ -249,6 +250,18 @@ def drag(doc: dict, positions: Mapping[str, complex], rotations: Mapping[int, co
     _driver_follows(doc, new, turn)
     doc["guess"] = drawn(doc, new)
     return doc
+
+
+def _onto_frame_guides(doc: dict, positions: Mapping[str, complex], point: str,
+                       to: complex) -> complex:
+    """A slider's point dragged off a fixed guide goes to its foot on the guide (a moving
+    guide turns to meet it instead)."""
+    for pair in doc.get("pairs", []):
+        if pair.get("type") == "prismatic" and pair.get("guide") == FRAME and pair.get("point") == point:
+            line = cmath.exp(1j * math.radians(pair.get("angle", 0.0)))
+            base = positions[pair["through"]]
+            to = base + ((to - base) / line).real * line
+    return to
 
 
 def _driver_follows(doc: dict, new: Mapping[str, complex], turn: Mapping[int, complex]) -> None:
