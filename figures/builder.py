@@ -23,9 +23,14 @@ def extent(positions: dict[str, complex]) -> float:
 
 
 def builder_figure(scene: Scene, positions: dict[str, complex], rotations: dict[int, complex],
-                   paths: dict[str, np.ndarray], title: str, t: Text, look: Look = NORMAL) -> RawFigure:
+                   paths: dict[str, np.ndarray], title: str, t: Text, look: Look = NORMAL,
+                   revision: str = "") -> RawFigure:
     """Members, frame, sliders and letters (``figures.linkage``), grey paths over the cycle
-    (NaN where the mechanism cannot go), and one draggable circle per point."""
+    (NaN where the mechanism cannot go), and one draggable circle per point.
+
+    The zoom is kept between redraws (``uirevision``), but a dragged circle must go where
+    the solved mechanism puts it: ``revision`` (new for every new drawing) tells Plotly not
+    to keep the user's own shape edits (``editrevision``)."""
     fig = RawFigure()
     xs: list = []
     ys: list = []
@@ -43,5 +48,6 @@ def builder_figure(scene: Scene, positions: dict[str, complex], rotations: dict[
                    fillcolor="rgba(31, 119, 180, 0.12)")
               for name, z in sorted(positions.items())]
     plane_layout(fig, title, look)
-    fig.merge_layout(dict(shapes=shapes, dragmode="pan", uirevision="builder"))
+    fig.merge_layout(dict(shapes=shapes, dragmode="pan", uirevision="builder",
+                          editrevision=revision))
     return fig

@@ -226,12 +226,10 @@ def drag(doc: dict, positions: Mapping[str, complex], rotations: Mapping[int, co
         turn[number] = rotations.get(number, 1 + 0j)
         if len(axis) == 2 and point in axis:
             a, b = (new[p] for p in axis)
-            now = b - a
-            if abs(now) == 0:
-                continue  # the loader refuses a zero length; keep the last good one
+            now = b - a  # zero when dragged onto its other end: the loader says why not
             factor = abs(now) / spec["length"]
             spec["length"] = abs(now)
-            turn[number] = cmath.exp(1j * _angle(now))
+            turn[number] = cmath.exp(1j * _angle(now)) if now else turn[number]
             for name in spec.get("extra", {}):  # stays where it is drawn (unless dragged)
                 local = (new[name] - a) / turn[number]
                 spec["extra"][name] = [local.real, local.imag]
@@ -276,11 +274,19 @@ def _driver_follows(doc: dict, new: Mapping[str, complex], turn: Mapping[int, co
         driver["at"] = ((new[pair["point"]] - new[pair["through"]]) / line).real
 
 
-def snap(z: complex, size: float) -> complex:
-    """A place put with the mouse, on a grid of round steps (1 mm on a drawing of 0.1–1 m), so
-    that what a student drags reads as the figure's dimensions do."""
-    step = 10.0 ** math.floor(math.log10(max(size, 1e-12) / 200))
-    return complex(round(z.real / step) * step, round(z.imag / step) * step)
+def snap(z: complex, pixel: float) -> complex:
+    """A place put with the mouse, on the roundest grid the eye can aim at: steps of 1, 2 or 5
+    times a power of ten, at least three screen pixels (``pixel``: metres per pixel). On a
+    half-metre drawing 500 pixels wide that is 5 mm; zoomed in, 1 mm."""
+    wanted = 3 * max(pixel, 1e-12)
+    power = 10.0 ** math.floor(math.log10(wanted))
+    step = next(k * power for k in (1, 2, 5, 10) if k * power >= wanted)
+    digits = max(0, 1 - math.floor(math.log10(step)))  # 60 × 0.005 is 0.30000000000000004
+
+    def on_grid(v: float) -> float:
+        return round(round(v / step) * step, digits) + 0.0  # no −0
+
+    return complex(on_grid(z.real), on_grid(z.imag))
 
 
 def free_letter(doc: dict) -> str:

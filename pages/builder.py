@@ -87,7 +87,7 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
             st.caption(t(TABS[name][1]))
             edited = st.data_editor(
                 frame_of(name, rows[name]), key=f"build_{builder.version()}_{name}",
-                num_rows="dynamic", hide_index=True,
+                num_rows="dynamic", hide_index=True, placeholder="—",
                 column_config={c: column(name, c) for c in COLUMNS[name]})
             out[name] = edited.astype(object).where(edited.notna(), None).to_dict("records")
     with tabs[-1]:
@@ -209,7 +209,7 @@ with drawing_col:
                         format_func=lambda m: t(CLICKS[m]) if m in CLICKS
                         else t("build.click_member", member=m), horizontal=True, key="build_click")
         result = chart(builder_figure(last.scene, last.positions, last.rotations, last.paths,
-                                      t("build.drawing"), t, look()),
+                                      t("build.drawing"), t, look(), builder.revision()),
                        f"{last.scene.id}-drawing", "build_fig", editable=True)
         if problem:
             st.caption(t("build.last_valid"))
@@ -219,7 +219,7 @@ with drawing_col:
             st.rerun()
         if result.click and mode != "nothing":
             builder.click(last_doc, last, 1 if mode == "frame" else int(mode),
-                          complex(result.click["x"], result.click["y"]))
+                          complex(result.click["x"], result.click["y"]), result.click["pixel"])
             st.rerun()
     if st.session_state.get("build_drag_error"):
         point, to, why = st.session_state.pop("build_drag_error")

@@ -220,9 +220,11 @@ def test_dragging_a_pivot_moves_the_frame_and_keeps_the_other_joints():
     assert new["members"]["4"]["length"] == pytest.approx(abs(positions["B"] - 0.3))
 
 
-def test_snap_puts_a_mouse_place_on_round_millimetres():
-    assert snap(0.30037 + 0.24961j, 0.5) == pytest.approx(0.300 + 0.250j, abs=1e-12)
-    assert snap(12.34 + 0j, 50.0) == pytest.approx(12.3 + 0j)
+def test_snap_puts_a_mouse_place_on_the_roundest_grid_of_at_least_three_pixels():
+    assert snap(0.30137 + 0.24861j, 0.0012) == pytest.approx(0.300 + 0.250j, abs=1e-15)  # 5 mm
+    assert snap(0.30137 + 0.24861j, 0.0002) == pytest.approx(0.301 + 0.249j, abs=1e-15)  # 1 mm
+    assert snap(0.30137 + 0.24861j, 0.0005) == pytest.approx(0.302 + 0.248j, abs=1e-15)  # 2 mm
+    assert snap(12.34 + 0j, 0.02) == pytest.approx(12.3 + 0j)
 
 
 def test_a_click_adds_a_frame_point_or_a_point_of_a_member():
@@ -244,3 +246,10 @@ def test_unconnected_joints_are_named():
     doc["members"]["4"]["points"] = ["D", "K"]
     doc["members"]["4"]["extra"] = {"B": [0.2, 0.05]}
     assert ("K", 4) in loose_joints(build_scene(doc))
+
+
+def test_a_joint_dragged_onto_the_other_end_of_its_member_is_refused_with_the_rule():
+    doc = template("four-bar")
+    positions, rotations = pose(build_scene(doc))
+    with pytest.raises(SceneError, match="members.2.length must be > 0"):
+        build_scene(drag(doc, positions, rotations, "A", 0j))

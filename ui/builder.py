@@ -18,7 +18,6 @@ import streamlit as st
 from mechanisms import Scene, SceneError
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
-from figures.builder import extent
 from mechanisms.sketch import add_point, drag, drawn, snap, template
 from solvers.diagnostics import Unsolvable, solve_instant, sweep_values
 from solvers.kinematics import solve
@@ -53,6 +52,11 @@ def drawing(scene: Scene) -> Drawing:
 
 def version() -> int:
     return st.session_state.setdefault("build_version", 0)
+
+
+def revision() -> str:
+    """Changes with every new drawing and every drag, refused ones too (figures.builder)."""
+    return f"{version()}-{st.session_state.get('build_drops', 0)}"
 
 
 def base() -> dict:
@@ -97,11 +101,11 @@ def open_on(page: str, scene: Scene) -> None:
     st.switch_page(page, query_params={PARAMETER: text, "scene": link_choice(text)})
 
 
-def moved(drag: Mapping | None) -> tuple[str, complex] | None:
-    """A drag event from the drawing as (point, place), or None."""
+def moved(drag: Mapping | None) -> tuple[str, complex, float] | None:
+    """A drag event from the drawing as (point, place, metres per pixel), or None."""
     if not drag or "point" not in drag:
         return None
-    return str(drag["point"]), complex(float(drag["x"]), float(drag["y"]))
+    return str(drag["point"]), complex(float(drag["x"]), float(drag["y"])), float(drag["pixel"])
 
 
 @st.cache_resource(max_entries=16, show_spinner=False)
@@ -118,10 +122,13 @@ def _solves(doc: dict) -> str | None:
     return None
 
 
-def drop(doc: dict, last: Drawing, point: str, to: complex) -> None:
-    """A point dragged to ``to``: new lengths and offsets, or, where the mechanism cannot be
-    drawn that way, the reason and the last valid drawing kept."""
-    to = snap(to, extent(last.positions))
+def drop(doc: dict, last: Drawing, point: str, to: complex, pixel: float) -> None:
+    """A point dragged to ``to`` (snapped to what ``pixel`` m per pixel lets the eye aim at):
+    new lengths and offsets, or, where the mechanism cannot be drawn that way, the reason
+    and the last valid drawing kept."""
+    to = snap(to, pixel)
+    # a new drawing revision even when the drag is refused: the circle goes back
+    st.session_state["build_drops"] = st.session_state.get("build_drops", 0) + 1
     new = drag(doc, last.positions, last.rotations, point, to)
     problem = _solves(new)
     if problem is None:
@@ -130,6 +137,5 @@ def drop(doc: dict, last: Drawing, point: str, to: complex) -> None:
         st.session_state["build_drag_error"] = (point, to, problem)
 
 
-def click(doc: dict, last: Drawing, member: int, at: complex) -> None:
-    replace(add_point(doc, last.positions, last.rotations, member,
-                      snap(at, extent(last.positions))))
+def click(doc: dict, last: Drawing, member: int, at: complex, pixel: float) -> None:
+    replace(add_point(doc, last.positions, last.rotations, member, snap(at, pixel)))

@@ -88,8 +88,13 @@ function schedule(gd, draw) {
 
 // The builder's drawing: its joints are Plotly shapes (circles) the user drags; the new
 // centre of a dragged circle goes back to Python as the trigger "drag" ({point, x, y} in
-// data units), and a click on empty paper as "click" ({x, y}). A press that moves more
-// than a few pixels (a drag, a pan) is not a click.
+// data units), and a click on empty paper as "click" ({x, y}), each with the size of a
+// screen pixel in data units (what the mouse can aim at). A press that moves more than a
+// few pixels (a drag, a pan) is not a click.
+function pixel(gd) {
+  return 1 / Math.abs(gd._fullLayout.xaxis._m);
+}
+
 function listen(gd, send) {
   if (gd.__listening) return;
   gd.__listening = true;
@@ -97,7 +102,8 @@ function listen(gd, send) {
     const moved = Object.keys(change).map((k) => /^shapes\[(\d+)\]\.x0$/.exec(k)).find(Boolean);
     if (!moved) return;
     const shape = gd.layout.shapes[Number(moved[1])];
-    send.current("drag", { point: shape.name, x: (shape.x0 + shape.x1) / 2, y: (shape.y0 + shape.y1) / 2 });
+    send.current("drag", { point: shape.name, x: (shape.x0 + shape.x1) / 2,
+                           y: (shape.y0 + shape.y1) / 2, pixel: pixel(gd) });
   });
   let down = null;
   gd.addEventListener("pointerdown", (e) => { down = [e.clientX, e.clientY]; }, true);
@@ -107,7 +113,8 @@ function listen(gd, send) {
     if (e.target !== area) return;  // on a joint, the legend or the toolbar: not paper
     const box = area.getBoundingClientRect();
     const { xaxis, yaxis } = gd._fullLayout;
-    send.current("click", { x: xaxis.p2c(e.clientX - box.left), y: yaxis.p2c(e.clientY - box.top) });
+    send.current("click", { x: xaxis.p2c(e.clientX - box.left), y: yaxis.p2c(e.clientY - box.top),
+                            pixel: pixel(gd) });
   });
 }
 

@@ -1,0 +1,154 @@
+"""The builder in a real browser, as a student with an exam problem uses it: drag, type, open
+on a chapter page, read the answer (Playwright + Debian chromium)."""
+
+import cmath
+import csv
+import io
+import math
+import time
+
+import numpy as np
+import pytest
+
+from .test_browser import app_url, browser, keep, open_page, wait_idle, wait_url  # noqa: F401 (fixtures)
+
+pytestmark = pytest.mark.browser
+
+SHAPES = ("() => Object.fromEntries(document.querySelector('.mehanizmi-plot').layout.shapes"
+          ".map(s => [s.name, [(s.x0 + s.x1) / 2, (s.y0 + s.y1) / 2]]))")
+
+
+def exam_four_bar(phi2=math.radians(60), omega2=10.0):
+    """The exam four-bar by hand: circle intersection for B (coupler above OD), then the
+    velocity loop r2·ω2·ie2 + r3·ω3·ie3 = r4·ω4·ie4 by numpy's solver."""
+    o, d, r2, r3, r4 = 0j, 0.3 + 0j, 0.10, 0.35, 0.25
+    a = o + r2 * cmath.exp(1j * phi2)
+    ad = d - a
+    x = (r3**2 - r4**2 + abs(ad) ** 2) / (2 * abs(ad))
+    h = math.sqrt(r3**2 - x**2)
+    b = max((a + ad / abs(ad) * (x + s * 1j * h) for s in (1, -1)), key=lambda z: z.imag)
+    e2, e3, e4 = (1j * (p / abs(p)) for p in (a - o, b - a, b - d))
+    m = np.array([[r3 * e3.real, -r4 * e4.real], [r3 * e3.imag, -r4 * e4.imag]])
+    w3, w4 = np.linalg.solve(m, [-(r2 * omega2 * e2).real, -(r2 * omega2 * e2).imag])
+    coupler = (b - a) / abs(b - a)
+    return dict(A=a, B=b, M=a + (0.20 + 0.05j) * coupler, w3=w3, w4=w4)
+
+
+def shapes(page) -> dict[str, complex]:
+    return {k: complex(*v) for k, v in page.evaluate(SHAPES).items()}
+
+
+def screen_of(page, x: float, y: float) -> tuple[float, float]:
+    """Where a point of the drawing (m) is on the screen."""
+    return tuple(page.evaluate("""([x, y]) => { const gd = document.querySelector('.mehanizmi-plot');
+        const box = gd.querySelector('.nsewdrag').getBoundingClientRect(), L = gd._fullLayout;
+        return [box.left + L.xaxis.c2p(x), box.top + L.yaxis.c2p(y)]; }""", [x, y]))
+
+
+def drag_point(page, name: str, to: complex) -> None:
+    start = shapes(page)[name]
+    x0, y0 = screen_of(page, start.real, start.imag)
+    x1, y1 = screen_of(page, to.real, to.imag)
+    page.mouse.move(x0, y0)
+    page.mouse.down()
+    page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=5)
+    page.mouse.move(x1, y1, steps=5)
+    page.mouse.up()
+    # Plotly moves the circle at once; the server's redraw puts it on round millimetres
+    page.wait_for_function(f"() => Math.hypot(({SHAPES})()[{name!r}][0] - {to.real}, "
+                           f"({SHAPES})()[{name!r}][1] - {to.imag}) < 1e-9", timeout=30_000)
+    wait_idle(page)
+
+
+def type_cell(page, table: int, row: int, column: int, text: str) -> None:
+    """Type into a data editor's cell as a keyboard user does: click the row, arrow to the
+    column, Enter to edit, replace the value, Enter to commit."""
+    grid = page.locator("[data-testid='stDataFrame']").nth(table)
+    grid.wait_for(state="visible")
+    page.wait_for_timeout(300)  # the tab's content laid out
+    box = grid.bounding_box()
+    page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * row + 17)
+    page.keyboard.press("Home")  # the row's first column, however the grid is scrolled
+    for _ in range(column):
+        page.keyboard.press("ArrowRight")
+    page.keyboard.press("Enter")
+    page.wait_for_timeout(200)
+    page.keyboard.press("Control+a")
+    page.keyboard.type(text, delay=150)  # typed faster, a fresh editor drops keys
+    before = page.evaluate(SHAPES)
+    page.keyboard.press("Enter")
+    page.wait_for_function(f"b => JSON.stringify(({SHAPES})()) !== JSON.stringify(b)", arg=before,
+                           timeout=30_000)
+    wait_idle(page)
+
+
+def builder(browser, app_url, lang="en"):  # noqa: F811 (fixtures as arguments)
+    page = open_page(browser, f"{app_url}/builder?lang={lang}", (1600, 1100))
+    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
+    return page
+
+
+def test_the_exam_four_bar_is_built_by_dragging_and_typing_and_read_on_the_plans_page(
+        app_url, browser, tmp_path):  # noqa: F811
+    started = time.perf_counter()
+    page = builder(browser, app_url)
+    drag_point(page, "D", 0.3 + 0j)  # the template's rocker pivot, to the exam's place
+    assert shapes(page)["D"] == pytest.approx(0.3 + 0j, abs=1e-15)  # snapped to millimetres
+    page.get_by_role("tab", name="Members", exact=True).click()
+    for row, length in enumerate(("0.1", "0.35", "0.25")):  # crank, coupler, rocker
+        type_cell(page, 1, row, 4, length)
+    page.get_by_role("tab", name="Points of members").click()
+    type_cell(page, 2, 0, 2, "0.2")  # M: 0.20 m along AB …
+    type_cell(page, 2, 0, 3, "0.05")  # … and 0.05 m to its left
+    exact = exam_four_bar()
+    drawn = shapes(page)
+    for name in ("A", "B", "M"):
+        assert abs(drawn[name] - exact[name]) < 1e-9, name
+    shot = tmp_path / "builder-exam-four-bar-en.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+
+    page.get_by_role("button", name="2–3 · Velocity and acceleration plans").click()
+    wait_url(page, r"velocity_plans\?.*s=1")
+    wait_idle(page)
+    with page.expect_download() as download:
+        page.locator(".st-key-csv_members button").click()
+    rows = list(csv.DictReader(io.StringIO(open(download.value.path(), encoding="utf-8").read())))
+    omega = {int(r["member"]): float(r["ω [s⁻¹]"]) for r in rows}
+    assert omega[3] == pytest.approx(exact["w3"], rel=1e-4)
+    assert omega[4] == pytest.approx(exact["w4"], rel=1e-4)
+    assert page.locator("[data-testid='stException']").count() == 0
+    shot = tmp_path / "builder-exam-four-bar-plans-en.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+    print(f"exam four-bar: built and read in {time.perf_counter() - started:.1f} s of browser time")
+
+
+def test_dragging_a_pivot_redraws_the_paths(app_url, browser, tmp_path):  # noqa: F811
+    page = builder(browser, app_url, "sr")
+    paths = "() => Array.from(document.querySelector('.mehanizmi-plot').data[0].x).join()"
+    before = page.evaluate(paths)
+    drag_point(page, "O", -0.05 + 0.02j)
+    assert shapes(page)["O"] == pytest.approx(-0.05 + 0.02j, abs=1e-12)
+    assert page.evaluate(paths) != before
+    page.get_by_text("Sastavi mehanizam").first.wait_for()
+    assert page.locator("[data-testid='stException']").count() == 0
+    shot = tmp_path / "builder-drag-pivot-sr.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+
+
+def test_a_drag_where_the_mechanism_cannot_close_says_why_and_keeps_the_drawing(
+        app_url, browser):  # noqa: F811
+    page = builder(browser, app_url)
+    before = shapes(page)
+    x, y = screen_of(page, before["D"].real, before["D"].imag)
+    onto = screen_of(page, 0.0, 0.0)  # the rocker's pivot dropped on the crank's
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.mouse.move(onto[0], onto[1], steps=8)
+    page.mouse.up()
+    page.get_by_text("coincides with frame.O").first.wait_for(timeout=30_000)
+    assert page.get_by_text("Point D cannot go to").count() == 1
+    wait_idle(page)
+    assert shapes(page) == before
