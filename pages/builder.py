@@ -174,8 +174,8 @@ def study(scene: Scene) -> None:
     st.subheader(t("build.study"))
     cols = st.columns(len(LINKAGE_PAGES))
     for col, chapter in zip(cols, LINKAGE_PAGES):
-        col.button(t(chapter.title), icon=chapter.icon, key=f"open_{chapter.file}", width="stretch",
-                   on_click=builder.open_on, args=(chapter.file, scene))
+        if col.button(t(chapter.title), icon=chapter.icon, key=f"open_{chapter.file}", width="stretch"):
+            builder.open_on(chapter.file, scene)
     text = encode(scene)
     st.caption(t("build.link_caption", chars=len(text)))
     st.code(f"{PARAMETER}={text}", language=None, wrap_lines=True)

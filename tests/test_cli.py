@@ -148,3 +148,22 @@ def test_plan_json_gives_images_and_components_that_close():
 def test_plan_of_a_gear_train_is_refused_with_exit_2():
     out = run("plan", "zbirka-6.1")
     assert out.returncode == 2 and "not a linkage" in out.stderr and "Traceback" not in out.stderr
+
+
+def test_link_prints_a_parameter_that_solve_plan_structure_and_forces_accept():
+    out = run("link", "zbirka-2.1")
+    assert out.returncode == 0, out.stderr
+    value = out.stdout.strip()
+    assert value.startswith("s=1") and len(value) < 2000
+    for command in ("solve", "plan", "structure", "forces"):
+        by_link = run(command, "--link", f"http://localhost:8501/velocity_plans?lang=sr&{value}", "--json")
+        by_name = run(command, "zbirka-2.1", "--json")
+        assert by_link.returncode == 0, by_link.stderr
+        assert json.loads(by_link.stdout) == json.loads(by_name.stdout), command
+
+
+def test_a_damaged_link_on_the_command_line_is_a_clear_error():
+    out = run("solve", "--link", "s=1notascene")
+    assert out.returncode == 2 and "link: the parameter is damaged" in out.stderr
+    both = run("solve", "zbirka-2.1", "--link", "s=1abc")
+    assert both.returncode == 2 and "not both" in both.stderr
