@@ -98,6 +98,17 @@ def test_every_linkage_page_opens_a_scene_from_its_link(path):
     assert t("scene.linked", "en") in choice.format_func(choice.value)
 
 
+def test_a_student_can_leave_the_linked_scene_for_a_preset_and_come_back():
+    at = linked("pages/velocity_plans.py", encode(build_scene(template("four-bar"))))
+    mine = at.selectbox(key="scene").value
+    at.selectbox(key="scene").set_value("zbirka-2.1").run()
+    assert at.selectbox(key="scene").value == "zbirka-2.1" and "s" not in at.query_params
+    offered = at.selectbox(key="scene").options  # labels: the linked scene is still offered
+    assert any(o.startswith(t("scene.linked", "en")) for o in offered)
+    at.selectbox(key="scene").set_value(mine).run()
+    assert not at.error and at.query_params["s"].startswith("1")
+
+
 @pytest.mark.parametrize("value", ["1garbage", "2abc", encode(load_preset("zbirka-2.1"))[:-30],
                                    "1" + "A" * 9000, encode(load_preset("zbirka-7.1"))])
 def test_a_bad_link_says_why_and_the_page_shows_its_default_scene(value):

@@ -36,9 +36,10 @@ def link_choice(text: str) -> str:
 
 
 def _linked(kind: str):
-    """(option, scene) for the link's scene, or None; a damaged link says why and is dropped,
-    and the page goes on with its default scene."""
-    text = st.query_params.get(PARAMETER) or st.session_state.get("linked_text")
+    """(option, scene, opened now) for the link's scene, or None; a damaged link says why and
+    is dropped, and the page goes on with its default scene."""
+    in_url = st.query_params.get(PARAMETER)
+    text = in_url or st.session_state.get("linked_text")
     if not text:
         return None
     try:
@@ -50,8 +51,9 @@ def _linked(kind: str):
         st.query_params.pop(PARAMETER, None)
         st.session_state["link_error"] = str(exc)
         return None
+    opened = bool(in_url) and st.session_state.get("linked_text") != in_url
     st.session_state["linked_text"] = text
-    return link_choice(text), scene
+    return link_choice(text), scene, opened
 
 
 def _read_upload(kind: str) -> None:
@@ -82,7 +84,7 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
     linked = _linked(kind)
     if linked is not None:
         options.append(linked[0])
-        if PARAMETER in st.query_params and st.session_state.get("scene") != linked[0]:
+        if linked[2]:
             st.session_state["scene"] = linked[0]  # a link just opened: show its scene
     uploaded = st.session_state.get("uploaded_scene")
     if not isinstance(uploaded, KINDS[kind]):
