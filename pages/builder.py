@@ -13,7 +13,7 @@ from mechanisms.loader import build_scene
 from mechanisms.schema import Scene
 from mechanisms.sketch import (COLUMNS, TABLES, document, driver_values, from_scene, tables,
                                template, template_ids)
-from solvers.diagnostics import Unsolvable, dead_zones, format_range
+from solvers.diagnostics import Unsolvable, format_range
 from solvers.structure import StructureError, decompose, degrees_of_freedom, loose_joints
 from ui import builder
 from ui.cache import preset
@@ -145,7 +145,8 @@ def upload() -> None:
         st.session_state["build_message"] = str(exc)
 
 
-def checks(doc: dict, scene: Scene | None, problem: str | None) -> None:
+def checks(doc: dict, scene: Scene | None, problem: str | None,
+           solved: builder.Drawing | None) -> None:
     """What a student needs to hear while building, in words."""
     n, p5 = len(doc.get("members", {})), len(doc.get("pairs", []))
     w = 3 * n - 2 * p5 if scene is None else degrees_of_freedom(scene)
@@ -165,7 +166,7 @@ def checks(doc: dict, scene: Scene | None, problem: str | None) -> None:
     except StructureError:
         return  # the message is the problem above
     st.success(t("build.formula", formula=structure.formula))
-    for zone in dead_zones(scene, structure, steps=720):
+    for zone in solved.zones if solved is not None else []:
         where = "; ".join(format_range(scene, lo, hi) for lo, hi in zone.ranges)
         st.info(t("build.dead_zone", group=zone.group, kind=zone.kind, where=where))
 
@@ -195,10 +196,11 @@ with tables_col:
 doc = document({k: edited[k] for k in TABLES}, edited["driver"], base)
 builder.remember(doc)
 
-scene, problem = None, None
+scene, problem, solved = None, None, None
 try:
     scene = build_scene(doc, source=t("build.tables"))
-    st.session_state["build_last"] = doc, builder.drawing(scene)
+    solved = builder.drawing(scene)
+    st.session_state["build_last"] = doc, solved
 except (SceneError, StructureError, Unsolvable) as exc:
     problem = str(exc)
 last_doc, last = st.session_state.get("build_last", (None, None))
@@ -224,7 +226,7 @@ with drawing_col:
     if st.session_state.get("build_drag_error"):
         point, to, why = st.session_state.pop("build_drag_error")
         st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=why))
-    checks(doc, scene, problem)
+    checks(doc, scene, problem, solved)
 
 if scene is not None and problem is None:
     study(scene)

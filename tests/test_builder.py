@@ -112,6 +112,14 @@ def test_a_link_to_an_invalid_scene_gets_the_loaders_message():
         decode(packed(text.encode()))
 
 
+@pytest.mark.parametrize("name", template_ids())
+def test_a_built_scene_downloads_and_uploads_again_unchanged(name):
+    from mechanisms import parse_scene
+
+    scene = build_scene(template(name))
+    assert to_text(parse_scene(to_text(scene))) == to_text(scene)
+
+
 # --- the branch is the one drawn -------------------------------------------------------
 
 @pytest.mark.parametrize("make", [fourbar, slider_crank, rocking_guide], ids=["RRR", "RRP", "RPR"])

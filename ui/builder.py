@@ -19,8 +19,8 @@ from mechanisms import Scene, SceneError
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
 from mechanisms.sketch import add_point, drag, drawn, snap, template
-from solvers.diagnostics import Unsolvable, solve_instant, sweep_values
-from solvers.kinematics import solve
+from solvers.diagnostics import Unsolvable, dead_zones, solve_instant, sweep_values
+from solvers.kinematics import GroupIssue, solve
 from solvers.structure import StructureError
 from ui.cache import BY_REPR
 from ui.scenes import link_choice
@@ -31,12 +31,13 @@ START = "four-bar"
 @dataclasses.dataclass(frozen=True)
 class Drawing:
     """A scene that solves at its instant, as drawn: every point's place, every member's
-    e^{iθ}, and the moving points' paths over the cycle."""
+    e^{iθ}, the moving points' paths over the cycle and where a group cannot close."""
 
     scene: Scene
     positions: dict[str, complex]
     rotations: dict[int, complex]
     paths: dict[str, np.ndarray]
+    zones: list[GroupIssue]
 
 
 @st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR)
@@ -47,7 +48,7 @@ def drawing(scene: Scene) -> Drawing:
     rotations = {m: complex(mm.rot[0]) for m, mm in motion.members.items()}
     cycle = solve(scene, sweep_values(scene, 180), order=0)
     paths = {n: p.z for n, p in cycle.points.items() if n not in scene.frame}
-    return Drawing(scene, positions, rotations, paths)
+    return Drawing(scene, positions, rotations, paths, dead_zones(scene, motion.structure, 720))
 
 
 def version() -> int:
