@@ -11,8 +11,7 @@ from mechanisms import SceneError, parse_document, preset_ids
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
 from mechanisms.schema import Scene
-from mechanisms.sketch import (COLUMNS, TABLES, document, driver_values, from_scene, tables,
-                               template, template_ids)
+from mechanisms.sketch import COLUMNS, TABLES, document, driver_values, tables, template, template_ids
 from solvers.diagnostics import Unsolvable, format_range
 from solvers.structure import StructureError, decompose, degrees_of_freedom, loose_joints
 from ui import builder
@@ -119,10 +118,9 @@ def start_controls() -> None:
         kind, name = st.session_state["build_start"].split(":", 1)
         if kind == "template":
             builder.start(template(name))
+            st.session_state.pop("build_message", None)
         else:
-            scene = preset(name)
-            builder.start(from_scene(scene, builder.drawing(scene).positions))
-        st.session_state.pop("build_message", None)
+            builder.start_from(preset(name))
 
     left, right = st.columns([3, 1], vertical_alignment="bottom")
     left.selectbox(t("build.start_from"), options, format_func=label, key="build_start")
@@ -139,10 +137,10 @@ def upload() -> None:
         scene = parse_document(file.getvalue(), source=file.name)
         if not isinstance(scene, Scene):
             raise SceneError(t("scene.wrong_kind", file=file.name, kind="linkage"))
-        builder.start(from_scene(scene, builder.drawing(scene).positions))
-        st.session_state.pop("build_message", None)
-    except (SceneError, StructureError, Unsolvable) as exc:
+    except SceneError as exc:
         st.session_state["build_message"] = str(exc)
+        return
+    builder.start_from(scene)
 
 
 def checks(doc: dict, scene: Scene | None, problem: str | None,
@@ -213,13 +211,16 @@ with drawing_col:
         result = chart(builder_figure(last.scene, last.positions, last.rotations, last.paths,
                                       t("build.drawing"), t, look(), builder.revision()),
                        f"{last.scene.id}-drawing", "build_fig", editable=True)
-        if problem:
+        if problem:  # a drag now would drop what the tables hold: mend them first
             st.caption(t("build.last_valid"))
         event = builder.moved(result.drag)
         if event is not None:
-            builder.drop(last_doc, last, *event)
+            if problem:
+                builder.refuse_drag()
+            else:
+                builder.drop(last_doc, last, *event)
             st.rerun()
-        if result.click and mode != "nothing":
+        if result.click and mode != "nothing" and not problem:
             builder.click(last_doc, last, 1 if mode == "frame" else int(mode),
                           complex(result.click["x"], result.click["y"]), result.click["pixel"])
             st.rerun()

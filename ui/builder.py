@@ -18,7 +18,7 @@ import streamlit as st
 from mechanisms import Scene, SceneError
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
-from mechanisms.sketch import add_point, drag, drawn, snap, template
+from mechanisms.sketch import add_point, drag, drawn, from_scene, snap, template
 from solvers.diagnostics import Unsolvable, dead_zones, solve_instant, sweep_values
 from solvers.kinematics import GroupIssue, solve
 from solvers.structure import StructureError
@@ -90,6 +90,18 @@ def start(doc: dict) -> None:
     replace(doc)
 
 
+def start_from(scene: Scene) -> None:
+    """Start from a scene (a preset, an uploaded file), drawn where it solves; one that does
+    not solve at its instant still fills the tables, with the reason shown."""
+    try:
+        positions = drawing(scene).positions
+        st.session_state.pop("build_message", None)
+    except (StructureError, Unsolvable) as exc:
+        positions = {}
+        st.session_state["build_message"] = str(exc)
+    replace(from_scene(scene, positions))
+
+
 def remember(doc: dict) -> None:
     st.session_state["build_now"] = doc
 
@@ -128,14 +140,18 @@ def drop(doc: dict, last: Drawing, point: str, to: complex, pixel: float) -> Non
     new lengths and offsets, or, where the mechanism cannot be drawn that way, the reason
     and the last valid drawing kept."""
     to = snap(to, pixel)
-    # a new drawing revision even when the drag is refused: the circle goes back
-    st.session_state["build_drops"] = st.session_state.get("build_drops", 0) + 1
+    refuse_drag()  # a new revision first: if the drag is refused, the circle goes back
     new = drag(doc, last.positions, last.rotations, point, to)
     problem = _solves(new)
     if problem is None:
         replace(new)
     else:
         st.session_state["build_drag_error"] = (point, to, problem)
+
+
+def refuse_drag() -> None:
+    """A new drawing revision (figures.builder): the dragged circle returns to its place."""
+    st.session_state["build_drops"] = st.session_state.get("build_drops", 0) + 1
 
 
 def click(doc: dict, last: Drawing, member: int, at: complex, pixel: float) -> None:
