@@ -27,6 +27,7 @@ PAGES = [
     ("kinetostatics", "at", [100.0 + 7 * i for i in range(12)]),
     ("planetary_gears", "H", [1.5, 2.0, 2.5, 3.0] * 3),
     ("rotor_balancing", "precision", [0.3, 0.5, 0.7, 0.9] * 3),
+    ("builder", "build_1_driver_at", [40.0 + 5 * i for i in range(12)]),  # φ₂ typed: redrawn
 ]
 
 
