@@ -15,6 +15,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass, field
 
+from . import limits
 from .loader import SceneError, _Reader, identity
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "members", "meshes", "shafts",
@@ -77,17 +78,34 @@ def _array(r: _Reader, value, where: str, what: str) -> list:
     return value
 
 
+def _check_carriers(members: dict[int, GearMember], r: _Reader) -> None:
+    """A carrier cannot be carried, through any chain, by a member it carries (or by itself):
+    following carriers from any member must end at one on a fixed axis."""
+    for start in members.values():
+        seen = [start.number]
+        carrier = start.carrier
+        while carrier is not None:
+            if carrier in seen:
+                chain = " → ".join(map(str, [*seen[seen.index(carrier):], carrier]))
+                raise r.fail(f"members.{start.number}.carrier",
+                             f"makes a cycle of carriers ({chain}): a carrier cannot ride on a "
+                             "member it carries")
+            seen.append(carrier)
+            carrier = members[carrier].carrier
+
+
 def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
     r = _Reader(source)
     r.check_keys(raw, TOP_KEYS, "")
+    limits.count(raw, limits.GEARS, r.fail)
     table = raw.get("members")
     if not isinstance(table, dict) or not table:
         raise r.fail("members", "is missing: list the members as [members.N] tables")
     members = {}
     for key, spec in table.items():
         where = f"members.{key}"
-        if not key.isdigit():
-            raise r.fail(where, "must be numbered like the book's members (2, 3, …)")
+        if not key.isdigit() or int(key) < 1:
+            raise r.fail(where, "must be numbered like the book's members (1, 2, 3, …)")
         spec = r.check_keys(spec, MEMBER_KEYS, where)
         carrier = spec.get("carrier")
         members[int(key)] = GearMember(
@@ -108,6 +126,7 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
             if m.axis <= 0:
                 raise r.fail(f"members.{m.number}.axis", "must be > 0 for a planet (its axis "
                                                           "turns with the carrier)")
+    _check_carriers(members, r)
     meshes = []
     for i, spec in enumerate(_array(r, raw.get("meshes", []), "meshes", "[[meshes]] tables")):
         where = f"meshes[{i}]"

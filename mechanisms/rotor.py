@@ -11,6 +11,7 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 
+from . import limits
 from .loader import SceneError, _Reader, identity
 
 PLANES = ("I", "II")
@@ -65,6 +66,7 @@ class Rotor:
 def parse_rotor(raw: dict, source: str, default_id: str) -> Rotor:
     r = _Reader(source)
     r.check_keys(raw, TOP_KEYS, "")
+    limits.count(raw, limits.ROTOR, r.fail)
     mode = r.text(raw, "mode", "", default="dynamic")
     if mode not in ("dynamic", "static"):
         raise r.fail("mode", f"must be 'dynamic' or 'static', got {mode!r}")

@@ -2,6 +2,13 @@
 
 The output uses the same format the loader reads (docs/scene-format.md), so a downloaded
 scene uploads again unchanged.
+
+Written by hand rather than with a TOML library (tomli-w 1.2 was tried): a library writes
+every array of tables as ``[[pairs]]`` blocks and cannot keep one pair per line before the
+first table, the layout the presets, the documentation and a student reading the file
+share; and scene links (mechanisms/link.py) deflate this layout with a fixed dictionary,
+so changing it would lengthen every link. Strings go through ``json.dumps`` (a JSON string
+is a valid TOML basic string), numbers through ``repr``.
 """
 
 from __future__ import annotations

@@ -77,6 +77,8 @@ with main:
         st.error(str(exc))
         st.stop()
     st.caption(t("gears.dof", dof=solution.dof, inputs=len(train.inputs)))
+    if solution.status == "solved" and solution.message:
+        st.info(solution.message)  # the input at rest: the ratios still hold
     if solution.status != "solved":
         st.error(solution.message)
         chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")

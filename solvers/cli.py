@@ -132,6 +132,8 @@ def _solve_gears(train: GearTrain, as_json: bool) -> int:
     solution = solve_train(train)
     if solution.status != "solved":
         raise Unsolvable(solution.message)
+    if solution.message:
+        print(f"note: {solution.message}", file=sys.stderr)
     data = gears_json(solution)
     if as_json:
         return _print_json(data)

@@ -13,10 +13,7 @@ from .kinematics import SINGULAR, GroupIssue, Motion, solve
 from .triads import TOL
 from .kinetostatics import analyse
 from .structure import Structure, decompose
-
-
-class Unsolvable(Exception):
-    """The mechanism cannot be in the requested position; the message says why."""
+from .budget import Unsolvable  # defined there, where the time budget needs it; imported from here
 
 WHY_OPEN = {
     "RRR": "the two links cannot reach each other: the distance between the group's outer "

@@ -10,6 +10,7 @@ under- or over-determined is explained, never answered with a least-squares gues
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -30,10 +31,14 @@ class TrainSolution:
     status: str  # "solved", "under" (missing inputs), "over" (inconsistent inputs)
     undetermined: tuple[int, ...] = ()
     message: str = ""
+    # the speeds for a unit input, when the input is at rest (ratios do not depend on its speed)
+    unit: dict[int, float] | None = None
 
     def ratio(self, a: int, b: int) -> float:
-        """i_ab = ω_a/ω_b; infinite when member b does not turn."""
-        wa, wb = self.omega[a], self.omega[b]
+        """i_ab = ω_a/ω_b; infinite when member b does not turn (with the input at rest: as
+        for any input speed)."""
+        speeds = self.unit or self.omega
+        wa, wb = speeds[a], speeds[b]
         if abs(wb) <= 1e-12 * max(abs(wa), 1.0):
             return math.inf
         return wa / wb
@@ -163,5 +168,11 @@ def solve_train(train: GearTrain) -> TrainSolution:
                              f"the train has {dof} degree(s) of freedom but {len(train.inputs)} "
                              "input(s), and they contradict each other")
     x[np.abs(x) <= 1e-12 * scale] = 0.0  # a member at rest is at rest, not at 1e-15 rad/s
-    return TrainSolution(train, {m: float(x[i]) + 0.0 for i, m in enumerate(members)}, dof,
-                         "solved")
+    omega = {m: float(x[i]) + 0.0 for i, m in enumerate(members)}
+    if dof == 1 and train.inputs and not any(omega.values()):
+        unit = solve_train(train.with_(inputs=tuple(
+            dataclasses.replace(i, omega=1.0, velocity=None) for i in train.inputs[:1])))
+        return TrainSolution(train, omega, dof, "solved", unit=unit.omega,
+                             message="the input is at rest, so every member is at rest; the "
+                                     "ratios are the train's own (the same for any input speed)")
+    return TrainSolution(train, omega, dof, "solved")

@@ -19,6 +19,7 @@ import numpy as np
 
 from mechanisms.schema import DRIVER, FRAME, Scene
 
+from .budget import bounded, check
 from .loops import build_loop, cross, group_size, solve_dyad
 from .state import Body, unit
 from .structure import Group, Structure, StructureError, decompose
@@ -140,6 +141,7 @@ def driver_body(scene: Scene, at: np.ndarray) -> Body:
                 v=d.speed * direction, epsilon=0.0, a=d.accel * direction, angle=theta)
 
 
+@bounded
 def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = None,
           structure: Structure | None = None, tol: float = TOL) -> Motion:
     """Solve the scene at driver value(s) ``at`` (rad or m; default: the scene's instant).
@@ -173,6 +175,7 @@ class _Solved:
         self.issues: list[GroupIssue] = []
         self.newton: dict[str, NewtonReport] = {}
         for i, group in enumerate(groups):
+            check()
             if group.cls == 2:
                 branch = _drawn_branch(scene, group, groups[:i], tol)
                 solution = solve_dyad(build_loop(scene, group, branch), self.bodies, order)

@@ -12,6 +12,8 @@ from itertools import combinations
 
 from mechanisms.schema import DRIVER, FRAME, Pair, Scene
 
+from .budget import bounded, check
+
 DYAD_KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
 ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV"}
 
@@ -78,6 +80,7 @@ def degrees_of_freedom(scene: Scene) -> int:
     return 3 * len(scene.members) - 2 * len(scene.pairs)
 
 
+@bounded
 def decompose(scene: Scene) -> Structure:
     """Find the driver and the Assur groups in solving order, or explain why not."""
     dof = degrees_of_freedom(scene)
@@ -130,7 +133,9 @@ def _find_triad(scene: Scene, known: set[int], remaining: set[int]) -> Group | N
     binary member; ``kind`` reads the legs the same way, e.g. ``RR-RR-PR`` (a slider on a
     fixed guide as the third leg).
     """
-    for quad in combinations(sorted(remaining), 4):
+    for tried, quad in enumerate(combinations(sorted(remaining), 4)):
+        if tried % 512 == 0:
+            check()
         members = set(quad)
         if len(_pairs_between(scene, members, members | known)) != 6:
             continue

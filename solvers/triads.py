@@ -28,6 +28,7 @@ import numpy as np
 
 from mechanisms.schema import Pair, Scene
 
+from .budget import check
 from .loops import cross
 from .state import Body, cplx
 from .structure import Group
@@ -174,6 +175,7 @@ def newton(system: _System, known: dict[int, Body], z, th, tol: float, stall: in
     best = np.full(n, np.inf)  # the smallest residual so far, and when it was reached
     since = np.zeros(n, dtype=int)
     for _ in range(MAX_ITERATIONS):
+        check()
         idx = np.flatnonzero(active)
         sub = {m: _take(b, idx) for m, b in known.items()}
         sub.update(_poses(system.unknown, z[idx], th[idx]))
@@ -316,6 +318,7 @@ def _march(system, scene, at, start, known_at):
         known = known_at(targets)
         state = first
         for i, b in enumerate(targets):
+            check()
             k = {n: _take(bd, [i]) for n, bd in known.items()}
             if not _step(system, known_at, state, b, k, trail):
                 break

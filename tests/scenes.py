@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import cmath
+import math
+
 from mechanisms import parse_scene
 
 
@@ -144,3 +147,71 @@ points = ["A"]
 points = ["Y", "Q"]
 length = 0.25
 """)
+
+
+# --- oversized scenes (tests/test_hostile.py, bench/hostile.py): TOML text, not parsed ---
+
+def chain(n: int, pinned: bool = False) -> str:
+    """A linkage of ``n`` moving members: a crank, then members each pinned to the one before
+    and to the frame (``pinned``: every member pinned to the frame only)."""
+    out = ['pairs = [', '  { type = "revolute", members = [1, 2], point = "P0" },']
+    for k in range(3, n + 2):
+        if not pinned:
+            out.append(f'  {{ type = "revolute", members = [{k - 1}, {k}], point = "Q{k}" }},')
+        out.append(f'  {{ type = "revolute", members = [{k}, 1], point = "P{k}" }},')
+    out += [']', '[frame]', 'P0 = [0.0, 0.0]']
+    out += [f"P{k} = [{k * 0.1}, 0.5]" for k in range(3, n + 2)]
+    out += ['[driver]', 'type = "rotating"', 'omega = 1.0', '[members.2]',
+            'points = ["P0", "Q3"]' if not pinned else 'points = ["P0", "A"]', 'length = 0.1']
+    for k in range(3, n + 2):
+        ends = f'["Q{k}", "P{k}"]' if not pinned else f'["P{k}", "X{k}"]'
+        extra = f'\nextra = {{ Q{k + 1} = [0.05, 0.01] }}' if not pinned and k < n + 1 else ""
+        out += [f"[members.{k}]", f"points = {ends}", f"length = 0.2{extra}"]
+    return "\n".join(out)
+
+
+def train(n: int) -> str:
+    out = ['kind = "gears"', "meshes = ["]
+    out += [f"  {{ members = [{k}, {k + 1}], radii = [0.01, 0.02] }}," for k in range(1, n)]
+    out += ["]", "fixed = []", "inputs = [ { member = 1, omega = 10.0 } ]"]
+    out += [f"[members.{k}]\naxis = {0.03 * k}" for k in range(1, n + 1)]
+    return "\n".join(out)
+
+
+def rotor(n: int) -> str:
+    out = ['kind = "rotor"', "[planes]", "I = 0.5", "II = 0.0"]
+    out += ["[[masses]]\nmass = 0.1\nradius = 0.1\nangle = 30\nx = 0.2"] * n
+    out += ["[corrections.I]", "radius = 0.2", "[corrections.II]", "radius = 0.2"]
+    return "\n".join(out)
+
+
+def dyads(count: int) -> str:
+    """A crank and ``count`` dyads in series, each hung on the rocker of the one before,
+    laid out where it closes (the drawn places go to [guess]): 1 + 2·count moving members."""
+    a = 0.1 * cmath.exp(1j * math.pi / 3)
+    out = ['pairs = [', '  { type = "revolute", members = [1, 2], point = "O" },']
+    frame, members, guess, hang, on = ["O = [0.0, 0.0]"], ['[members.2]\npoints = ["O", "P1"]\n'
+                                                            'length = 0.1'], [], a, 2
+    for d in range(1, count + 1):
+        j, k = 2 * d + 1, 2 * d + 2
+        c = hang + 0.3 + 0.2j
+        f = c + 0.1 - 0.25j
+        u = (c - f) / abs(c - f)
+        nxt = f + (0.15 + 0.05j) * u
+        out += [f'  {{ type = "revolute", members = [{on}, {j}], point = "P{d}" }},',
+                f'  {{ type = "revolute", members = [{j}, {k}], point = "C{d}" }},',
+                f'  {{ type = "revolute", members = [{k}, 1], point = "F{d}" }},']
+        frame.append(f"F{d} = [{f.real!r}, {f.imag!r}]")
+        members += [f'[members.{j}]\npoints = ["P{d}", "C{d}"]\nlength = {abs(c - hang)!r}',
+                    f'[members.{k}]\npoints = ["F{d}", "C{d}"]\nlength = {abs(c - f)!r}'
+                    + (f"\nextra = {{ P{d + 1} = [0.15, 0.05] }}" if d < count else "")]
+        guess.append(f"C{d} = [{c.real!r}, {c.imag!r}]")
+        hang, on = nxt, k
+    out += ["]", "[frame]", *frame, "[driver]", 'type = "rotating"', "at = 60.0", "omega = 10.0",
+            *members, "[guess]", *guess]
+    return "\n".join(out)
+
+
+def largest_allowed() -> str:
+    """19 moving members, 28 pairs (W = 1 needs an odd count: 20 members would not move)."""
+    return dyads(9)

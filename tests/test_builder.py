@@ -102,7 +102,7 @@ def test_a_cut_link_says_it_is_cut():
 def test_a_link_that_inflates_past_the_upload_limit_is_refused_without_inflating_it_all():
     bomb = packed(b"#" * 3_000_000)
     assert len(bomb) < MAX_CHARS  # small on the wire
-    with pytest.raises(SceneError, match="over 1,000,000 bytes"):
+    with pytest.raises(SceneError, match="over 100,000 bytes"):
         decode(bomb)
 
 

@@ -61,23 +61,26 @@ def drag_point(page, name: str, to: complex) -> None:
 
 
 def type_cell(page, table: int, row: int, column: int, text: str, redraws: bool = True) -> None:
-    """Type into a data editor's cell as a keyboard user does: click the row, arrow to the
-    column, Enter to edit, replace the value, Enter to commit."""
+    """Type into a data editor's cell as a keyboard user does: click the row, Home and arrow to
+    the column, Enter to edit, replace the value, Enter to commit. A fresh editor may drop
+    keys typed before it has focus (more so on a loaded machine): then Escape and again."""
     grid = page.locator("[data-testid='stDataFrame']").nth(table)
     grid.wait_for(state="visible")
-    page.wait_for_timeout(300)  # the tab's content laid out
-    box = grid.bounding_box()
-    page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * row + 17)
-    page.keyboard.press("Home")  # the row's first column, however the grid is scrolled
-    for _ in range(column):
-        page.keyboard.press("ArrowRight")
-    page.keyboard.press("Enter")
-    for _ in range(5):  # a fresh editor may drop keys typed before it has focus: check, retype
-        page.wait_for_timeout(200)
+    wait_idle(page)
+    for _ in range(5):
+        page.wait_for_timeout(300)  # the tab's content laid out
+        box = grid.bounding_box()
+        page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * row + 17)
+        page.keyboard.press("Home")  # the row's first column, however the grid is scrolled
+        for _ in range(column):
+            page.keyboard.press("ArrowRight")
+        page.keyboard.press("Enter")
+        page.wait_for_timeout(300)
         page.keyboard.press("Control+a")
         page.keyboard.type(text, delay=100)
         if page.evaluate("() => document.activeElement && document.activeElement.value") == text:
             break
+        page.keyboard.press("Escape")
     else:
         raise AssertionError(f"the cell editor never held {text!r}")
     before = page.evaluate(SHAPES)

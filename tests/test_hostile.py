@@ -5,6 +5,7 @@ exception, never code run from the file (fuzzed with hypothesis)."""
 from __future__ import annotations
 
 import copy
+import dataclasses
 import math
 import tomllib
 
@@ -23,6 +24,8 @@ from solvers.diagnostics import Unsolvable, solve_instant
 from solvers.gears import TrainError, solve_train
 from solvers.kinetostatics import SINGULAR, analyse
 from solvers.structure import StructureError
+
+from .scenes import chain, dyads, largest_allowed, rotor, train
 
 PRESETS = {pid: (PRESET_DIR / f"{pid}.toml").read_text() for pid in preset_ids()}
 EXPECTED = (SceneError, StructureError, Unsolvable, TrainError, BalanceError)
@@ -166,3 +169,124 @@ def test_every_number_set_to_an_extreme_is_a_clear_error_or_a_result(pid):
                 use(from_raw(replaced(raw, path, value)))
             except EXPECTED as exc:
                 assert str(exc).strip(), (path, value)
+
+
+# --- bounded work per scene (issue: oversized scenes) ----------------------------------------
+
+@pytest.mark.parametrize("text, limit", [
+    (train(10_000), "file is 8[0-9,]+ bytes; a scene must be under 100,000 bytes"),
+    (chain(6_000, pinned=True), "a scene must be under 100,000 bytes"),
+    (chain(3_000), "a scene must be under 100,000 bytes"),
+    (rotor(5_000), "a scene must be under 100,000 bytes"),
+    (train(41), "members lists 41 members; a scene may have at most 40"),
+    (train(300), "members lists 300 members"),
+    (chain(21), "members lists 21 moving members; a scene may have at most 20"),
+    (chain(400, pinned=True), "members lists 400 moving members"),
+    (dyads(21), "members lists 43 moving members"),
+    (rotor(101), "masses lists 101 unbalanced masses; a scene may have at most 100"),
+])
+def test_a_scene_past_a_limit_is_refused_by_naming_the_limit(text, limit):
+    """Refused before anything is validated or solved (bench/hostile.py times it: ms): the
+    big files by their size before parsing, the others by their counts after it."""
+    with pytest.raises(SceneError, match=limit):
+        parse_document(text)
+
+
+def test_too_many_points_forces_or_printed_values_are_refused():
+    raw = tomllib.loads(PRESETS["zbirka-2.1"])
+    many = copy.deepcopy(raw)
+    many["members"]["3"]["extra"] = {f"X{i}": [0.01 * i, 0.0] for i in range(300)}
+    with pytest.raises(SceneError, match="hold 311 points; a scene may have at most 200"):
+        from_raw(many)
+    many = copy.deepcopy(raw)
+    many["forces"] = [{"member": 3, "point": "B", "magnitude": 1.0}] * 41
+    with pytest.raises(SceneError, match="forces lists 41 forces"):
+        from_raw(many)
+    many = copy.deepcopy(raw)
+    many["book"] = {f"points.C.v{i}": 1.0 for i in range(301)}
+    with pytest.raises(SceneError, match="book lists 301 printed values"):
+        from_raw(many)
+
+
+def test_the_largest_allowed_linkage_still_solves_and_its_page_shows_it():
+    from streamlit.testing.v1 import AppTest
+
+    from mechanisms.link import encode
+
+    from .test_pages import ROOT
+
+    scene = parse_document(largest_allowed())
+    assert len(scene.members) == 19 and len(scene.pairs) == 28
+    motion = solve_instant(scene, None)  # within the budget, or OverBudget would be raised
+    for d in range(1, 10):
+        assert abs(motion.points[f"C{d}"].z[0] - scene.guess[f"C{d}"]) < 1e-9
+    at = AppTest.from_file(str(ROOT / "app.py"), default_timeout=60)
+    at.session_state["lang"] = "en"
+    at.query_params["s"] = encode(scene)
+    at.run()
+    at.switch_page("pages/velocity_plans.py").run()
+    assert not at.exception and not at.error, [e.value for e in at.error]
+
+
+def test_a_page_given_an_oversized_scene_in_a_link_says_the_limit_and_no_exception():
+    from streamlit.testing.v1 import AppTest
+
+    from mechanisms.link import _DICTIONARY  # build the link by hand: encode needs a Scene
+    import base64
+    import zlib
+
+    from .test_pages import ROOT
+
+    c = zlib.compressobj(9, zlib.DEFLATED, -15, zdict=_DICTIONARY)
+    value = "1" + base64.urlsafe_b64encode(c.compress(chain(60).encode()) + c.flush()).decode()
+    at = AppTest.from_file(str(ROOT / "app.py"), default_timeout=60)
+    at.session_state["lang"] = "en"
+    at.query_params["s"] = value.rstrip("=")
+    at.run()
+    at.switch_page("pages/trajectories.py").run()
+    assert not at.exception
+    assert "members lists 60 moving members; a scene may have at most 20" in at.error[0].value
+
+
+def test_a_solve_past_its_time_budget_stops_with_a_reason(monkeypatch):
+    from solvers import budget, decompose, solve
+    from solvers.budget import OverBudget
+
+    scene = parse_document(PRESETS["triad-full-turn"])
+    monkeypatch.setattr(budget, "SECONDS", -1.0)  # every budget already spent
+    for run in (lambda: solve(scene, np.linspace(0, 6, 36)), lambda: decompose(scene)):
+        with pytest.raises(OverBudget, match="takes longer than -1 s"):
+            run()
+    assert issubclass(OverBudget, Unsolvable)  # pages and the CLI already say it in words
+
+
+# --- gear trains that cannot exist; files from Windows ---------------------------------------
+
+def test_a_cycle_of_carriers_is_refused():
+    text = PRESETS["zbirka-6.8"].replace("[members.5]", "[members.5]\ncarrier = 4\naxis = 0.04", 1)
+    with pytest.raises(SceneError, match=r"cycle of carriers \((4 → 5 → 4|5 → 4 → 5)\)"):
+        parse_document(text)
+
+
+def test_a_gear_member_numbered_0_is_refused():
+    text = PRESETS["zbirka-6.8"].replace("[members.4]", "[members.0]", 1)
+    with pytest.raises(SceneError, match=r"members\.0 must be numbered like the book's members"):
+        parse_document(text)
+
+
+def test_a_train_whose_input_is_at_rest_keeps_its_ratios_and_says_everything_is_at_rest():
+    moving = parse_document(PRESETS["zbirka-6.8"])
+    still = moving.with_(inputs=tuple(dataclasses.replace(i, omega=0.0) for i in moving.inputs))
+    go, rest = solve_train(moving), solve_train(still)
+    assert not any(rest.omega.values()) and "at rest" in rest.message
+    for a in moving.members:
+        for b in moving.members:
+            if a != b:
+                assert rest.ratio(a, b) == pytest.approx(go.ratio(a, b), rel=1e-12)
+
+
+def test_a_file_saved_with_a_byte_order_mark_loads():
+    text = PRESETS["zbirka-2.1"]
+    assert parse_document(("\ufeff" + text).encode("utf-8")) == parse_document(text)
+    with pytest.raises(SceneError, match="not UTF-8"):
+        parse_document(text.encode("utf-16"))
