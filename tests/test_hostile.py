@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import json
 import math
 import tomllib
 
@@ -290,3 +291,18 @@ def test_a_file_saved_with_a_byte_order_mark_loads():
     assert parse_document(("\ufeff" + text).encode("utf-8")) == parse_document(text)
     with pytest.raises(SceneError, match="not UTF-8"):
         parse_document(text.encode("utf-16"))
+
+
+def test_the_cli_solves_a_train_at_rest_and_notes_why_everything_is_still(tmp_path, capsys):
+    still = tmp_path / "still.toml"
+    still.write_text(PRESETS["zbirka-6.8"].replace("omega = 100.0", "omega = 0.0", 1))
+    assert parse_document(still.read_text()).inputs[0].omega == 0.0
+    assert main(["solve", str(still), "--json"]) == 0
+    out = capsys.readouterr()
+    assert "note: the input is at rest" in out.err
+    assert main(["solve", "zbirka-6.8", "--json"]) == 0
+    moving = json.loads(capsys.readouterr().out)["ratios"]
+    at_rest = json.loads(out.out)["ratios"]
+    assert at_rest.keys() == moving.keys()
+    for key, ratio in moving.items():  # ∞ only where a member is fixed, as when it moves
+        assert at_rest[key] == ratio if ratio == "inf" else at_rest[key] == pytest.approx(ratio)
