@@ -16,7 +16,7 @@ from solvers.diagnostics import Unsolvable, format_range
 from solvers.structure import StructureError, decompose, degrees_of_freedom, loose_joints
 from ui import builder
 from ui.cache import preset
-from ui.chapters import CHAPTERS
+from ui.chapters import BUILDER, CHAPTERS
 from ui.export import chart
 from ui.i18n import t, title_of
 from ui.present import look
@@ -49,7 +49,7 @@ UNITS = {"x": "m", "y": "m", "length": "m", "mass": "kg", "centre_along": "m",
          "slider_angle": "°", "magnitude": "N", "value": "N·m"}
 
 
-def column(table: str, name: str):
+def column(name: str):
     label = t(LABELS[name])
     if name in UNITS:
         label = f"{label} [{UNITS[name]}]"
@@ -87,7 +87,7 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
             edited = st.data_editor(
                 frame_of(name, rows[name]), key=f"build_{builder.version()}_{name}",
                 num_rows="dynamic", hide_index=True, placeholder="—",
-                column_config={c: column(name, c) for c in COLUMNS[name]})
+                column_config={c: column(c) for c in COLUMNS[name]})
             out[name] = edited.astype(object).where(edited.notna(), None).to_dict("records")
     with tabs[-1]:
         out["driver"] = driver_inputs(driver_values(doc))
@@ -181,7 +181,7 @@ def study(scene: Scene) -> None:
     scene_download(scene)
 
 
-st.title(f":material/draw: {t('build.title')}")
+st.title(f"{BUILDER.icon} {t(BUILDER.title)}")
 st.caption(t("build.intro"))
 start_controls()
 if st.session_state.get("build_message"):

@@ -4,7 +4,6 @@ Skipped on a developer machine without /usr/bin/chromium; in CI (CI=true) a miss
 browser is a failure, never a silent skip.
 """
 
-import asyncio
 import json
 import os
 import shutil
@@ -12,7 +11,6 @@ from pathlib import Path
 
 import pytest
 
-from deploy.client import free_port, start_server, wait_ready
 
 ROOT = Path(__file__).resolve().parents[1]
 CHROMIUM = "/usr/bin/chromium"
@@ -26,32 +24,6 @@ if not Path(CHROMIUM).exists():
     if os.environ.get("CI") == "true":
         raise RuntimeError(f"{CHROMIUM} is missing in CI: .ci/run must install Debian's chromium")
     pytest.skip(f"{CHROMIUM} not installed (run .ci/run or see README)", allow_module_level=True)
-
-
-@pytest.fixture(scope="module")
-def app_url(tmp_path_factory):
-    port = free_port()
-    log = open(tmp_path_factory.mktemp("server") / "streamlit.log", "w")
-    server = start_server(port, log=log)
-    try:
-        asyncio.run(wait_ready(f"ws://127.0.0.1:{port}/_stcore/stream"))
-        yield f"http://127.0.0.1:{port}"
-    finally:
-        server.terminate()
-        server.wait(timeout=10)
-        log.close()
-
-
-@pytest.fixture(scope="module")
-def browser(tmp_path_factory):
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as p:
-        context = p.chromium.launch_persistent_context(
-            str(tmp_path_factory.mktemp("profile")), executable_path=CHROMIUM, args=FLAGS,
-            viewport={"width": 1400, "height": 900})
-        yield context
-        context.close()
 
 
 def wait_idle(page) -> None:

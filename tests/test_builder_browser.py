@@ -10,7 +10,7 @@ import time
 import numpy as np
 import pytest
 
-from .test_browser import app_url, browser, keep, open_page, wait_idle, wait_url  # noqa: F401 (fixtures)
+from .test_browser import keep, open_page, wait_idle, wait_url
 
 pytestmark = pytest.mark.browser
 
@@ -91,14 +91,14 @@ def type_cell(page, table: int, row: int, column: int, text: str, redraws: bool 
     wait_idle(page)
 
 
-def builder(browser, app_url, lang="en"):  # noqa: F811 (fixtures as arguments)
+def builder(browser, app_url, lang="en"):
     page = open_page(browser, f"{app_url}/builder?lang={lang}", (1600, 1100))
     page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
     return page
 
 
 def test_the_exam_four_bar_is_built_by_dragging_and_typing_and_read_on_the_plans_page(
-        app_url, browser, tmp_path):  # noqa: F811
+        app_url, browser, tmp_path):
     started = time.perf_counter()
     page = builder(browser, app_url)
     drag_point(page, "D", 0.3 + 0j)  # the template's rocker pivot, to the exam's place
@@ -133,7 +133,7 @@ def test_the_exam_four_bar_is_built_by_dragging_and_typing_and_read_on_the_plans
     print(f"exam four-bar: built and read in {time.perf_counter() - started:.1f} s of browser time")
 
 
-def test_dragging_a_pivot_redraws_the_paths(app_url, browser, tmp_path):  # noqa: F811
+def test_dragging_a_pivot_redraws_the_paths(app_url, browser, tmp_path):
     page = builder(browser, app_url, "sr")
     paths = "() => Array.from(document.querySelector('.mehanizmi-plot').data[0].x).join()"
     before = page.evaluate(paths)
@@ -147,8 +147,8 @@ def test_dragging_a_pivot_redraws_the_paths(app_url, browser, tmp_path):  # noqa
     keep(shot)
 
 
-def test_a_drag_where_the_mechanism_cannot_close_says_why_and_keeps_the_drawing(
-        app_url, browser):  # noqa: F811
+def test_a_drag_the_loader_refuses_says_why_and_keeps_the_drawing(
+        app_url, browser):
     page = builder(browser, app_url)
     before = shapes(page)
     x, y = screen_of(page, before["D"].real, before["D"].imag)
@@ -163,7 +163,7 @@ def test_a_drag_where_the_mechanism_cannot_close_says_why_and_keeps_the_drawing(
     assert shapes(page) == before
 
 
-def test_a_click_on_the_paper_adds_a_frame_point_there(app_url, browser):  # noqa: F811
+def test_a_click_on_the_paper_adds_a_frame_point_there(app_url, browser):
     page = builder(browser, app_url)
     page.get_by_text("a frame point", exact=True).click()
     wait_idle(page)
@@ -176,7 +176,7 @@ def test_a_click_on_the_paper_adds_a_frame_point_there(app_url, browser):  # noq
 
 
 def test_a_typed_length_the_loader_refuses_gets_its_message_and_the_drawing_stays(
-        app_url, browser):  # noqa: F811
+        app_url, browser):
     page = builder(browser, app_url)
     before = shapes(page)
     page.get_by_role("tab", name="Members", exact=True).click()
