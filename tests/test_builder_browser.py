@@ -60,11 +60,13 @@ def drag_point(page, name: str, to: complex) -> None:
     wait_idle(page)
 
 
-def type_cell(page, table: int, row: int, column: int, text: str, redraws: bool = True) -> None:
+def type_cell(page, header: str, row: int, column: int, text: str, redraws: bool = True) -> None:
     """Type into a data editor's cell as a keyboard user does: click the row, Home and arrow to
     the column, Enter to edit, replace the value, Enter to commit. A fresh editor may drop
-    keys typed before it has focus (more so on a loaded machine): then Escape and again."""
-    grid = page.locator("[data-testid='stDataFrame']").nth(table)
+    keys typed before it has focus (more so on a loaded machine): then Escape and again. The
+    table is the one with a column named ``header`` (only the open tab's table is on the page,
+    once the tab switch's rerun is done)."""
+    grid = page.locator("[data-testid='stDataFrame']").filter(has_text=header)
     grid.wait_for(state="visible")
     wait_idle(page)
     for _ in range(5):
@@ -105,10 +107,10 @@ def test_the_exam_four_bar_is_built_by_dragging_and_typing_and_read_on_the_plans
     assert shapes(page)["D"] == pytest.approx(0.3 + 0j, abs=1e-15)  # snapped to millimetres
     page.get_by_role("tab", name="Members", exact=True).click()
     for row, length in enumerate(("0.1", "0.35", "0.25")):  # crank, coupler, rocker
-        type_cell(page, 1, row, 4, length)
+        type_cell(page, "second point", row, 4, length)
     page.get_by_role("tab", name="Points of members").click()
-    type_cell(page, 2, 0, 2, "0.2")  # M: 0.20 m along AB …
-    type_cell(page, 2, 0, 3, "0.05")  # … and 0.05 m to its left
+    type_cell(page, "along [m]", 0, 2, "0.2")  # M: 0.20 m along AB …
+    type_cell(page, "along [m]", 0, 3, "0.05")  # … and 0.05 m to its left
     exact = exam_four_bar()
     drawn = shapes(page)
     for name in ("A", "B", "M"):
@@ -180,7 +182,7 @@ def test_a_typed_length_the_loader_refuses_gets_its_message_and_the_drawing_stay
     page = builder(browser, app_url)
     before = shapes(page)
     page.get_by_role("tab", name="Members", exact=True).click()
-    type_cell(page, 1, 1, 4, "-0.35", redraws=False)
+    type_cell(page, "second point", 1, 4, "-0.35", redraws=False)
     page.get_by_text("the tables: members.3.length must be > 0, got -0.35").wait_for(timeout=30_000)
     assert page.get_by_text("The drawing shows the last mechanism").count() == 1
     assert shapes(page) == before

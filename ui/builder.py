@@ -102,6 +102,12 @@ def start_from(scene: Scene) -> None:
     replace(from_scene(scene, positions))
 
 
+def fold() -> None:
+    """Before another tab's table is shown: the tables start again from what they say now
+    (a closed tab's editor is gone, and its edits must not be)."""
+    replace(st.session_state.get("build_now", base()))
+
+
 def remember(doc: dict) -> None:
     st.session_state["build_now"] = doc
 
