@@ -17,10 +17,8 @@ import binascii
 import urllib.parse
 import zlib
 
-from .gears import GearTrain
 from .loader import MAX_BYTES, SceneError, parse_document
-from .rotor import Rotor
-from .writer import gears_to_toml, rotor_to_toml, to_toml
+from .writer import to_text
 
 PARAMETER = "s"
 VERSION = "1"
@@ -40,12 +38,6 @@ _DICTIONARY = (
     b'\n[guess]\n"A" = [0.05, 0.0866]\n"B" = [0.3, 0.25]\n"C" = [0.2, 0.1]\n'
     b'\n[scales]\nL = 0.01\nv = 0.1\na = 1.0\n'
 )
-
-
-def to_text(scene) -> str:
-    """The scene's TOML text, whatever its kind (linkage, rotor, gear train)."""
-    writer = {Rotor: rotor_to_toml, GearTrain: gears_to_toml}.get(type(scene), to_toml)
-    return writer(scene)
 
 
 def encode(scene) -> str:

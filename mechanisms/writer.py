@@ -177,3 +177,9 @@ def gears_to_toml(train: GearTrain) -> str:
         out += [f"{name} = [{m}, {_n(r)}]" for name, (m, r) in train.points.items()]
     out += _book(train.book, train.book_notes)
     return "\n".join(out) + "\n"
+
+
+def to_text(scene: Scene | Rotor | GearTrain) -> str:
+    """The TOML text of a scene of any kind (what a download, an upload and a link share)."""
+    writer = {Rotor: rotor_to_toml, GearTrain: gears_to_toml}.get(type(scene), to_toml)
+    return writer(scene)

@@ -7,7 +7,7 @@ import pandas as pd
 import streamlit as st
 
 from figures.builder import builder_figure
-from mechanisms import SceneError, parse_document, preset_ids
+from mechanisms import SceneError, preset_ids
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
 from mechanisms.schema import Scene
@@ -20,7 +20,7 @@ from ui.chapters import BUILDER, CHAPTERS
 from ui.export import chart
 from ui.i18n import t, title_of
 from ui.present import look
-from ui.scenes import scene_download
+from ui.scenes import read_upload, scene_download
 
 LINKAGE_PAGES = [c for c in CHAPTERS if c.file in (
     "pages/trajectories.py", "pages/velocity_plans.py", "pages/assur_groups.py",
@@ -139,9 +139,7 @@ def upload() -> None:
     if file is None:
         return
     try:
-        scene = parse_document(file.getvalue(), source=file.name)
-        if not isinstance(scene, Scene):
-            raise SceneError(t("scene.wrong_kind", file=file.name, kind="linkage"))
+        scene = read_upload(file, "linkage")
     except SceneError as exc:
         st.session_state["build_message"] = str(exc)
         return

@@ -232,8 +232,8 @@ def _drawn_branch(scene: Scene, group: Group, before, tol: float) -> int | None:
     they were drawn: a file or a link never needs a ±1 sign. An explicit ``[assembly]`` sign
     wins (old files); a group with no drawn point keeps the default (None)."""
     members = tuple(sorted(group.members))
-    drawn = {name: local for m in members for name, local in scene.members[m].points.items()
-             if name in scene.guess}
+    drawn = [(m, local, scene.guess[name]) for m in members
+             for name, local in scene.members[m].points.items() if name in scene.guess]
     if members in scene.assembly or not drawn or scene.guess_at is None:
         return None
     key = (repr((scene.frame, scene.members, scene.pairs, scene.guess, scene.guess_at,
@@ -244,9 +244,8 @@ def _drawn_branch(scene: Scene, group: Group, before, tol: float) -> int | None:
     miss = {}
     for sign in (1, -1):
         bodies = solve_dyad(build_loop(scene, group, sign), known, 0).bodies
-        miss[sign] = sum(abs(complex(np.ravel(bodies[m].position(local))[0]) - scene.guess[name]) ** 2
-                         for m in members for name, local in scene.members[m].points.items()
-                         if name in drawn)
+        miss[sign] = sum(abs(complex(np.ravel(bodies[m].position(local))[0]) - place) ** 2
+                         for m, local, place in drawn)
     best = -1 if miss[-1] < miss[1] else 1  # NaN (cannot close as drawn) keeps +1
     _BRANCHES[key] = best
     while len(_BRANCHES) > PREPARED_MAX * 8:

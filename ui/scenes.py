@@ -12,7 +12,7 @@ from mechanisms import Scene, SceneError, parse_document, preset_ids
 from mechanisms.gears import GearTrain
 from mechanisms.link import PARAMETER, decode
 from mechanisms.rotor import Rotor
-from mechanisms.writer import gears_to_toml, rotor_to_toml, to_toml
+from mechanisms.writer import to_text
 from ui.cache import preset
 from ui.i18n import current, note_of, source_of, t, title_of
 from ui.url import url_choice
@@ -21,6 +21,18 @@ UPLOADED = "upload"
 
 
 KINDS = {"linkage": Scene, "rotor": Rotor, "gears": GearTrain}
+
+
+def of_kind(scene, kind: str, source: str):
+    """``scene`` if it is of ``kind`` (a linkage on a linkage page), else SceneError."""
+    if not isinstance(scene, KINDS[kind]):
+        raise SceneError(t("scene.wrong_kind", file=source, kind=kind))
+    return scene
+
+
+def read_upload(file, kind: str):
+    """An uploaded file's scene of ``kind``; SceneError says what is wrong with it."""
+    return of_kind(parse_document(file.getvalue(), source=file.name), kind, file.name)
 
 
 @st.cache_resource(max_entries=64, show_spinner=False)
@@ -43,9 +55,7 @@ def _linked(kind: str):
     if not text:
         return None
     try:
-        scene = from_link(text)
-        if not isinstance(scene, KINDS[kind]):
-            raise SceneError(t("scene.wrong_kind", file="link", kind=kind))
+        scene = of_kind(from_link(text), kind, "link")
     except SceneError as exc:
         st.session_state.pop("linked_text", None)
         st.query_params.pop(PARAMETER, None)
@@ -61,10 +71,7 @@ def _read_upload(kind: str) -> None:
     if file is None:
         return
     try:
-        scene = parse_document(file.getvalue(), source=file.name)
-        if not isinstance(scene, KINDS[kind]):
-            raise SceneError(t("scene.wrong_kind", file=file.name, kind=kind))
-        st.session_state["uploaded_scene"] = scene
+        st.session_state["uploaded_scene"] = read_upload(file, kind)
         st.session_state["upload_error"] = None
         st.session_state["scene"] = UPLOADED
     except SceneError as exc:
@@ -125,8 +132,7 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
 
 def scene_download(scene) -> None:
     """The current scene, with the user's changes, as a TOML file that uploads again."""
-    writer = {Rotor: rotor_to_toml, GearTrain: gears_to_toml}.get(type(scene), to_toml)
-    text = writer(scene)
+    text = to_text(scene)
     st.download_button(t("scene.download"), text.encode("utf-8"), f"{scene.id}.toml",
                        mime="application/toml", on_click="ignore", icon=":material/download:")
 
