@@ -156,7 +156,11 @@ def load_any(name: str):
 
 def parse_document(data: bytes | str, source: str = "<scene>", default_id: str = "scene"):
     """Parse any scene kind: the top-level ``kind`` key chooses the schema."""
-    raw = _read_toml(data, source)
+    return build_document(_read_toml(data, source), source, default_id)
+
+
+def build_document(raw: dict, source: str = "<scene>", default_id: str = "scene"):
+    """A scene of any kind from its TOML table (a file's, or one made in code: a variant's)."""
     kind = raw.get("kind", "linkage")
     if kind == "rotor":
         from .rotor import parse_rotor

@@ -1,4 +1,5 @@
-"""Command line: ``python -m solvers list | solve | plan | structure | forces | link | bench``
+"""Command line: ``python -m solvers list | solve | plan | structure | forces | link | variants
+| bench``
 (see docs/cli.md).
 
 Exit codes: 0 done; 2 the scene or the command is wrong; 3 the mechanism cannot be in
@@ -8,11 +9,15 @@ the asked position (the message says why and where it can be).
 from __future__ import annotations
 
 import argparse
+import csv
 import json
 import sys
+from pathlib import Path
 
 from mechanisms import SceneError, Scene, load_any, load_preset, preset_ids
 
+from figures.sheets import sheets_html
+from mechanisms.codes import DEFAULT_SPREAD, Settings
 from mechanisms.gears import GearTrain
 from mechanisms.link import PARAMETER, decode, encode
 from mechanisms.rotor import Rotor
@@ -24,6 +29,8 @@ from .plans import build
 from .kinetostatics import analyse
 from .report import forces_json, gears_json, motion_json, plan_json, rotor_json
 from .structure import StructureError, decompose
+from . import variants
+from .variants import MAX_COUNT
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -70,12 +77,54 @@ def _parser() -> argparse.ArgumentParser:
                                     "in any page's link")
     p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")
     p.set_defaults(run=_link)
+    p = sub.add_parser("variants", help="exam and homework variants of a task, with answer keys")
+    p.add_argument("scene", help="the task's preset id (one with printed answers, e.g. zbirka-3.1)")
+    p.add_argument("--count", type=int, default=30, help=f"how many (1 … {MAX_COUNT})")
+    p.add_argument("--seed", type=int, default=1, help="the same seed gives the same variants")
+    p.add_argument("--spread", type=int, default=DEFAULT_SPREAD,
+                   help="± %% around the book's values (angles: ± spread/2 degrees)")
+    p.add_argument("--hold", action="append", default=[], metavar="GIVEN",
+                   help="keep a given at the book's value: its label (AB) or number (1, 2, …)")
+    p.add_argument("--json", action="store_true", help="print JSON (the same bytes for the same arguments)")
+    p.add_argument("--sheets", metavar="FILE.html", help="write the students' sheets and the key (A4)")
+    p.add_argument("--key", metavar="FILE.csv", help="write the answer key as CSV")
+    p.add_argument("--language", choices=("sr", "en"), default="sr", help="of the sheets")
+    p.set_defaults(run=_variants)
     p = sub.add_parser("bench", help="time the solver against a closed-form numpy baseline")
     p.add_argument("scene")
     p.add_argument("--steps", type=int, default=3600, help="positions per cycle")
     p.add_argument("--repeat", type=int, default=200, help="timed repetitions (median is shown)")
     p.set_defaults(run=_bench)
     return parser
+
+
+def _variants(args) -> int:
+    try:
+        held = variants.held_indices(variants.task(args.scene).givens, args.hold)
+        found = variants.generate(Settings(args.scene, args.seed, args.spread, held), args.count)
+    except variants.VariantError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    if found.shortfall:
+        print(f"note: {found.shortfall}", file=sys.stderr)
+    if args.sheets:
+        task = load_preset(args.scene)
+        title = (task.title_sr if args.language == "sr" and task.title_sr else task.title)
+        Path(args.sheets).write_text(sheets_html(found, title, args.language), encoding="utf-8")
+    if args.key:
+        with open(args.key, "w", newline="", encoding="utf-8") as f:
+            writer = csv.DictWriter(f, ["code", "quantity", "value", "unit", "tolerance"])
+            writer.writeheader()
+            writer.writerows(variants.key_rows(found))
+    if args.json:
+        return _print_json(variants.as_json(found))
+    for v in found.variants:
+        given = ", ".join(f"{g.label} = {value:g} {g.unit}".rstrip() for g, value in v.given)
+        print(f"{v.code}: {given}")
+        for a in v.key:
+            tol = "" if a.tolerance is None else f"  (± {a.tolerance:.2g})"
+            print(f"    {variants.symbol(a.key):16s} {a.value:12.6g} {a.unit}{tol}")
+    return 0
 
 
 def _scene_arguments(p: argparse.ArgumentParser) -> None:

@@ -1,0 +1,364 @@
+"""Exam and homework variants of a task, each a good exercise, with its answer key.
+
+A lecturer asks for N variants of a preset: the task's given numbers are drawn around the
+book's (``mechanisms.variation``) and each candidate is kept only when it is a good
+exercise — it assembles at the asked instant; no group is near a dead centre there; it is
+reached from the task's own numbers without passing a dead centre, so every group keeps
+the task's branch; it runs the whole cycle when the task's mechanism does; a gear train's
+teeth mesh and it solves; a rotor's corrections are not vanishingly small. The same
+settings give the same variants on any machine: candidate k draws from a generator seeded
+with (seed, k), and numbers are rounded before anything is solved.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import tomllib
+from collections import Counter
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from mechanisms import SceneError, load_preset
+from mechanisms.codes import MAX_SEED, Settings, code, parse
+from mechanisms.gears import GearTrain
+from mechanisms.loader import PRESETS, build_document
+from mechanisms.rotor import Rotor
+from mechanisms.schema import Scene
+from mechanisms.variation import Given, VariationError, apply, givens
+from mechanisms.writer import to_text
+
+from .balancing import balance, graphical_error
+from .diagnostics import Unsolvable, solve_instant
+from .kinematics import Motion, solve
+from .plans import build, readings
+from .report import exact_values
+from .structure import StructureError
+
+MAX_COUNT = 200  # a class of students; more is a mistake or an attack
+TRIES = 30  # candidates per asked variant before the ranges are declared too tight
+CONDITION = 10.0  # a group worse than this (or 3× the task's own) is too near a dead centre
+STEPS = 4  # the walk from the task's numbers to a variant's, to see the branch kept
+PRECISION_CM = 0.05  # a line drawn and read to half a millimetre
+SMALL_CORRECTION = 0.05  # a correction under 5 % of the largest unbalance teaches nothing
+
+
+class VariantError(ValueError):
+    """No variant can be made as asked; the message says which constraint failed most."""
+
+
+@dataclass(frozen=True)
+class Answer:
+    key: str  # as the preset's [book] names it: members.4.omega
+    value: float
+    unit: str
+    tolerance: float | None  # ± a drawing at the task's scales allows (None: computed only)
+
+
+@dataclass(frozen=True)
+class Variant:
+    code: str
+    index: int  # 1, 2, … in the set
+    scene: Scene | Rotor | GearTrain
+    given: tuple[tuple[Given, float], ...]  # each given of the task and its value here
+    key: tuple[Answer, ...]
+    drawn: dict[str, complex] = field(default_factory=dict)  # a linkage's points at its instant
+
+
+@dataclass
+class VariantSet:
+    settings: Settings
+    variants: list[Variant]
+    rejected: Counter = field(default_factory=Counter)  # why candidates were dropped
+    asked: int = 0
+
+    @property
+    def shortfall(self) -> str:
+        """Why fewer variants than asked were made ('' when all were)."""
+        if len(self.variants) >= self.asked:
+            return ""
+        return (f"only {len(self.variants)} of {self.asked} variants in "
+                f"{self.asked * TRIES} candidates; {_most_often(self.rejected)}")
+
+
+def _most_often(rejected: Counter) -> str:
+    reason, times = rejected.most_common(1)[0] if rejected else ("none was valid", 0)
+    return f"the constraint that failed most often: {reason} ({times} times)"
+
+
+@dataclass(frozen=True)
+class Task:
+    """A preset, read once: its document, its givens and what a variant must match."""
+
+    scene: Scene | Rotor | GearTrain
+    doc: dict
+    givens: tuple[Given, ...]
+    condition: float  # the task's own worst condition number at its instant (linkages)
+    cycle: bool  # the task's crank turns the whole way: its variants must too
+
+
+def task(preset_id: str) -> Task:
+    scene = load_preset(preset_id)
+    if not scene.book:
+        raise VariantError(f"{preset_id} prints no answers ([book] is empty): its variants "
+                           "would have no key")
+    doc = tomllib.loads((PRESETS / f"{preset_id}.toml").read_text(encoding="utf-8"))
+    condition, cycle = 1.0, False
+    if isinstance(scene, Scene):
+        condition = float(solve_instant(scene, None).condition[0])
+        if scene.driver.kind == "rotating":
+            turn = solve(scene, np.linspace(0, 2 * math.pi, 360, endpoint=False), order=0)
+            cycle = bool(turn.feasible.all())
+    return Task(scene, doc, tuple(givens(doc)), condition, cycle)
+
+
+def generate(settings: Settings, count: int) -> VariantSet:
+    """``count`` variants of the settings' task, in order; VariantError when none can be made
+    or the count is out of range."""
+    if not 1 <= count <= MAX_COUNT:
+        raise VariantError(f"count must be 1 … {MAX_COUNT}, got {count}")
+    if not 0 <= settings.seed <= MAX_SEED:
+        raise VariantError(f"the seed must be 0 … {MAX_SEED}, got {settings.seed}")
+    if not 1 <= settings.spread <= 50:
+        raise VariantError(f"the spread must be 1 … 50 %, got {settings.spread}")
+    base = task(settings.task)
+    held = {i for i in settings.held if i < len(base.givens)}
+    out = VariantSet(settings, [], asked=count)
+    seen = set()
+    for candidate in range(count * TRIES):
+        rng = np.random.default_rng([settings.seed, candidate])
+        values = [g.value if i in held else g.draw(rng, settings.spread)
+                  for i, g in enumerate(base.givens)]
+        if tuple(values) in seen:
+            out.rejected["the same numbers as another variant (the ranges are too narrow)"] += 1
+            continue
+        seen.add(tuple(values))
+        try:
+            scene, ended, drawn = _checked(base, values)
+        except (VariationError, Unsolvable, StructureError, SceneError, Rejected) as exc:
+            out.rejected[_reason(exc)] += 1
+            continue
+        index = len(out.variants) + 1
+        name = code(settings, index)
+        scene = _named(scene, base.scene, name)
+        out.variants.append(Variant(name, index, scene, tuple(zip(base.givens, ended)),
+                                    tuple(answers(scene, base.scene)), drawn))
+        if index == count:
+            break
+    if not out.variants:
+        raise VariantError(f"no valid variant of {settings.task} in {count * TRIES} candidates "
+                           f"at ± {settings.spread} %: {_most_often(out.rejected)}")
+    return out
+
+
+class Rejected(ValueError):
+    """A candidate that solves but is not a good exercise."""
+
+
+def _reason(exc: Exception) -> str:
+    if isinstance(exc, Rejected):
+        return str(exc)
+    if isinstance(exc, VariationError):
+        return "the gears do not mesh"
+    return "does not assemble at the asked instant"
+
+
+def _checked(base: Task, values: list[float]):
+    doc, ended = apply(base.doc, list(base.givens), values)
+    if isinstance(base.scene, Scene):
+        scene, motion = _linkage(base, doc, values)
+        return scene, ended, {n: complex(p.z[0]) for n, p in motion.points.items()}
+    scene = build_document(doc, source="variant")
+    if isinstance(scene, Rotor):
+        found = balance(scene)
+        largest = max(m.mass * m.radius for m in scene.masses)
+        if any(f.mass * f.radius < SMALL_CORRECTION * largest for f in found.corrections.values()):
+            raise Rejected("a correction mass is almost zero")
+        return scene, ended, {}
+    exact_values(scene)  # a train that does not solve raises Unsolvable
+    return scene, ended, {}
+
+
+def _linkage(base: Task, doc: dict, values: list[float]) -> tuple[Scene, Motion]:
+    """The variant's scene, reached from the task's numbers in STEPS steps, each drawn
+    where the last one was: a group that would have to pass a dead centre, or that ends on
+    the other branch than the task's signs give, is rejected."""
+    bound = max(CONDITION, 3 * base.condition)
+    start = [g.value for g in base.givens]
+    drawn = _positions(solve_instant(base.scene, None))
+    for k in range(1, STEPS + 1):
+        t = k / STEPS
+        step, _ = apply(base.doc, list(base.givens), [a + t * (b - a) for a, b in zip(start, values)])
+        step.pop("assembly", None)
+        step["guess"] = drawn
+        motion = solve_instant(build_document(step, source="variant"), None)
+        if motion.condition[0] > 10 * bound:
+            raise Rejected("passes a dead centre on the way from the task's numbers")
+        drawn = _positions(motion)
+    doc = dict(doc, guess=drawn) if base.scene.guess else doc
+    scene = build_document(doc, source="variant")
+    motion = solve_instant(scene, None)
+    if max(abs(complex(*drawn[n]) - p.z[0]) for n, p in motion.points.items() if n in drawn) > 1e-6:
+        raise Rejected("ends on another branch than the task's")
+    if motion.condition[0] > bound:
+        raise Rejected(f"a group is near a dead centre (condition number over {bound:.3g})")
+    if base.cycle:
+        turn = solve(scene, np.linspace(0, 2 * math.pi, 360, endpoint=False), order=0)
+        if not turn.feasible.all():
+            raise Rejected("the crank cannot turn the whole way, as the task's can")
+    return scene, motion
+
+
+def _positions(motion) -> dict[str, list[float]]:
+    return {n: [float(p.x[0]), float(p.y[0])] for n, p in motion.points.items()}
+
+
+def _named(scene, task_scene, name: str):
+    """The variant under its code: its own id and title, no printed values (they are the
+    book's, for the book's numbers)."""
+
+    title = f"{task_scene.title} — variant {name}"
+    title_sr = f"{task_scene.title_sr} — varijanta {name}" if task_scene.title_sr else ""
+    note = f"Variant {name} of {task_scene.source.lower()}: the task's given numbers changed."
+    note_sr = (f"Varijanta {name}: zadatak sa izmenjenim zadatim vrednostima."
+               if task_scene.title_sr else "")
+    return dataclasses.replace(scene, id=f"variant-{name}", title=title, title_sr=title_sr,
+                               note=note, note_sr=note_sr, book={}, book_notes={})
+
+
+UNITS = {"omega": "s⁻¹", "epsilon": "s⁻²", "v": "m/s", "a": "m/s²", "s": "m", "x": "m", "y": "m",
+         "mass": "kg", "radius": "m", "angle_deg": "°", "magnitude": "N", "torque": "N·m",
+         "force": "N", "power": "W", "moment": "N·m"}
+
+
+def unit_of(key: str) -> str:
+    """The unit of a result key (members.4.omega → s⁻¹; ratios are pure numbers)."""
+    if key.startswith("ratios."):
+        return "–"
+    last = key.rsplit(".", 1)[-1]
+    return UNITS.get(last.removesuffix("_zhukovsky").removesuffix("_power_balance"), "")
+
+
+def answers(scene, task_scene) -> list[Answer]:
+    """The task's asked quantities (its [book] keys), exact for ``scene``, with the error a
+    drawing at the task's scales allows where the book reads it off a plan or a polygon."""
+    exact = exact_values(scene)
+    tolerance = _tolerances(scene, task_scene)
+    return [Answer(key, exact[key], unit_of(key), tolerance.get(key))
+            for key in task_scene.book if key in exact]
+
+
+def _tolerances(scene, task_scene) -> dict[str, float]:
+    if isinstance(scene, Rotor):
+        return _rotor_tolerances(scene)
+    if not isinstance(scene, Scene) or not task_scene.scales:
+        return {}
+    scales = {"L": 0.1, "v": 1.0, "a": 10.0, **task_scene.scales}
+    out = {}
+    for point in scene.point_names:
+        out[f"points.{point}.v"] = PRECISION_CM * scales["v"]
+        out[f"points.{point}.a"] = PRECISION_CM * scales["a"]
+    for pair in scene.pairs:
+        out[f"sliders.{pair.name}.v"] = PRECISION_CM * scales["v"]
+        out[f"sliders.{pair.name}.a"] = PRECISION_CM * scales["a"]
+    if "F" in scales:
+        for a in scene.members:
+            for b in [1, *scene.members]:
+                out[f"reactions.{a}-{b}.magnitude"] = PRECISION_CM * scales["F"]
+                out[f"reactions.{b}-{a}.magnitude"] = PRECISION_CM * scales["F"]
+    try:
+        plans = build(solve_instant(scene, None))
+    except (Unsolvable, StructureError, NotImplementedError, KeyError):
+        return out  # a class III group: its plans are not drawn here
+    for r in readings(plans, scales, PRECISION_CM):
+        name, member = r.symbol.split("_", 1)
+        quantity = {"\\omega": "omega", "\\varepsilon": "epsilon"}.get(name)
+        if quantity:
+            out[f"members.{member.strip('{}')}.{quantity}"] = r.uncertainty
+    return out
+
+
+def _rotor_tolerances(rotor: Rotor) -> dict[str, float]:
+    """As the rotor page: a polygon drawn at a scale that fits 10 cm, read to half a mm."""
+    found = balance(rotor)
+    out = {}
+    sizes = [m.mass * m.radius for m in rotor.masses]
+    scale = max(sizes) / 0.1  # kg·m per metre of drawing
+    for plane, f in found.corrections.items():
+        length, angle = graphical_error(f.mass * f.radius, scale, PRECISION_CM / 100,
+                                        vectors=len(sizes) + 1)
+        out[f"corrections.{plane}.mass"] = length / f.radius
+        out[f"corrections.{plane}.radius"] = length / f.mass
+        out[f"corrections.{plane}.angle_deg"] = math.degrees(angle)
+    return out
+
+
+def from_code(text: str) -> Variant:
+    """The variant a student's code names (regenerated: the code holds its settings)."""
+    settings, index = parse(text)
+    found = generate(settings, index)
+    if len(found.variants) < index:
+        raise VariantError(f"code {text}: its set has only {len(found.variants)} variants")
+    return found.variants[index - 1]
+
+
+def held_indices(givens_: tuple[Given, ...], names: list[str]) -> frozenset[int]:
+    """Givens to hold at the book's values, named by label (AB, ω₂) or by number (1, 2, …)."""
+    labels = [g.label for g in givens_]
+    out = set()
+    for name in names:
+        if name.isdigit() and 1 <= int(name) <= len(labels):
+            out.add(int(name) - 1)
+        elif name in labels:
+            out.add(labels.index(name))
+        else:
+            raise VariantError(f"no given named {name!r}; the task's givens are "
+                               + ", ".join(f"{i + 1} {label}" for i, label in enumerate(labels)))
+    return frozenset(out)
+
+
+def as_json(found: VariantSet) -> dict:
+    """The set as plain data: the same settings print the same bytes."""
+    s = found.settings
+    return {"task": s.task, "seed": s.seed, "spread_percent": s.spread,
+            "held": sorted(s.held),
+            "variants": [{"code": v.code, "scene": to_text(v.scene),
+                          "given": {g.label: {"value": value, "unit": g.unit} for g, value in v.given},
+                          "key": {a.key: a.value for a in v.key},
+                          "units": {a.key: a.unit for a in v.key},
+                          "tolerance": {a.key: a.tolerance for a in v.key}}
+                         for v in found.variants]}
+
+
+def key_rows(found: VariantSet) -> list[dict]:
+    """One row per answer of every variant: the lecturer's key as a table (CSV)."""
+    return [{"code": v.code, "quantity": a.key, "value": a.value, "unit": a.unit,
+             "tolerance": "" if a.tolerance is None else a.tolerance}
+            for v in found.variants for a in v.key]
+
+
+SYMBOLS = {"omega": "ω", "epsilon": "ε", "v": "v", "a": "a", "s": "s"}
+SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def symbol(key: str) -> str:
+    """A result key as the course writes the quantity: points.E.v → v_E, members.3.omega →
+    ω₃, reactions.1-2.magnitude → F₁₂, corrections.I.mass → m_I, ratios.2-7 → i₂₇."""
+    parts = key.split(".")
+    head, last = parts[0], parts[-1]
+    if head == "points":
+        return f"{last}_{parts[1]}"
+    if head == "members":
+        return SYMBOLS.get(last, last) + parts[1].translate(SUBSCRIPT)
+    if head == "sliders":
+        return f"{last}_rel({parts[1]})"
+    if head == "reactions":
+        return "F" + parts[1].replace("-", "").translate(SUBSCRIPT)
+    if head == "ratios":
+        return "i" + parts[1].replace("-", "").translate(SUBSCRIPT)
+    if head == "corrections":
+        return ("φ" if last == "angle_deg" else last[0]) + "_" + parts[1]
+    if head == "driving":
+        return {"torque": "M_p", "force": "F_p", "power": "P"}.get(last, last)
+    return key
