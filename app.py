@@ -2,7 +2,7 @@
 
 import streamlit as st
 
-from ui.chapters import BUILDER, CHAPTERS
+from ui.chapters import BUILDER, CHAPTERS, VARIANTS
 from ui.i18n import language_picker, t
 from ui.present import projector_switch
 
@@ -10,7 +10,7 @@ from ui.present import projector_switch
 def home() -> None:
     st.title("Mehanizmi")
     st.write(t("app.intro"))
-    for chapter in (BUILDER, *CHAPTERS):
+    for chapter in (BUILDER, *CHAPTERS, VARIANTS):
         with st.container(border=True):
             st.page_link(chapter.file, label=t(chapter.title), icon=chapter.icon)
             st.write(t(chapter.summary))
@@ -20,6 +20,6 @@ st.set_page_config(page_title="Mehanizmi", page_icon=":material/settings:", layo
 language_picker()
 projector_switch()
 pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
-pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER)]
+pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER, VARIANTS)]
 pages.append(st.Page("pages/textbook_check.py", title=t("check.title"), icon=":material/fact_check:"))
 st.navigation(pages).run()

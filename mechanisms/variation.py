@@ -28,7 +28,7 @@ class Given:
 
     path: tuple  # keys and indices into the scene document
     value: float  # the task's own value
-    kind: str  # "length", "angle", "teeth" (a whole count) or "value" (two significant digits)
+    kind: str  # "length", "angle", "teeth" (a whole count), "speed" (the driver's) or "value"
     unit: str
     label: str  # as a task names it: AB, x_A, φ₂, ω₂, m₃, z₅ …
 
@@ -42,6 +42,8 @@ class Given:
         digits = math.floor(math.log10(abs(self.value)))
         if self.kind == "length":
             return max(0.001, 10.0 ** (digits - 2))
+        if self.kind == "speed":  # on the pages' ω₂ (0.5 s⁻¹) and v (0.1 m/s) slider steps
+            return max(10.0 ** (digits - 1), 0.5 if self.unit == "s⁻¹" else 0.1)
         return 10.0 ** (digits - 1)
 
     def bounds(self, spread: float) -> tuple[float, float]:
@@ -83,11 +85,11 @@ def _linkage(doc: dict) -> list[Given]:
     driver = doc["driver"]
     if driver["type"] == "rotating":
         out += [Given(("driver", "at"), driver["at"], "angle", "°", "φ₂"),
-                Given(("driver", "omega"), driver["omega"], "value", "s⁻¹", "ω₂"),
+                Given(("driver", "omega"), driver["omega"], "speed", "s⁻¹", "ω₂"),
                 Given(("driver", "epsilon"), driver.get("epsilon", 0.0), "value", "s⁻²", "ε₂")]
     else:
         out += [Given(("driver", "at"), driver["at"], "length", "m", "s₂"),
-                Given(("driver", "velocity"), driver["velocity"], "value", "m/s", "v₂"),
+                Given(("driver", "velocity"), driver["velocity"], "speed", "m/s", "v₂"),
                 Given(("driver", "acceleration"), driver.get("acceleration", 0.0), "value", "m/s²", "a₂")]
     for number, m in doc.get("members", {}).items():
         out += [Given(("members", number, "mass"), m.get("mass", 0.0), "value", "kg", f"m{number}"),

@@ -38,7 +38,8 @@ from .structure import StructureError
 
 MAX_COUNT = 200  # a class of students; more is a mistake or an attack
 TRIES = 30  # candidates per asked variant before the ranges are declared too tight
-CONDITION = 10.0  # a group worse than this (or 3× the task's own) is too near a dead centre
+CONDITION = 10.0  # a group worse than this (or than OWN × the task's own) is near a dead centre
+OWN = 3.0  # a class III group's condition number is tens already in the book's drawings
 STEPS = 4  # the walk from the task's numbers to a variant's, to see the branch kept
 PRECISION_CM = 0.05  # a line drawn and read to half a millimetre
 SMALL_CORRECTION = 0.05  # a correction under 5 % of the largest unbalance teaches nothing
@@ -184,7 +185,7 @@ def _linkage(base: Task, doc: dict, values: list[float]) -> tuple[Scene, Motion]
     """The variant's scene, reached from the task's numbers in STEPS steps, each drawn
     where the last one was: a group that would have to pass a dead centre, or that ends on
     the other branch than the task's signs give, is rejected."""
-    bound = max(CONDITION, 3 * base.condition)
+    bound = max(CONDITION, OWN * base.condition)
     start = [g.value for g in base.givens]
     drawn = _positions(solve_instant(base.scene, None))
     for k in range(1, STEPS + 1):

@@ -29,6 +29,8 @@ CHAPTERS = (
 
 # not a chapter: where a student's own mechanism is made, for every linkage chapter
 BUILDER = Chapter("pages/builder.py", "build.title", "build.summary", ":material/draw:")
+# for lecturers: a task's variants with keys and sheets; students open theirs by its code
+VARIANTS = Chapter("pages/variants.py", "var.title", "var.summary", ":material/quiz:")
 
 
 def chapter(file: str) -> Chapter:

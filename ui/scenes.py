@@ -10,10 +10,13 @@ import streamlit as st
 
 from mechanisms import Scene, SceneError, parse_document, preset_ids
 from mechanisms.gears import GearTrain
-from mechanisms.link import PARAMETER, decode
+from mechanisms.codes import parse
+from mechanisms.link import PARAMETER, decode, encode
 from mechanisms.rotor import Rotor
 from mechanisms.writer import to_text
+from solvers.variants import VariantError, from_code
 from ui.cache import preset
+from ui.chapters import page_for
 from ui.i18n import current, note_of, source_of, t, title_of
 from ui.url import url_choice
 
@@ -47,9 +50,44 @@ def link_choice(text: str) -> str:
     return "link-" + hashlib.sha1(text.encode("ascii", "replace")).hexdigest()[:8]
 
 
+VARIANT = "v"  # ?v=3.1-S42-07K: a student's variant, by the code on their sheet
+
+
+@st.cache_resource(max_entries=64, show_spinner=False)
+def variant_link(code: str) -> tuple[str, str]:
+    """(the link text of the variant a code names, the page it belongs on); SceneError or
+    VariantError when the code is damaged or names no variant."""
+    variant = from_code(code)
+    return encode(variant.scene), page_for(parse(code)[0].task)
+
+
+def _open_variant(kind: str) -> None:
+    """A variant code in the URL becomes its scene's link (``s=``), on the page of its kind;
+    a damaged code, or one for another chapter, says so."""
+    code = st.query_params.get(VARIANT)
+    if not code:
+        return
+    st.query_params.pop(VARIANT, None)
+    try:
+        with st.spinner(t("var.opening", code=code)):
+            text, page = variant_link(code)
+    except (SceneError, VariantError) as exc:
+        st.session_state["link_error"] = str(exc)
+        return
+    try:
+        of_kind(from_link(text), kind, code)
+    except SceneError:
+        st.session_state["link_error"] = t("var.other_page", code=code)
+        st.page_link(page, label=t("check.open"), icon=":material/open_in_new:",
+                     query_params={VARIANT: code})
+        return
+    st.query_params[PARAMETER] = text
+
+
 def _linked(kind: str):
     """(option, scene, opened now) for the link's scene, or None; a damaged link says why and
     is dropped, and the page goes on with its default scene."""
+    _open_variant(kind)
     in_url = st.query_params.get(PARAMETER)
     text = in_url or st.session_state.get("linked_text")
     if not text:

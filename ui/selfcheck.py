@@ -29,14 +29,25 @@ def grade(typed: float, quantity: Quantity, tolerance: float = 0.005) -> tuple[s
     return "off", relative
 
 
+def _open_code(key: str) -> None:
+    """A typed variant code opens that variant on this page (ui.scenes reads ``v=``)."""
+    code = st.session_state[key].strip()
+    if code:
+        st.query_params["v"] = code
+        st.session_state[key] = ""
+
+
 def answer_box(quantities: list[Quantity], key: str) -> None:
-    """Pick a quantity, type a value (0,25 or 0.25), see the verdict. Filled only while open:
-    closed, it costs a rerun nothing."""
+    """Pick a quantity, type a value (0,25 or 0.25), see the verdict; or first type the code
+    of a variant from a sheet to open that variant. Filled only while open: closed, it
+    costs a rerun nothing."""
     box = st.expander(t("self.title"), icon=":material/school:", key=f"{key}_open",
                       on_change="rerun")
     if not box.open:
         return
     with box:
+        st.text_input(t("self.code"), key=f"{key}_code", placeholder="3.1-S42-07K",
+                      on_change=_open_code, args=(f"{key}_code",), help=t("self.code_help"))
         labels = [q.label for q in quantities]
         choice = st.selectbox(t("self.quantity"), range(len(labels)), format_func=labels.__getitem__,
                               key=f"{key}_quantity")

@@ -1,0 +1,84 @@
+"""Variants for exams and homework: a task's numbers varied, each variant checked to be a
+good exercise, with its answer key, printable sheets and a code each student checks with."""
+
+from __future__ import annotations
+
+import json
+
+import pandas as pd
+import streamlit as st
+
+from figures.sheets import sheets_html
+from mechanisms import load_preset, preset_ids
+from mechanisms.codes import DEFAULT_SPREAD, MAX_SEED, Settings
+from solvers.variants import MAX_COUNT, VariantError, VariantSet, as_json, generate, key_rows, symbol, task
+from ui.chapters import VARIANTS, page_for
+from ui.i18n import current, num, t, title_of
+
+
+@st.cache_resource(max_entries=8, show_spinner=False)
+def made(settings: Settings, count: int) -> VariantSet:
+    return generate(settings, count)
+
+
+@st.cache_resource(show_spinner=False)
+def tasks() -> list[str]:
+    """The presets that print answers: a variant's key is their [book] quantities."""
+    return [pid for pid in preset_ids() if load_preset(pid).book]
+
+
+st.title(f"{VARIANTS.icon} {t(VARIANTS.title)}")
+st.write(t("var.intro"))
+choice = st.selectbox(t("var.task"), tasks(), key="var_task",
+                      format_func=lambda pid: f"{pid} — {title_of(load_preset(pid))}")
+givens = task(choice).givens
+c1, c2, c3, c4 = st.columns(4)
+count = c1.number_input(t("var.count"), 1, MAX_COUNT, 30, key="var_count")
+seed = c2.number_input(t("var.seed"), 0, MAX_SEED, 1, key="var_seed")
+spread = c3.slider(t("var.spread"), 1, 50, DEFAULT_SPREAD, key="var_spread")
+SHEET_LANGUAGES = {"sr": "var.language_sr", "en": "var.language_en"}
+language = c4.radio(t("var.language"), tuple(SHEET_LANGUAGES), index=0 if current() != "en" else 1,
+                    format_func=lambda code: t(SHEET_LANGUAGES[code]), key="var_language",
+                    horizontal=True)
+held = st.multiselect(t("var.hold"), range(len(givens)), key=f"var_hold_{choice}",
+                      format_func=lambda i: f"{givens[i].label} = {num(givens[i].value, 6)} {givens[i].unit}")
+settings = Settings(choice, int(seed), int(spread), frozenset(held))
+
+if st.button(t("var.make"), type="primary", icon=":material/casino:"):
+    try:
+        with st.spinner(t("var.making")):
+            st.session_state["var_made"] = (settings, int(count), made(settings, int(count)))
+    except VariantError as exc:
+        st.session_state.pop("var_made", None)
+        st.error(t("var.none", reason=str(exc)))
+
+result = st.session_state.get("var_made")
+if result is not None and result[:2] == (settings, int(count)):
+    found = result[2]
+    if found.shortfall:
+        st.warning(t("var.short", reason=found.shortfall))
+    page = page_for(choice).removeprefix("pages/").removesuffix(".py")
+    st.dataframe(pd.DataFrame([{
+        t("var.col_code"): v.code,
+        **{g.label: f"{num(value, 6)} {g.unit}".strip() for g, value in v.given},
+        t("var.col_link"): f"/{page}?v={v.code}"} for v in found.variants]),
+        hide_index=True, column_config={t("var.col_link"): st.column_config.LinkColumn()})
+    title = load_preset(choice)
+    title = title.title_sr if language == "sr" and title.title_sr else title.title
+    key = pd.DataFrame(key_rows(found))
+    box = st.expander(t("var.key"), key="var_key_open", on_change="rerun")
+    if box.open:  # filled only while open
+        with box:
+            st.dataframe(key.assign(quantity=key["quantity"].map(symbol)), hide_index=True)
+    stem = f"{choice}-S{settings.seed}"
+    d1, d2, d3 = st.columns(3)
+    d1.download_button(t("var.sheets"), lambda: sheets_html(found, title, language).encode("utf-8"),
+                       f"{stem}-sheets.html", mime="text/html", on_click="ignore",
+                       icon=":material/print:")
+    d2.download_button(t("var.key_csv"), lambda: key.to_csv(index=False).encode("utf-8"),
+                       f"{stem}-key.csv", mime="text/csv", on_click="ignore",
+                       icon=":material/download:")
+    d3.download_button("JSON", lambda: json.dumps(as_json(found), indent=1, ensure_ascii=False).encode("utf-8"),
+                       f"{stem}.json", mime="application/json", on_click="ignore",
+                       icon=":material/data_object:")
+    st.caption(t("var.students"))
