@@ -38,6 +38,7 @@ h1 { font-size: 15pt; margin: 0 0 4mm; } h2 { font-size: 12pt; margin: 5mm 0 2mm
 table { border-collapse: collapse; } td, th { border: 1px solid #888; padding: 1mm 3mm; text-align: left; }
 td.n { text-align: right; font-variant-numeric: tabular-nums; }
 .answer { width: 35mm; } .small { font-size: 9pt; color: #333; }
+.tasks { display: flex; gap: 10mm; align-items: flex-start; }
 """
 
 
@@ -129,14 +130,14 @@ def sheets_html(found: VariantSet, title: str, language: str = "sr") -> str:
         parts.append(f'<section class="sheet"><div class="code">{_e(v.code)}</div>')
         parts.append(f"<h1>{_e(title)} — {_e(w['variant'])} {v.index}</h1>")
         parts.append(f'<div class="small">{_e(w["name"])}</div><div class="name"></div>')
-        parts.append(f"<h2>{_e(w['given'])}</h2><table>")
+        parts.append(f"<div class=\"tasks\"><div><h2>{_e(w['given'])}</h2><table>")
         for g, value in v.given:
             parts.append(f'<tr><td>{_e(g.label)}</td><td class="n">{_e(_n(value, language=language))}</td>'
                          f"<td>{_e(g.unit)}</td></tr>")
-        parts.append(f"</table><h2>{_e(w['find'])}</h2><table>")
+        parts.append(f"</table></div><div><h2>{_e(w['find'])}</h2><table>")
         for a in v.key:
             parts.append(f'<tr><td>{_e(symbol(a.key))}</td><td class="answer"></td><td>{_e(a.unit)}</td></tr>')
-        parts.append("</table>")
+        parts.append("</table></div></div>")
         if v.drawn:
             scale = length_scale(v.scene, v.drawn)
             parts.append(f"<h2>{_e(w['drawing'].format(u=_n(scale, language=language)))}</h2>")

@@ -29,19 +29,19 @@ def tasks() -> list[str]:
 
 st.title(f"{VARIANTS.icon} {t(VARIANTS.title)}")
 st.write(t("var.intro"))
-choice = st.selectbox(t("var.task"), tasks(), key="var_task",
-                      format_func=lambda pid: f"{pid} — {title_of(load_preset(pid))}")
+titles = {pid: f"{pid} — {title_of(load_preset(pid))}" for pid in tasks()}  # in this language
+choice = st.selectbox(t("var.task"), tasks(), key="var_task", format_func=titles.__getitem__)
 givens = task(choice).givens
 c1, c2, c3, c4 = st.columns(4)
 count = c1.number_input(t("var.count"), 1, MAX_COUNT, 30, key="var_count")
 seed = c2.number_input(t("var.seed"), 0, MAX_SEED, 1, key="var_seed")
 spread = c3.slider(t("var.spread"), 1, 50, DEFAULT_SPREAD, key="var_spread")
-SHEET_LANGUAGES = {"sr": "var.language_sr", "en": "var.language_en"}
-language = c4.radio(t("var.language"), tuple(SHEET_LANGUAGES), index=0 if current() != "en" else 1,
-                    format_func=lambda code: t(SHEET_LANGUAGES[code]), key="var_language",
-                    horizontal=True)
+sheet_languages = {"sr": t("var.language_sr"), "en": t("var.language_en")}
+language = c4.radio(t("var.language"), tuple(sheet_languages), index=0 if current() != "en" else 1,
+                    format_func=sheet_languages.__getitem__, key="var_language", horizontal=True)
+named = [f"{g.label} = {num(g.value, 6)} {g.unit}".strip() for g in givens]
 held = st.multiselect(t("var.hold"), range(len(givens)), key=f"var_hold_{choice}",
-                      format_func=lambda i: f"{givens[i].label} = {num(givens[i].value, 6)} {givens[i].unit}")
+                      format_func=named.__getitem__)
 settings = Settings(choice, int(seed), int(spread), frozenset(held))
 
 if st.button(t("var.make"), type="primary", icon=":material/casino:"):
