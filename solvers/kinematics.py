@@ -257,7 +257,11 @@ def _march_span(scene: Scene, at: np.ndarray, a0: float) -> tuple[float, float]:
     """The driver range a class III march covers. For a crank: a whole turn each way from
     the sketch's instant, whatever is asked (every angle is reached along the branch, see
     triads._onto_march). For a slider: the requested values and the instant, widened to
-    whole multiples of the links' total length, so that values nearby reuse the march."""
+    whole multiples of the links' total length, so that values nearby reuse the march.
+    Asked only at the sketch's instant itself (a variant checked where it is drawn), there
+    is nothing to march over."""
+    if np.all(at == a0):
+        return a0, a0
     if scene.driver.kind == "rotating":
         return a0 - 2 * math.pi, a0 + 2 * math.pi
     lo, hi = float(np.min(at)), float(np.max(at))
