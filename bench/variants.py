@@ -21,7 +21,7 @@ TASKS = ("zbirka-3.1", "zbirka-2.1", "zbirka-5.4", "analitika-2.1", "zbirka-4.2"
 
 def main(count: int) -> None:
     print(f"{count} variants per task, seed 1, ± 20 % (candidates allowed: {count * TRIES})\n")
-    print(f"| task | variants | candidates refused | variants, s | sheets, s | sheets, kB | refused most for |")
+    print("| task | variants | candidates refused | variants, s | sheets, s | sheets, kB | refused most for |")
     print("|---|---:|---:|---:|---:|---:|---|")
     for pid in TASKS:
         start = time.perf_counter()

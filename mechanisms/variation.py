@@ -121,9 +121,10 @@ def _rotor(doc: dict) -> list[Given]:
 def _gears(doc: dict) -> list[Given]:
     """A gear's size varies as a whole count: its teeth, or for a train given by radii, its
     radius in millimetres, so that the centre distances of a planetary stage close exactly."""
-    out = []
+    out, seen = [], set()
     for member, rim in rims(doc):
-        label = f"z{member}" if rim[0] == "teeth" else f"R{member}"
+        label = (f"z{member}" if rim[0] == "teeth" else f"R{member}") + ("′" if member in seen else "")
+        seen.add(member)  # a member's second rim is primed, as the book writes R₁₀ and R′₁₀
         unit = "" if rim[0] == "teeth" else "mm"
         out.append(Given(("rims", member, rim), rim[1], "teeth", unit, label))
     for i, spec in enumerate(doc.get("inputs", [])):
@@ -252,15 +253,16 @@ def _close_stages(doc: dict, sizes: dict, old_axes: dict[int, float]) -> dict[in
                 axes[b] = axes[a] + side * distance
             elif b in axes and a not in axes:
                 axes[a] = axes[b] - side * distance
-            elif a in axes and b in axes and abs(axes[b] - axes[a]) != distance:
-                free = [r for r in rim if r not in placed]
-                if not free:
-                    raise VariationError(f"gears {a} and {b} cannot mesh: their axes are "
-                                         f"{abs(axes[b] - axes[a]) * unit:.4g} m apart")
-                _resize(sizes, free[-1], rim, abs(axes[b] - axes[a]), internal)
+            elif a in axes and b in axes:
+                if abs(axes[b] - axes[a]) != distance:
+                    free = [r for r in rim if r not in placed]
+                    if not free:
+                        raise VariationError(f"gears {a} and {b} cannot mesh: their axes are "
+                                             f"{abs(axes[b] - axes[a]) * unit:.4g} m apart")
+                    _resize(sizes, free[-1], rim, abs(axes[b] - axes[a]), internal)
             else:
                 continue
-            placed.update(rim)
+            placed.update(rim)  # these rims now set distances: no later stage resizes them
     return axes
 
 

@@ -244,7 +244,7 @@ def unit_of(key: str) -> str:
 def answers(scene, task_scene) -> list[Answer]:
     """The task's asked quantities (its [book] keys), exact for ``scene``, with the error a
     drawing at the task's scales allows where the book reads it off a plan or a polygon."""
-    exact = exact_values(scene)
+    exact = exact_values(dataclasses.replace(scene, book=task_scene.book))  # a train's asked ratios
     tolerance = _tolerances(scene, task_scene)
     return [Answer(key, exact[key], unit_of(key), tolerance.get(key))
             for key in task_scene.book if key in exact]

@@ -16,6 +16,7 @@ from solvers import variants
 from solvers.balancing import balance
 from solvers.diagnostics import solve_instant
 from solvers.kinematics import solve
+from solvers.report import exact_values
 from solvers.structure import decompose
 from solvers.variants import VariantError, as_json, from_code, generate, task
 
@@ -82,6 +83,14 @@ def test_every_variant_is_a_good_exercise(pid):
             assert cycle.feasible.all(), v.code
 
 
+def test_keys_are_the_solvers_values_for_every_asked_quantity(set_3_1):
+    for v in set_3_1.variants:
+        exact = exact_values(v.scene)
+        assert [a.key for a in v.key] == list(load_preset("zbirka-3.1").book)
+        assert all(a.value == exact[a.key] for a in v.key)
+        assert {a.unit for a in v.key} <= {"m/s", "m/s²", "s⁻¹", "s⁻²"}
+
+
 def test_keys_equal_an_independent_computation_by_finite_differences(set_3_1):
     """v_E and ω₃ of each variant from positions at φ₂ ± h, never from the velocity solver."""
     for v in set_3_1.variants[:4]:
@@ -110,6 +119,7 @@ def test_gear_variants_mesh_with_whole_teeth():
                 if not mesh.bevel:
                     distance = abs(ra - rb) if mesh.internal is not None else ra + rb
                     assert abs(a.axis - b.axis) == pytest.approx(distance, abs=1e-12), (v.code, mesh)
+            assert {a.key for a in v.key} == set(load_preset(pid).book)  # ratios too
             if pid == "zbirka-6.10":  # given by teeth: every radius a whole number of teeth
                 for mesh in train.meshes:
                     assert all(abs(r / 0.002 - round(r / 0.002)) < 1e-9 for r in mesh.radii)

@@ -72,12 +72,12 @@ def _open_variant(kind: str) -> None:
         with st.spinner(t("var.opening", code=code)):
             text, page = variant_link(code)
     except (SceneError, VariantError) as exc:
-        st.session_state["link_error"] = str(exc)
+        st.session_state["code_error"] = str(exc)
         return
     try:
         of_kind(from_link(text), kind, code)
     except SceneError:
-        st.session_state["link_error"] = t("var.other_page", code=code)
+        st.session_state["code_error"] = t("var.other_page", code=code)
         st.page_link(page, label=t("check.open"), icon=":material/open_in_new:",
                      query_params={VARIANT: code})
         return
@@ -102,6 +102,12 @@ def _linked(kind: str):
     opened = bool(in_url) and st.session_state.get("linked_text") != in_url
     st.session_state["linked_text"] = text
     return link_choice(text), scene, opened
+
+
+def _forget_errors() -> None:
+    """Another scene picked: the last link's or code's error no longer applies."""
+    st.session_state.pop("link_error", None)
+    st.session_state.pop("code_error", None)
 
 
 def _read_upload(kind: str) -> None:
@@ -148,8 +154,10 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
 
     if st.session_state.get("link_error"):
         st.error(t("scene.bad_link", reason=st.session_state["link_error"]))
+    if st.session_state.get("code_error"):
+        st.error(t("var.bad_code", reason=st.session_state["code_error"]))
     choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", default=default,
-                        format_func=label, on_change=st.session_state.pop, args=("link_error", None))
+                        format_func=label, on_change=_forget_errors)
     if linked is not None and choice == linked[0]:
         scene = linked[1]
         st.query_params[PARAMETER] = st.session_state["linked_text"]
