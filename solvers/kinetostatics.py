@@ -161,11 +161,24 @@ class Kinetostatics:
 
     @property
     def disagreement(self) -> np.ndarray:
-        """The largest difference between the three M_p, relative to ``scale``."""
+        """The largest difference between the three M_p, relative to ``scale`` — or, where the
+        loads do almost no work (their points stand still, as a slider held at the crank's
+        pivot), to a millionth of their moments about the driver: round-off, not the
+        methods, is then all the three can differ by."""
         spread = np.maximum(np.abs(self.driving - self.driving_power),
                             np.abs(self.driving - self.driving_lever))
         with np.errstate(invalid="ignore", divide="ignore"):
-            return spread / np.maximum(self.scale, np.finfo(float).tiny)
+            return spread / np.maximum(self.scale, 1e-6 * self._load_size() + np.finfo(float).tiny)
+
+    def _load_size(self) -> np.ndarray:
+        """Σ|F|·|r − pivot| + Σ|M| over the loads (N·m; for a linear driver Σ|F| in N)."""
+        scene = self.motion.scene
+        if not self.rotating:
+            return sum((np.abs(ld.force) for ld in self.loads), np.zeros_like(self.driving))
+        pivot = scene.frame[scene.pair(scene.driver.pair).point]
+        size = sum((np.abs(ld.force) * np.abs(ld.point - pivot) for ld in self.loads),
+                   np.zeros_like(self.driving))
+        return size + sum((np.abs(c.value) for c in self.couples), np.zeros_like(self.driving))
 
     @property
     def crank_force(self) -> np.ndarray | None:

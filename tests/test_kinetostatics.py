@@ -80,6 +80,16 @@ def test_three_driving_torques_agree(scene, phi, m3, m4, rho, force, direction, 
     assert abs(k.power_residual[0]) <= 1e-9 * max(k.scale[0] * abs(scene.driver.speed), 1e-12)
 
 
+def test_loads_that_do_no_work_agree_to_round_off_not_to_a_ratio_of_zeros():
+    """A slotted crank whose column passes through the crank's pivot: the slider stands still
+    at O, every load's power is ~0 and the three M_p are ~1e-40 N·m; their disagreement is
+    measured against the loads' moments (this divided 1e-40 by 1e-40 and failed at random)."""
+    scene = loaded(scenes.slotted_crank(1.0, 0.5, 0.0, 1e-18), {3: 1.0, 4: 1.0}, 0.125)
+    k = analyse(scene, math.radians(1.0))
+    assert abs(k.driving[0]) < 1e-12 and k.scale[0] < 1e-12
+    assert k.disagreement[0] < 1e-9
+
+
 def equilibrium(k, member: int, i: int) -> tuple[complex, float]:
     """Σ F and Σ M about the origin of everything acting on one member, from the result's
     parts: the loads and the reactions F_pq with q = member."""
