@@ -19,13 +19,13 @@ WORDS = {
            "check": "Check your answers: in Mehanizmi, type the code {code} into the self-check box.",
            "key": "Answer key", "quantity": "Quantity", "value": "Exact value", "unit": "Unit",
            "tolerance": "A drawing allows ±", "title": "Variants of {task} (seed {seed}, ± {spread} %)",
-           "no_drawing": "(Given as a table: no drawing.)"},
+           "extra": "In grey: not asked by the task, but graded by the self-check of its page."},
     "sr": {"variant": "Varijanta", "name": "Ime, prezime i broj indeksa", "given": "Dato",
            "find": "Odrediti", "drawing": "Mehanizam u traženom položaju, nacrtan u razmeri U_L = {u} m/cm",
            "check": "Proverite rešenja: u aplikaciji Mehanizmi unesite kod {code} u polje za samoproveru.",
            "key": "Ključ rešenja", "quantity": "Veličina", "value": "Tačna vrednost", "unit": "Jedinica",
            "tolerance": "Crtež dozvoljava ±", "title": "Varijante zadatka {task} (seme {seed}, ± {spread} %)",
-           "no_drawing": "(Zadato tabelom: bez crteža.)"},
+           "extra": "Sivo: zadatak to ne traži, ali ga ocenjuje samoprovera na stranici zadatka."},
 }
 
 STYLE = """
@@ -38,6 +38,7 @@ h1 { font-size: 15pt; margin: 0 0 4mm; } h2 { font-size: 12pt; margin: 5mm 0 2mm
 table { border-collapse: collapse; } td, th { border: 1px solid #888; padding: 1mm 3mm; text-align: left; }
 td.n { text-align: right; font-variant-numeric: tabular-nums; }
 .answer { width: 35mm; } .small { font-size: 9pt; color: #333; }
+tr.extra td { color: #666; font-style: italic; }
 .tasks { display: flex; gap: 10mm; align-items: flex-start; }
 """
 
@@ -136,7 +137,8 @@ def sheets_html(found: VariantSet, title: str, language: str = "sr") -> str:
                          f"<td>{_e(g.unit)}</td></tr>")
         parts.append(f"</table></div><div><h2>{_e(w['find'])}</h2><table>")
         for a in v.key:
-            parts.append(f'<tr><td>{_e(symbol(a.key))}</td><td class="answer"></td><td>{_e(a.unit)}</td></tr>')
+            if a.asked:
+                parts.append(f'<tr><td>{_e(symbol(a.key))}</td><td class="answer"></td><td>{_e(a.unit)}</td></tr>')
         parts.append("</table></div></div>")
         if v.drawn:
             scale = length_scale(v.scene, v.drawn)
@@ -144,13 +146,15 @@ def sheets_html(found: VariantSet, title: str, language: str = "sr") -> str:
             parts.append(drawing_svg(v.scene, v.drawn, scale))
         parts.append(f'<p class="small">{_e(w["check"].format(code=v.code))}</p></section>')
     parts.append(f"<section><h1>{_e(w['key'])}: "
-                 f"{_e(w['title'].format(task=s.task, seed=s.seed, spread=s.spread))}</h1>")
+                 f"{_e(w['title'].format(task=s.task, seed=s.seed, spread=s.spread))}</h1>"
+                 f'<p class="small">{_e(w["extra"])}</p>')
     for v in found.variants:
         parts.append(f"<h2>{_e(v.code)}</h2><table><tr><th>{_e(w['quantity'])}</th>"
                      f"<th>{_e(w['value'])}</th><th>{_e(w['unit'])}</th><th>{_e(w['tolerance'])}</th></tr>")
         for a in v.key:
             tol = "" if a.tolerance is None else _n(a.tolerance, 2, language)
-            parts.append(f'<tr><td>{_e(symbol(a.key))}</td><td class="n">{_e(_n(a.value, language=language))}</td>'
+            row = "<tr>" if a.asked else '<tr class="extra">'
+            parts.append(f'{row}<td>{_e(symbol(a.key))}</td><td class="n">{_e(_n(a.value, language=language))}</td>'
                          f'<td>{_e(a.unit)}</td><td class="n">{_e(tol)}</td></tr>')
         parts.append("</table>")
     parts.append("</section></body></html>")

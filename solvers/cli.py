@@ -113,7 +113,7 @@ def _variants(args) -> int:
         Path(args.sheets).write_text(sheets_html(found, title, args.language), encoding="utf-8")
     if args.key:
         with open(args.key, "w", newline="", encoding="utf-8") as f:
-            writer = csv.DictWriter(f, ["code", "quantity", "value", "unit", "tolerance"])
+            writer = csv.DictWriter(f, ["code", "quantity", "value", "unit", "tolerance", "asked"])
             writer.writeheader()
             writer.writerows(variants.key_rows(found))
     if args.json:
@@ -123,7 +123,8 @@ def _variants(args) -> int:
         print(f"{v.code}: {given}")
         for a in v.key:
             tol = "" if a.tolerance is None else f"  (± {a.tolerance:.2g})"
-            print(f"    {variants.symbol(a.key):16s} {a.value:12.6g} {a.unit}{tol}")
+            extra = "" if a.asked else "  [self-check]"
+            print(f"    {variants.symbol(a.key):16s} {a.value:12.6g} {a.unit}{tol}{extra}")
     return 0
 
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 import tomllib
 from collections import Counter
 from dataclasses import dataclass, field
@@ -55,6 +56,7 @@ class Answer:
     value: float
     unit: str
     tolerance: float | None  # ± a drawing at the task's scales allows (None: computed only)
+    asked: bool = True  # printed in the task's answers; False: graded by its page's self-check
 
 
 @dataclass(frozen=True)
@@ -241,13 +243,39 @@ def unit_of(key: str) -> str:
     return UNITS.get(last.removesuffix("_zhukovsky").removesuffix("_power_balance"), "")
 
 
+# what the chapter pages' self-check boxes grade, as result keys: the plans page's speeds,
+# accelerations, ω and ε (not the driver's: given); the kinetostatics page's M_p or F_p, P
+# and |F_pq|; the gear page's ω of every member (a rotor's page grades its unknowns: the
+# book's own keys)
+SELF_CHECKED = re.compile(r"points\.[^.]+\.[va]|members\.\d+\.(omega|epsilon)|"
+                          r"driving\.(torque|force|power)|reactions\.(\d+)-(\d+)\.magnitude")
+
+
 def answers(scene, task_scene) -> list[Answer]:
-    """The task's asked quantities (its [book] keys), exact for ``scene``, with the error a
-    drawing at the task's scales allows where the book reads it off a plan or a polygon."""
+    """The task's asked quantities (its [book] keys) first, then what its chapter page's
+    self-check grades besides; exact for ``scene``, with the error a drawing at the task's
+    scales allows where the book reads it off a plan or a polygon."""
     exact = exact_values(dataclasses.replace(scene, book=task_scene.book))  # a train's asked ratios
     tolerance = _tolerances(scene, task_scene)
-    return [Answer(key, exact[key], unit_of(key), tolerance.get(key))
-            for key in task_scene.book if key in exact]
+    asked = [key for key in task_scene.book if key in exact]
+    return ([Answer(key, exact[key], unit_of(key), tolerance.get(key)) for key in asked]
+            + [Answer(key, exact[key], unit_of(key), tolerance.get(key), asked=False)
+               for key in exact if key not in asked and _self_checked(key, scene)])
+
+
+def _self_checked(key: str, scene) -> bool:
+    found = SELF_CHECKED.fullmatch(key)
+    if not found or isinstance(scene, Rotor):
+        return False
+    if isinstance(scene, Scene):
+        parts = key.split(".")
+        if parts[0] == "points":
+            return parts[1] not in scene.frame  # a frame point's v and a are 0
+        if parts[0] == "members":
+            return int(parts[1]) != scene.driver.member  # ω₂, ε₂ are given
+        if parts[0] == "reactions":
+            return int(found.group(3)) < int(found.group(4))  # F_pq once: |F_qp| = |F_pq|
+    return True
 
 
 def _tolerances(scene, task_scene) -> dict[str, float]:
@@ -327,6 +355,7 @@ def as_json(found: VariantSet) -> dict:
             "variants": [{"code": v.code, "scene": to_text(v.scene),
                           "given": {g.label: {"value": value, "unit": g.unit} for g, value in v.given},
                           "key": {a.key: a.value for a in v.key},
+                          "asked": [a.key for a in v.key if a.asked],
                           "units": {a.key: a.unit for a in v.key},
                           "tolerance": {a.key: a.tolerance for a in v.key}}
                          for v in found.variants]}
@@ -335,7 +364,7 @@ def as_json(found: VariantSet) -> dict:
 def key_rows(found: VariantSet) -> list[dict]:
     """One row per answer of every variant: the lecturer's key as a table (CSV)."""
     return [{"code": v.code, "quantity": a.key, "value": a.value, "unit": a.unit,
-             "tolerance": "" if a.tolerance is None else a.tolerance}
+             "tolerance": "" if a.tolerance is None else a.tolerance, "asked": a.asked}
             for v in found.variants for a in v.key]
 
 

@@ -43,7 +43,8 @@ def test_the_json_of_the_command_line_is_the_same_bytes_twice():
     assert first.stdout == second.stdout
     data = json.loads(first.stdout)
     assert [v["code"] for v in data["variants"]] == [code(Settings("zbirka-3.1", 7), i) for i in (1, 2, 3)]
-    assert set(data["variants"][0]["key"]) == set(load_preset("zbirka-3.1").book)
+    assert data["variants"][0]["asked"] == list(load_preset("zbirka-3.1").book)
+    assert set(data["variants"][0]["key"]) > set(load_preset("zbirka-3.1").book)  # + self-check
 
 
 def test_given_values_are_rounded_as_printed_and_within_the_spread(set_3_1):
@@ -86,8 +87,11 @@ def test_every_variant_is_a_good_exercise(pid):
 def test_keys_are_the_solvers_values_for_every_asked_quantity(set_3_1):
     for v in set_3_1.variants:
         exact = exact_values(v.scene)
-        assert [a.key for a in v.key] == list(load_preset("zbirka-3.1").book)
+        assert [a.key for a in v.key if a.asked] == list(load_preset("zbirka-3.1").book)
         assert all(a.value == exact[a.key] for a in v.key)
+        extra = {a.key for a in v.key if not a.asked}  # what the plans page's self-check grades
+        assert {"points.B.v", "points.B.a", "points.C.a"} <= extra | set(load_preset("zbirka-3.1").book)
+        assert not any(k.startswith(("points.A.", "points.D.", "members.2.")) for k in extra)
         assert {a.unit for a in v.key} <= {"m/s", "m/s²", "s⁻¹", "s⁻²"}
 
 
@@ -119,7 +123,7 @@ def test_gear_variants_mesh_with_whole_teeth():
                 if not mesh.bevel:
                     distance = abs(ra - rb) if mesh.internal is not None else ra + rb
                     assert abs(a.axis - b.axis) == pytest.approx(distance, abs=1e-12), (v.code, mesh)
-            assert {a.key for a in v.key} == set(load_preset(pid).book)  # ratios too
+            assert {a.key for a in v.key if a.asked} == set(load_preset(pid).book)  # ratios too
             if pid == "zbirka-6.10":  # given by teeth: every radius a whole number of teeth
                 for mesh in train.meshes:
                     assert all(abs(r / 0.002 - round(r / 0.002)) < 1e-9 for r in mesh.radii)
@@ -199,7 +203,7 @@ def test_the_command_line_writes_sheets_and_key_and_refuses_bad_counts(tmp_path)
               "--language", "en")
     assert out.returncode == 0, out.stderr
     assert sheets.read_text().count('class="sheet"') == 2
-    assert key.read_text().splitlines()[0] == "code,quantity,value,unit,tolerance"
+    assert key.read_text().splitlines()[0] == "code,quantity,value,unit,tolerance,asked"
     assert len(key.read_text().splitlines()) == 1 + 2 * 4
     bad = run("variants", "zbirka-3.1", "--count", "500")
     assert bad.returncode == 2 and "count must be" in bad.stderr
