@@ -8,7 +8,7 @@ import streamlit as st
 from mechanisms import load_preset, preset_ids
 from solvers.diagnostics import Unsolvable
 from solvers.textbook import BookRow, check
-from ui.book import VERDICTS, book_table
+from ui.book import VERDICTS, book_table, coverage_table, tasks_table
 from ui.chapters import page_for
 from ui.export import csv_button
 from ui.i18n import t, title_of
@@ -41,6 +41,13 @@ everything = [row for rows in checks.values() if isinstance(rows, list) for row 
 cols = st.columns(4)
 for col, verdict in zip(cols, ("agrees", "close", "differs", "layout")):
     col.metric(t(VERDICTS[verdict]), sum(r.verdict == verdict for r in everything))
+
+st.subheader(t("check.coverage_title"))
+st.dataframe(coverage_table(checks), hide_index=True)
+box = st.expander(t("check.tasks_title"), key="tasks_open", on_change="rerun")
+if box.open:  # filled only while open
+    with box:
+        st.dataframe(tasks_table(), hide_index=True)
 
 table = []
 for pid in sorted(checks, key=order):

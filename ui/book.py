@@ -5,9 +5,10 @@ from __future__ import annotations
 import pandas as pd
 import streamlit as st
 
+from mechanisms.coverage import tasks
 from solvers.textbook import BookRow, check
 from ui.export import show_table
-from ui.i18n import num, t
+from ui.i18n import current, num, t
 
 VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs",
             "layout": "check.layout", "missing": "check.missing"}
@@ -30,3 +31,30 @@ def book_section(scene, base) -> None:
         show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
     else:
         st.info(t("plans.book_changed"))
+
+
+def coverage_table(checks: dict[str, list[BookRow] | str]) -> pd.DataFrame:
+    """Per chapter: how many of the course's tasks have a preset, and the verdicts of their
+    printed values."""
+    rows = {}
+    for task in tasks():
+        row = rows.setdefault(task.chapter, {t("check.col_chapter"): task.chapter,
+                                             t("check.col_tasks"): 0, t("check.col_presets"): 0,
+                                             **{t(VERDICTS[v]): 0 for v in ("agrees", "close", "differs", "layout")}})
+        row[t("check.col_tasks")] += 1
+        row[t("check.col_presets")] += task.covered
+        found = checks.get(task.preset)
+        for r in found if isinstance(found, list) else []:
+            if r.verdict in ("agrees", "close", "differs", "layout"):
+                row[t(VERDICTS[r.verdict])] += 1
+    return pd.DataFrame(sorted(rows.values(), key=lambda r: r[t("check.col_chapter")]))
+
+
+def tasks_table() -> pd.DataFrame:
+    """Every task and worked example of the course's texts, with its preset or why it has none."""
+    serbian = current() != "en"
+    return pd.DataFrame([{
+        t("check.col_text"): task.text_sr if serbian else task.text,
+        t("check.col_task"): task.number,
+        t("check.col_preset"): task.preset if task.covered else "—",
+        t("check.col_why_none"): task.reason.get("sr" if serbian else "en", "")} for task in tasks()])
