@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from . import limits
-from .schema import DRIVER, FRAME, Driver, Force, Member, Moment, Pair, Scene, Travel
+from .schema import DRIVER, FRAME, Driver, Fit, Force, Member, Moment, Pair, Scene, Travel
 
 PRESETS = Path(__file__).parent / "presets"
 LARGEST = 1e9  # beyond this a number is a typo or an attack, and squares of it overflow
@@ -25,7 +25,8 @@ MAX_BYTES = 100_000  # the largest preset is 4 kB; refused before parsing (800 k
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "pairs", "frame",
             "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes",
-            "scales", "guess", "special", "layout_assumed"}
+            "scales", "guess", "special", "layout_assumed", "fit"}
+FIT_KEYS = {"unknowns", "start", "used", "residual"}
 SCALE_KEYS = {"L", "v", "a", "F"}
 TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
@@ -230,6 +231,8 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
         special=_special(raw, r, members),
         layout_assumed=_flag(raw, r, "layout_assumed"),
     )
+    if "fit" in raw:
+        scene = dataclasses.replace(scene, fit=_fit(raw, r, scene.book))
     if scene.guess:
         scene = dataclasses.replace(scene, guess_at=driver.at)
     if "travel" in raw:
@@ -453,6 +456,19 @@ def _scales(raw: dict, r: _Reader) -> dict[str, float]:
     """The book's drawing scales: how much one centimetre of the drawing stands for."""
     spec = r.check_keys(raw.get("scales", {}), SCALE_KEYS, "scales")
     return {k: r.number(spec, k, "scales", positive=True) for k in spec}
+
+
+def _fit(raw: dict, r: _Reader, book: dict[str, float]) -> Fit:
+    spec = r.check_keys(raw["fit"], FIT_KEYS, "fit")
+    unknowns, start, used = (spec.get(k) for k in ("unknowns", "start", "used"))
+    if not (isinstance(unknowns, list) and unknowns and all(isinstance(u, str) for u in unknowns)):
+        raise r.fail("fit.unknowns", "must list the fitted numbers' paths, e.g. [\"frame.G.0\"]")
+    if not (isinstance(start, list) and len(start) == len(unknowns)):
+        raise r.fail("fit.start", f"must give one starting value per unknown ({len(unknowns)})")
+    if not (isinstance(used, list) and used and all(k in book for k in used)):
+        raise r.fail("fit.used", "must list keys of [book] the fit was made to")
+    return Fit(tuple(unknowns), tuple(r.number({"v": v}, "v", "fit.start") for v in start),
+               tuple(used), r.number(spec, "residual", "fit", non_negative=True))
 
 
 def _guess(raw: dict, r: _Reader) -> dict[str, complex]:

@@ -137,6 +137,19 @@ class Travel:
 
 
 @dataclass(frozen=True)
+class Fit:
+    """How a missing figure was reconstructed: the scene's unknown numbers (paths into its
+    document, e.g. ``frame.G.0``), found by least squares from ``start`` against the printed
+    values ``used``; the book's other values are then predictions that test the
+    reconstruction. ``residual``: the root mean square of the relative misfits, as found."""
+
+    unknowns: tuple[str, ...]
+    start: tuple[float, ...]
+    used: tuple[str, ...]
+    residual: float
+
+
+@dataclass(frozen=True)
 class Scene:
     """A linkage scene: what a TOML file under ``mechanisms/presets`` describes."""
 
@@ -170,6 +183,7 @@ class Scene:
     # the book's figure is missing and the geometry was assumed, not fitted to its values:
     # a printed value that differs says nothing about a slip
     layout_assumed: bool = False
+    fit: Fit | None = None  # the figure reconstructed by fitting its printed values
 
     def with_loads(self, *, masses: dict[int, float] | None = None,
                    gyrations: dict[int, float] | None = None,

@@ -107,6 +107,11 @@ def to_toml(scene: Scene) -> str:
     if scene.special:
         out.append("\n[special]")
         out += [f"{_s(k)} = [{a}, {b}]" for k, (a, b) in scene.special.items()]
+    if scene.fit:
+        f = scene.fit
+        out += ["\n[fit]", "unknowns = [" + ", ".join(map(_s, f.unknowns)) + "]",
+                "start = [" + ", ".join(map(_n, f.start)) + "]",
+                "used = [" + ", ".join(map(_s, f.used)) + "]", f"residual = {_n(f.residual)}"]
     out += _book(scene.book, scene.book_notes)
     return "\n".join(out) + "\n"
 

@@ -8,7 +8,7 @@ import streamlit as st
 from mechanisms import load_preset, preset_ids
 from solvers.diagnostics import Unsolvable
 from solvers.textbook import BookRow, check
-from ui.book import VERDICTS, book_table, coverage_table, tasks_table
+from ui.book import VERDICTS, book_table, coverage_table, fit_summary, tasks_table
 from ui.chapters import page_for
 from ui.export import csv_button
 from ui.i18n import t, title_of
@@ -59,6 +59,7 @@ for pid in sorted(checks, key=order):
     if isinstance(rows, str):
         st.error(rows)
         continue
+    fit_summary(scene, rows)
     st.dataframe(book_table(rows), hide_index=True)
     table += [dict(preset=pid, key=r.key, book=r.book, exact=r.exact, verdict=r.verdict,
                    note=r.note) for r in rows]

@@ -6,7 +6,9 @@ one to within one unit of its last printed digit, is *close* when it is off by l
 3 % (rounded intermediate values, or a drawing read off to its precision; for angles,
 by at most 2°, a protractor's reading), and *differs* otherwise — most likely a slip, explained where the preset's ``[book_notes]`` can tell. A preset whose figure is missing and
 whose layout is assumed (``layout_assumed``) says *layout* instead of *differs*: its
-printed values belong to a geometry nobody can see.
+printed values belong to a geometry nobody can see. A preset whose figure was
+reconstructed by fitting (``[fit]``) marks the values it was fitted to: the others are
+predictions, and only they test the reconstruction.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from .report import exact_values
 
 CLOSE = 0.03
 CLOSE_ANGLE = 2.0  # degrees
+PRECISION = 0.02  # the book reads plans to about 2 %: a fit that misses by more reconstructs nothing
 
 
 @dataclass(frozen=True)
@@ -27,6 +30,7 @@ class BookRow:
     exact: float | None  # None when the scene does not produce that value
     verdict: str  # "agrees", "close", "differs", "layout" or "missing"
     note: str = ""
+    fitted: bool = False  # the missing figure was fitted to this value: not a prediction
 
     @property
     def difference(self) -> float | None:
@@ -54,11 +58,14 @@ def check(scene) -> list[BookRow]:
     """Every printed value of the preset against the exact solution of its data."""
     exact = exact_values(scene)
     notes = getattr(scene, "book_notes", {})
+    fit = getattr(scene, "fit", None)
+    used = set(fit.used) if fit else set()
     rows = []
     for key, book in scene.book.items():
         value = exact.get(key)
         found = "missing" if value is None else verdict(key, book, value)
-        if found == "differs" and getattr(scene, "layout_assumed", False):
+        unfitted = fit is not None and fit.residual > PRECISION
+        if found == "differs" and (getattr(scene, "layout_assumed", False) or unfitted):
             found = "layout"
-        rows.append(BookRow(key, book, value, found, notes.get(key, "")))
+        rows.append(BookRow(key, book, value, found, notes.get(key, ""), key in used))
     return rows

@@ -226,8 +226,9 @@ def _named(scene, task_scene, name: str):
     note = f"Variant {name} of {task_scene.source.lower()}: the task's given numbers changed."
     note_sr = (f"Varijanta {name}: zadatak sa izmenjenim zadatim vrednostima."
                if task_scene.title_sr else "")
+    fitted = {"fit": None} if isinstance(scene, Scene) else {}  # fitted to the book's numbers
     return dataclasses.replace(scene, id=f"variant-{name}", title=title, title_sr=title_sr,
-                               note=note, note_sr=note_sr, book={}, book_notes={})
+                               note=note, note_sr=note_sr, book={}, book_notes={}, **fitted)
 
 
 UNITS = {"omega": "s⁻¹", "epsilon": "s⁻²", "v": "m/s", "a": "m/s²", "s": "m", "x": "m", "y": "m",

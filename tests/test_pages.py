@@ -90,7 +90,7 @@ def test_every_preset_that_quotes_the_book_is_on_the_textbook_check_page():
     assert len(quoting) >= 9
     for pid in quoting:
         assert pid in headings
-    rows = sum(len(d.value) for d in at.dataframe)
+    rows = sum(len(d.value) for d in at.dataframe if "quantity" in d.value.columns)  # not coverage
     assert rows == sum(len(load_preset(pid).book) for pid in quoting)
 
 

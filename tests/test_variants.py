@@ -112,6 +112,14 @@ def test_keys_equal_an_independent_computation_by_finite_differences(set_3_1):
             rel=1e-6)
 
 
+def test_a_variant_of_a_fitted_task_travels_as_a_link():
+    from mechanisms.link import decode, encode
+
+    v = generate(Settings("zbirka-2.4", 2), 2).variants[1]
+    assert v.scene.fit is None and not v.scene.book
+    assert decode(encode(v.scene)).frame == v.scene.frame
+
+
 def test_gear_variants_mesh_with_whole_teeth():
     for pid in ("zbirka-6.1", "zbirka-6.10"):
         found = generate(Settings(pid, 3), 6)

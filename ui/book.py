@@ -6,7 +6,7 @@ import pandas as pd
 import streamlit as st
 
 from mechanisms.coverage import tasks
-from solvers.textbook import BookRow, check
+from solvers.textbook import PRECISION, BookRow, check
 from ui.export import show_table
 from ui.i18n import current, num, t
 
@@ -15,12 +15,30 @@ VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.
 
 
 def book_table(rows: list[BookRow]) -> pd.DataFrame:
+    fitted = any(r.fitted for r in rows)
     return pd.DataFrame([{
-        t("check.col_quantity"): r.key, t("check.col_book"): num(r.book, 6),
+        t("check.col_quantity"): r.key,
+        **({t("check.col_role"): t("check.fitted" if r.fitted else "check.predicted")} if fitted else {}),
+        t("check.col_book"): num(r.book, 6),
         t("check.col_exact"): "—" if r.exact is None else num(r.exact, 6),
         t("check.col_difference"): "—" if r.difference is None else num(r.difference, 3),
         t("check.col_verdict"): t(VERDICTS[r.verdict]), t("check.col_note"): r.note}
         for r in rows])
+
+
+def fit_summary(scene, rows: list[BookRow]) -> None:
+    """A reconstructed figure: how well its fit reproduces the values it was made to, and
+    the verdicts of the predictions — or that the fit is no reconstruction at all."""
+    if getattr(scene, "fit", None) is None:  # gear trains and rotors are never fitted
+        return
+    predictions = [r for r in rows if not r.fitted]
+    good = sum(r.verdict in ("agrees", "close") for r in predictions)
+    text = t("check.fit", used=len(scene.fit.used), residual=num(100 * scene.fit.residual, 2),
+             good=good, predictions=len(predictions))
+    if scene.fit.residual > PRECISION:
+        st.warning(t("check.fit_failed", residual=num(100 * scene.fit.residual, 2)))
+    else:
+        st.caption(text)
 
 
 def book_section(scene, base) -> None:

@@ -1,0 +1,58 @@
+"""Figures reconstructed by fitting: each fit is reproduced from its preset's own data, its
+values are marked, and a fit that misses the book is never judged as a reconstruction."""
+
+import dataclasses
+
+import pytest
+
+from mechanisms import SceneError, load_preset, parse_document, preset_ids
+from mechanisms.writer import to_text
+from solvers.fitting import refit
+from solvers.textbook import PRECISION, check
+
+FITTED = [pid for pid in preset_ids("linkage") if load_preset(pid).fit]
+
+
+def test_there_are_fitted_presets():
+    assert "zbirka-2.4" in FITTED
+
+
+@pytest.mark.parametrize("pid", FITTED)
+def test_the_fit_is_reproduced_from_the_presets_data(pid):
+    scene = load_preset(pid)
+    found = refit(pid)
+    assert found.converged
+    assert found.residual < PRECISION
+    assert found.residual == pytest.approx(scene.fit.residual, rel=0.2)
+    for path, again in zip(scene.fit.unknowns, found.values):
+        table, name, axis = path.split(".")
+        assert table == "frame"
+        stored = scene.frame[name]
+        assert abs((stored.real, stored.imag)[int(axis)] - again) < 1e-3  # to a millimetre
+
+
+@pytest.mark.parametrize("pid", FITTED)
+def test_fitted_values_are_marked_and_predictions_judged(pid):
+    scene = load_preset(pid)
+    rows = check(scene)
+    assert {r.key for r in rows if r.fitted} == set(scene.fit.used)
+    assert all(r.verdict in ("agrees", "close") for r in rows if r.fitted)
+    assert any(not r.fitted for r in rows)  # something is left to predict
+
+
+def test_a_fit_that_misses_the_book_is_not_judged_as_a_reconstruction():
+    scene = load_preset("zbirka-2.4")
+    failed = dataclasses.replace(scene, fit=dataclasses.replace(scene.fit, residual=0.5))
+    verdicts = {r.key: r.verdict for r in check(failed)}
+    assert verdicts["members.5.epsilon"] == "layout"
+    assert {r.key: r.verdict for r in check(scene)}["members.5.epsilon"] == "differs"
+
+
+def test_the_fit_table_is_checked_and_written_back():
+    scene = load_preset("zbirka-2.4")
+    assert parse_document(to_text(scene)) == dataclasses.replace(scene, id="zbirka-2.4")
+    text = to_text(scene)
+    with pytest.raises(SceneError, match="fit.used"):
+        parse_document(text.replace('used = ["points.C.v"', 'used = ["points.Z.v"'))
+    with pytest.raises(SceneError, match="fit.start"):
+        parse_document(text.replace("start = [0.21, -0.24, 0.02, -0.46]", "start = [0.21]"))
