@@ -16,7 +16,7 @@ FITTED = [pid for pid in preset_ids("linkage") if load_preset(pid).fit]
 
 
 def test_there_are_fitted_presets():
-    assert {"zbirka-2.4", "zbirka-2.6"} <= set(FITTED)
+    assert {"zbirka-2.4", "zbirka-2.6", "zbirka-2.8"} <= set(FITTED)
 
 
 @pytest.mark.parametrize("pid", FITTED)
