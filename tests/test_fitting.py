@@ -16,7 +16,15 @@ FITTED = [pid for pid in preset_ids("linkage") if load_preset(pid).fit]
 
 
 def test_there_are_fitted_presets():
-    assert {"zbirka-2.4", "zbirka-2.6", "zbirka-2.8"} <= set(FITTED)
+    assert {"zbirka-2.4", "zbirka-2.6", "zbirka-2.8", "zbirka-2.9"} <= set(FITTED)
+
+
+def test_most_predictions_of_the_reconstructions_agree_or_are_close():
+    """Issue 22's bar: across the fitted presets, at least three quarters of the printed
+    values not used for the fit agree with the reconstruction or are close to it."""
+    predictions = [r for pid in FITTED for r in check(load_preset(pid)) if not r.fitted]
+    good = sum(r.verdict in ("agrees", "close") for r in predictions)
+    assert len(predictions) >= 10 and good >= 0.75 * len(predictions)
 
 
 @pytest.mark.parametrize("pid", FITTED)
