@@ -120,11 +120,22 @@ def load_scene(path: str | Path):
 
 def load_preset(preset_id: str):
     """Load a preset by its id (``analitika-2.1``, ``zbirka-1.3``, ``zbirka-7.1``, …)."""
+    return load_scene(_preset_path(preset_id))
+
+
+def preset_document(preset_id: str) -> dict:
+    """A preset's TOML table as its file writes it (teeth stay teeth): what a variant or a fit
+    changes numbers in before ``build_document`` makes it a scene again."""
+    path = _preset_path(preset_id)
+    return _read_toml(path.read_bytes(), path.name)
+
+
+def _preset_path(preset_id: str) -> Path:
     path = PRESETS / f"{preset_id}.toml"
     if not path.is_file():
         known = ", ".join(preset_ids())
         raise SceneError(f"no preset named {preset_id!r}; known presets: {known}")
-    return load_scene(path)
+    return path
 
 
 def preset_ids(kind: str | None = None) -> list[str]:

@@ -143,13 +143,15 @@ def rims(doc: dict) -> list[tuple[int, tuple[str, int]]]:
     planet meshing with a sun and a ring has one rim in both meshes."""
     seen = {}
     for mesh in doc.get("meshes", []):
-        for side, member in enumerate(mesh["members"]):
-            if "teeth" in mesh:
-                rim = ("teeth", mesh["teeth"][side])
-            else:
-                rim = ("mm", round(mesh["radii"][side] / MM))
-            seen.setdefault((member, rim), None)
+        seen.update(dict.fromkeys(mesh_rims(mesh)))
     return list(seen)
+
+
+def mesh_rims(mesh: dict) -> list[tuple[int, tuple[str, int]]]:
+    """The two rims of a mesh as the file gives it (one key per rim however often it meshes)."""
+    if "teeth" in mesh:
+        return [(m, ("teeth", z)) for m, z in zip(mesh["members"], mesh["teeth"])]
+    return [(m, ("mm", round(r / MM))) for m, r in zip(mesh["members"], mesh["radii"])]
 
 
 class VariationError(ValueError):
@@ -189,10 +191,7 @@ def _apply_gears(new: dict, found: list[Given], values: list[float]) -> tuple[di
     axes = _close_stages(new, sizes, old_axes)
     for mesh in new["meshes"]:
         key = "teeth" if "teeth" in mesh else "radii"
-        unit = 1 if key == "teeth" else MM
-        old = mesh[key]
-        mesh[key] = [_size(sizes, m, ("teeth", z) if key == "teeth" else ("mm", round(z / MM)), unit)
-                     for m, z in zip(mesh["members"], old)]
+        mesh[key] = [_size(sizes, rim) for rim in mesh_rims(mesh)]
     radius = _radius_unit(new)
     remap = {old_axes[n]: axes[n] * radius for n in axes}  # a point at a planet's axis follows it
     for n, m in new["members"].items():
@@ -211,9 +210,10 @@ def _apply_gears(new: dict, found: list[Given], values: list[float]) -> tuple[di
     return new, ended
 
 
-def _size(sizes: dict, member: int, rim: tuple, unit: float):
-    value = sizes.get((member, rim), rim[1])
-    return value if unit == 1 else float(f"{value * unit:.12g}")
+def _size(sizes: dict, rim: tuple):
+    """A rim's new size as the file writes it: whole teeth, or a radius in metres."""
+    value = sizes.get(rim, rim[1][1])
+    return value if rim[1][0] == "teeth" else float(f"{value * MM:.12g}")
 
 
 def _radius_unit(doc: dict) -> float:
@@ -242,9 +242,7 @@ def _close_stages(doc: dict, sizes: dict, old_axes: dict[int, float]) -> dict[in
                     axes.setdefault(m, known[0])
         for mesh in meshes:
             a, b = mesh["members"]
-            key = "teeth" if "teeth" in mesh else "radii"
-            rim = [(m, ("teeth", z) if key == "teeth" else ("mm", round(z / MM)))
-                   for m, z in zip((a, b), mesh[key])]
+            rim = mesh_rims(mesh)
             size = [sizes.get(r, r[1][1]) for r in rim]
             internal = mesh.get("internal")
             distance = abs(size[0] - size[1]) if internal is not None else size[0] + size[1]

@@ -13,13 +13,12 @@ from __future__ import annotations
 
 import copy
 import math
-import tomllib
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import least_squares
 
-from mechanisms.loader import PRESETS, SceneError, build_document
+from mechanisms.loader import SceneError, build_document, preset_document
 from mechanisms.schema import Fit
 
 from .budget import Unsolvable
@@ -64,7 +63,7 @@ def misfits(doc: dict, fit: Fit, book: dict[str, float], values) -> np.ndarray:
 
 def refit(preset_id: str) -> Found:
     """The preset's fit made again from its starting values (what a test reproduces)."""
-    doc = tomllib.loads((PRESETS / f"{preset_id}.toml").read_text(encoding="utf-8"))
+    doc = preset_document(preset_id)
     scene = build_document(doc, source=preset_id)
     fit = scene.fit
     if fit is None:

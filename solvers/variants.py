@@ -15,16 +15,15 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-import tomllib
 from collections import Counter
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from mechanisms import SceneError, load_preset
+from mechanisms import SceneError
 from mechanisms.codes import MAX_SEED, Settings, code, parse
 from mechanisms.gears import GearTrain
-from mechanisms.loader import PRESETS, build_document
+from mechanisms.loader import build_document, preset_document
 from mechanisms.rotor import Rotor
 from mechanisms.schema import Scene
 from mechanisms.variation import Given, VariationError, apply, givens
@@ -99,21 +98,23 @@ class Task:
     givens: tuple[Given, ...]
     condition: float  # the task's own worst condition number at its instant (linkages)
     cycle: bool  # the task's crank turns the whole way: its variants must too
+    drawn: dict[str, list[float]]  # a linkage's points at its instant: where each walk starts
 
 
 def task(preset_id: str) -> Task:
-    scene = load_preset(preset_id)
+    doc = preset_document(preset_id)
+    scene = build_document(doc, source=f"{preset_id}.toml", default_id=preset_id)
     if not scene.book:
         raise VariantError(f"{preset_id} prints no answers ([book] is empty): its variants "
                            "would have no key")
-    doc = tomllib.loads((PRESETS / f"{preset_id}.toml").read_text(encoding="utf-8"))
-    condition, cycle = 1.0, False
+    condition, cycle, drawn = 1.0, False, {}
     if isinstance(scene, Scene):
-        condition = float(solve_instant(scene, None).condition[0])
+        motion = solve_instant(scene, None)
+        condition, drawn = float(motion.condition[0]), _positions(motion)
         if scene.driver.kind == "rotating":
             turn = solve(scene, np.linspace(0, 2 * math.pi, 360, endpoint=False), order=0)
             cycle = bool(turn.feasible.all())
-    return Task(scene, doc, tuple(givens(doc)), condition, cycle)
+    return Task(scene, doc, tuple(givens(doc)), condition, cycle, drawn)
 
 
 def generate(settings: Settings, count: int) -> VariantSet:
@@ -189,7 +190,7 @@ def _linkage(base: Task, doc: dict, values: list[float]) -> tuple[Scene, Motion]
     the other branch than the task's signs give, is rejected."""
     bound = max(CONDITION, OWN * base.condition)
     start = [g.value for g in base.givens]
-    drawn = _positions(solve_instant(base.scene, None))
+    drawn = base.drawn
     for k in range(1, STEPS + 1):
         t = k / STEPS
         step, _ = apply(base.doc, list(base.givens), [a + t * (b - a) for a, b in zip(start, values)])

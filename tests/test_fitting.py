@@ -2,12 +2,11 @@
 values are marked, and a fit that misses the book is never judged as a reconstruction."""
 
 import dataclasses
-import tomllib
 
 import pytest
 
 from mechanisms import SceneError, load_preset, parse_document, preset_ids
-from mechanisms.loader import PRESETS
+from mechanisms.loader import preset_document
 from mechanisms.writer import to_text
 from solvers.fitting import refit
 from solvers.textbook import PRECISION, check
@@ -34,7 +33,7 @@ def test_the_fit_is_reproduced_from_the_presets_data(pid):
     assert found.converged
     assert found.residual < PRECISION
     assert found.residual == pytest.approx(scene.fit.residual, rel=0.2)
-    doc = tomllib.loads((PRESETS / f"{pid}.toml").read_text(encoding="utf-8"))
+    doc = preset_document(pid)
     for path, again in zip(scene.fit.unknowns, found.values):
         stored = doc
         for key in path.split("."):
