@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 
 import numpy as np
 import pandas as pd
@@ -21,7 +20,7 @@ from ui.export import chart, show_table
 from ui.i18n import num, t, title_of
 from ui.present import look
 from ui.progress import measured
-from ui.scenes import driver_position, scene_download, scene_picker
+from ui.scenes import driver_position, driver_start, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -67,9 +66,7 @@ def special_table(motion: Motion, index: int) -> pd.DataFrame:
 controls, main = st.columns([1, 3], gap="large")
 with controls:
     base = scene_picker(default="zbirka-4.1")
-    rotating = base.driver.kind == "rotating"
-    seed({"at": math.degrees(base.driver.at) if rotating else base.driver.at, "tol": 1e-10,
-          "upto": 99}, st.session_state["scene"])
+    seed({"at": driver_start(base), "tol": 1e-10, "upto": 99}, st.session_state["scene"])
     scene = driver_position(base)
     tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
                            key="tol", format_func=lambda v: f"{v:.0e}", bind="query-params")

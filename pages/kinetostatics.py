@@ -25,7 +25,7 @@ from ui.export import chart, print_button, show_table
 from ui.i18n import num, scaled_title, t, title_of
 from ui.present import look
 from ui.progress import measured
-from ui.scenes import driver_inputs, scene_download, scene_picker
+from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -48,9 +48,8 @@ def at_instant(scene: Scene, inertia: bool) -> Kinetostatics:
 
 
 def defaults(base: Scene) -> dict[str, object]:
-    rotating = base.driver.kind == "rotating"
     values: dict[str, object] = {
-        "at": math.degrees(base.driver.at) if rotating else base.driver.at,
+        "at": driver_start(base),
         "omega": float(base.driver.speed), "inertia": True, "gravity": base.gravity > 0,
         "steps": 360, "UF": base.scales.get("F", 0.0)}
     for n, m in base.members.items():

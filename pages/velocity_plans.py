@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 
 import pandas as pd
 import streamlit as st
@@ -21,7 +20,7 @@ from ui.chapters import page_title
 from ui.export import chart, print_button, show_table
 from ui.i18n import num, t, title_of
 from ui.present import look
-from ui.scenes import driver_inputs, scene_download, scene_picker
+from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -50,8 +49,7 @@ def auto_scales(scene: Scene) -> dict[str, float]:
 
 
 def defaults(base: Scene) -> dict[str, object]:
-    rotating = base.driver.kind == "rotating"
-    values: dict[str, object] = {"at": math.degrees(base.driver.at) if rotating else base.driver.at,
+    values: dict[str, object] = {"at": driver_start(base),
                                  "omega": float(base.driver.speed), "prec": 0.5}
     scales = auto_scales(base)
     values.update(UL=scales["L"], Uv=scales["v"], Ua=scales["a"])

@@ -63,6 +63,18 @@ def test_a_students_code_in_the_link_opens_their_variant_on_its_page():
     assert at.slider(key="omega").value == pytest.approx(variant.scene.driver.speed)
 
 
+@pytest.mark.parametrize("path", ["pages/velocity_plans.py", "pages/kinetostatics.py",
+                                  "pages/assur_groups.py"])
+def test_a_variant_with_a_negative_crank_angle_opens_at_that_angle_within_the_slider(path):
+    variant = next(v for v in generate(Settings("zbirka-3.1", 1), 5).variants
+                   if v.scene.driver.at < 0)  # φ₂ = 3.58° ± 10° gives some below zero
+    at = page(path, lang="en")
+    at.query_params["v"] = variant.code
+    at.run()
+    assert not at.exception, at.exception
+    assert at.slider(key="at").value == pytest.approx(math.degrees(variant.scene.driver.at) + 360)
+
+
 def test_a_code_typed_into_the_self_check_opens_the_variant_and_grades_against_it():
     variant = generate(Settings("zbirka-3.1", 42), 2).variants[1]
     at = page("pages/velocity_plans.py", lang="en", self_open=True)

@@ -183,6 +183,14 @@ def scene_download(scene) -> None:
                        mime="application/toml", on_click="ignore", icon=":material/download:")
 
 
+def driver_start(base: Scene) -> float:
+    """The driver slider's value for the scene's own instant: φ₂ in degrees within the
+    slider's 0–360° (a file or a variant may say −6°), or s in metres."""
+    if base.driver.kind == "rotating":
+        return math.degrees(base.driver.at) % 360.0
+    return base.driver.at
+
+
 def driver_position(base: Scene) -> Scene:
     """The driver's position slider (φ₂ in degrees, or s in m for a slider), kept in the URL
     as ``at``; the scene at that position."""
