@@ -26,7 +26,7 @@ MAX_BYTES = 100_000  # the largest preset is 4 kB; refused before parsing (800 k
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "pairs", "frame",
             "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes",
             "scales", "guess", "special", "layout_assumed", "fit"}
-FIT_KEYS = {"unknowns", "start", "used", "residual"}
+FIT_KEYS = {"unknowns", "start", "used", "residual", "chose"}
 SCALE_KEYS = {"L", "v", "a", "F"}
 TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
@@ -478,8 +478,12 @@ def _fit(raw: dict, r: _Reader, book: dict[str, float]) -> Fit:
         raise r.fail("fit.start", f"must give one starting value per unknown ({len(unknowns)})")
     if not (isinstance(used, list) and used and all(k in book for k in used)):
         raise r.fail("fit.used", "must list keys of [book] the fit was made to")
+    chose = spec.get("chose", [])
+    if not (isinstance(chose, list) and all(k in book and k not in used for k in chose)):
+        raise r.fail("fit.chose", "must list keys of [book], not used by the fit, that chose "
+                                  "among layouts fitting equally")
     return Fit(tuple(unknowns), tuple(r.number({"v": v}, "v", "fit.start") for v in start),
-               tuple(used), r.number(spec, "residual", "fit", non_negative=True))
+               tuple(used), r.number(spec, "residual", "fit", non_negative=True), tuple(chose))
 
 
 def _guess(raw: dict, r: _Reader) -> dict[str, complex]:

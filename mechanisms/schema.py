@@ -141,12 +141,15 @@ class Fit:
     """How a missing figure was reconstructed: the scene's unknown numbers (paths into its
     document, e.g. ``frame.G.0``), found by least squares from ``start`` against the printed
     values ``used``; the book's other values are then predictions that test the
-    reconstruction. ``residual``: the root mean square of the relative misfits, as found."""
+    reconstruction. ``residual``: the root mean square of the relative misfits, as found.
+    ``chose``: printed values that picked this layout among several that fit the used values
+    equally (a mirror image, another branch): they are evidence spent, not predictions."""
 
     unknowns: tuple[str, ...]
     start: tuple[float, ...]
     used: tuple[str, ...]
     residual: float
+    chose: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)

@@ -112,6 +112,8 @@ def to_toml(scene: Scene) -> str:
         out += ["\n[fit]", "unknowns = [" + ", ".join(map(_s, f.unknowns)) + "]",
                 "start = [" + ", ".join(map(_n, f.start)) + "]",
                 "used = [" + ", ".join(map(_s, f.used)) + "]", f"residual = {_n(f.residual)}"]
+        if f.chose:
+            out.append("chose = [" + ", ".join(map(_s, f.chose)) + "]")
     out += _book(scene.book, scene.book_notes)
     return "\n".join(out) + "\n"
 

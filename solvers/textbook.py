@@ -30,7 +30,9 @@ class BookRow:
     exact: float | None  # None when the scene does not produce that value
     verdict: str  # "agrees", "close", "differs", "layout" or "missing"
     note: str = ""
-    fitted: bool = False  # the missing figure was fitted to this value: not a prediction
+    # with a fitted figure: "fitted" (the fit was made to it), "chose" (it picked the layout
+    # among equal fits) or "predicted" (a test of the reconstruction); "" without a fit
+    role: str = ""
 
     @property
     def difference(self) -> float | None:
@@ -59,7 +61,6 @@ def check(scene) -> list[BookRow]:
     exact = exact_values(scene)
     notes = getattr(scene, "book_notes", {})
     fit = getattr(scene, "fit", None)
-    used = set(fit.used) if fit else set()
     rows = []
     for key, book in scene.book.items():
         value = exact.get(key)
@@ -67,5 +68,11 @@ def check(scene) -> list[BookRow]:
         unfitted = fit is not None and fit.residual > PRECISION
         if found == "differs" and (getattr(scene, "layout_assumed", False) or unfitted):
             found = "layout"
-        rows.append(BookRow(key, book, value, found, notes.get(key, ""), key in used))
+        rows.append(BookRow(key, book, value, found, notes.get(key, ""), _role(fit, key)))
     return rows
+
+
+def _role(fit, key: str) -> str:
+    if fit is None:
+        return ""
+    return "fitted" if key in fit.used else "chose" if key in fit.chose else "predicted"

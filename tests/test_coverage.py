@@ -33,3 +33,17 @@ def test_the_check_page_counts_tasks_presets_and_verdicts_per_chapter():
         assert row[t("check.col_presets", "en")] == sum(task.covered for task in mine)
         assert row[t("check.agrees", "en")] == verdicts["agrees"]
         assert row[t("check.layout", "en")] == verdicts["layout"]
+
+
+def test_the_check_page_marks_what_was_fitted_what_chose_the_layout_and_what_is_predicted():
+    at = page("pages/textbook_check.py", lang="en")
+    roles = next(d.value for d in at.dataframe
+                 if t("check.col_role", "en") in d.value.columns
+                 and "members.3.epsilon" in set(d.value[t("check.col_quantity", "en")])
+                 and "points.F.v" in set(d.value[t("check.col_quantity", "en")]))
+    role = dict(zip(roles[t("check.col_quantity", "en")], roles[t("check.col_role", "en")]))
+    assert role["points.C.v"] == t("check.fitted", "en")
+    assert role["members.6.epsilon"] == t("check.chose", "en")
+    assert role["points.F.v"] == t("check.predicted", "en")
+    captions = " ".join(c.value for c in at.caption)
+    assert t("check.fit_chose", "en", chose=2) in captions

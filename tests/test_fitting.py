@@ -15,13 +15,13 @@ FITTED = [pid for pid in preset_ids("linkage") if load_preset(pid).fit]
 
 
 def test_there_are_fitted_presets():
-    assert {"zbirka-2.4", "zbirka-2.6", "zbirka-2.8", "zbirka-2.9", "zbirka-3.2"} <= set(FITTED)
+    assert {"zbirka-2.4", "zbirka-2.6", "zbirka-2.8", "zbirka-2.9", "zbirka-3.2", "zbirka-3.3"} <= set(FITTED)
 
 
 def test_most_predictions_of_the_reconstructions_agree_or_are_close():
     """Issue 22's bar: across the fitted presets, at least three quarters of the printed
     values not used for the fit agree with the reconstruction or are close to it."""
-    predictions = [r for pid in FITTED for r in check(load_preset(pid)) if not r.fitted]
+    predictions = [r for pid in FITTED for r in check(load_preset(pid)) if r.role == "predicted"]
     good = sum(r.verdict in ("agrees", "close") for r in predictions)
     assert len(predictions) >= 10 and good >= 0.75 * len(predictions)
 
@@ -45,9 +45,10 @@ def test_the_fit_is_reproduced_from_the_presets_data(pid):
 def test_fitted_values_are_marked_and_predictions_judged(pid):
     scene = load_preset(pid)
     rows = check(scene)
-    assert {r.key for r in rows if r.fitted} == set(scene.fit.used)
-    assert all(r.verdict in ("agrees", "close") for r in rows if r.fitted)
-    assert any(not r.fitted for r in rows)  # something is left to predict
+    assert {r.key for r in rows if r.role == "fitted"} == set(scene.fit.used)
+    assert {r.key for r in rows if r.role == "chose"} == set(scene.fit.chose)
+    assert all(r.verdict in ("agrees", "close") for r in rows if r.role == "fitted")
+    assert any(r.role == "predicted" for r in rows)  # something is left to predict
 
 
 def test_a_fit_that_misses_the_book_is_not_judged_as_a_reconstruction():
@@ -66,3 +67,14 @@ def test_the_fit_table_is_checked_and_written_back():
         parse_document(text.replace('used = ["points.C.v"', 'used = ["points.Z.v"'))
     with pytest.raises(SceneError, match="fit.start"):
         parse_document(text.replace("start = [0.21, -0.24, 0.02, -0.46]", "start = [0.21]"))
+
+
+def test_values_that_chose_the_layout_are_written_back_and_checked():
+    scene = load_preset("zbirka-3.3")
+    assert scene.fit.chose == ("members.3.epsilon", "members.6.epsilon")
+    text = to_text(scene)
+    assert parse_document(text) == dataclasses.replace(scene, id="zbirka-3.3")
+    with pytest.raises(SceneError, match="fit.chose"):  # a value cannot both fit and choose
+        parse_document(text.replace('chose = ["members.3.epsilon"', 'chose = ["points.C.v"'))
+    with pytest.raises(SceneError, match="fit.chose"):
+        parse_document(text.replace('chose = ["members.3.epsilon"', 'chose = ["points.Z.a"'))

@@ -15,10 +15,10 @@ VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.
 
 
 def book_table(rows: list[BookRow]) -> pd.DataFrame:
-    fitted = any(r.fitted for r in rows)
+    fitted = any(r.role for r in rows)
     return pd.DataFrame([{
         t("check.col_quantity"): r.key,
-        **({t("check.col_role"): t("check.fitted" if r.fitted else "check.predicted")} if fitted else {}),
+        **({t("check.col_role"): t(f"check.{r.role}")} if fitted else {}),
         t("check.col_book"): num(r.book, 6),
         t("check.col_exact"): "—" if r.exact is None else num(r.exact, 6),
         t("check.col_difference"): "—" if r.difference is None else num(r.difference, 3),
@@ -31,10 +31,12 @@ def fit_summary(scene, rows: list[BookRow]) -> None:
     the verdicts of the predictions — or that the fit is no reconstruction at all."""
     if getattr(scene, "fit", None) is None:  # gear trains and rotors are never fitted
         return
-    predictions = [r for r in rows if not r.fitted]
+    predictions = [r for r in rows if r.role == "predicted"]
     good = sum(r.verdict in ("agrees", "close") for r in predictions)
     text = t("check.fit", used=len(scene.fit.used), residual=num(100 * scene.fit.residual, 2),
              good=good, predictions=len(predictions))
+    if scene.fit.chose:
+        text += " " + t("check.fit_chose", chose=len(scene.fit.chose))
     if scene.fit.residual > PRECISION:
         st.warning(t("check.fit_failed", residual=num(100 * scene.fit.residual, 2)))
     else:
