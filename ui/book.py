@@ -12,13 +12,14 @@ from ui.i18n import current, num, t
 
 VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs",
             "layout": "check.layout", "missing": "check.missing"}
+ROLES = {"fitted": "check.fitted", "chose": "check.chose", "predicted": "check.predicted"}
 
 
 def book_table(rows: list[BookRow]) -> pd.DataFrame:
     fitted = any(r.role for r in rows)
     return pd.DataFrame([{
         t("check.col_quantity"): r.key,
-        **({t("check.col_role"): t(f"check.{r.role}")} if fitted else {}),
+        **({t("check.col_role"): t(ROLES[r.role])} if fitted else {}),
         t("check.col_book"): num(r.book, 6),
         t("check.col_exact"): "—" if r.exact is None else num(r.exact, 6),
         t("check.col_difference"): "—" if r.difference is None else num(r.difference, 3),
