@@ -40,7 +40,6 @@ def tasks() -> tuple[Task, ...]:
             preset = f"{text['prefix']}-{number}"
             reason = {}
             if not (PRESETS / f"{preset}.toml").is_file():
-                default = "loops" if text["prefix"] == "analitika" else "fitted"
-                reason = missing.get(preset, missing[default])
+                reason = missing.get(preset, missing["fitted"])
             out.append(Task(text["title"], text["title_sr"], number, preset, reason))
     return tuple(out)

@@ -160,8 +160,9 @@ def _angle_relations(group: Group) -> tuple[tuple[int, ...], dict[int, tuple[int
             if a in angle_of and b not in angle_of:
                 ref, off = angle_of[a]
                 angle_of[b] = (ref, off + lock(inner, b))
-        if j not in angle_of:
-            angle_of[k] = (j, lock(inner, k))
+        if j not in angle_of:  # neither is locked: the guide's angle is the unknown, as the
+            guide, slider = inner.members  # complex-number method writes it (φ₄ of a slotted lever)
+            angle_of[slider] = (guide, lock(inner, slider))
     free = tuple(m for m in (j, k) if m not in angle_of)
     for m in free:
         angle_of[m] = (m, 0.0)
