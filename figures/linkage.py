@@ -57,11 +57,15 @@ def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dic
                      colour: Callable[[int], str] = member_colour,
                      label: Callable[[int], str] | None = None) -> list[dict]:
     """Members as thick lines (a member with three or more points as a closed outline),
-    frame pivots as triangles, sliders as squares on dotted guide lines, point letters.
+    frame pivots as triangles, sliders as squares on dotted guide lines (a circular slot's
+    dotted circle), point letters.
     ``colour`` and ``label`` per member number default to the member's own."""
     traces = []
+    blocks_in_slots = {pair.members[1]: pair.on_slot for pair in scene.pairs if pair.on_slot}
     for number, member in scene.members.items():
-        pts = [positions[p] for p in member.points if p in positions]
+        # a block in a circular slot is drawn as the block, not as its link to the centre
+        shown = [blocks_in_slots[number]] if number in blocks_in_slots else member.points
+        pts = [positions[p] for p in shown if p in positions]
         if len(pts) > 2:
             pts = pts + pts[:1]
         x, y = _xy(pts)
@@ -76,8 +80,17 @@ def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dic
     guide_y: list = []
     blocks = []
     reach = 0.6 * typical_length(scene)
-    sliding = [pair for pair in scene.pairs if pair.kind == "prismatic"]
+    sliding = [pair for pair in scene.pairs if pair.kind == "prismatic" or pair.on_slot]
     for pair in sliding:
+        if pair.on_slot:  # the slot's whole circle: it turns with its guide about its centre
+            centre, at = positions.get(pair.point), positions.get(pair.on_slot)
+            if centre is None or at is None:
+                continue
+            x, y = _xy(list(centre + abs(at - centre) * np.exp(1j * np.linspace(0, 2 * np.pi, 73))))
+            guide_x += x + [None]
+            guide_y += y + [None]
+            blocks.append(at)
+            continue
         at = positions.get(pair.point)
         rot = rotations.get(pair.members[0])
         if at is None or rot is None:

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from . import limits
+from .formula import formula_keys
 from .schema import DRIVER, FRAME, Driver, Fit, Force, Member, Moment, Pair, Scene, Travel
 
 PRESETS = Path(__file__).parent / "presets"
@@ -25,12 +26,12 @@ MAX_BYTES = 100_000  # the largest preset is 4 kB; refused before parsing (800 k
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "pairs", "frame",
             "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes",
-            "scales", "guess", "special", "layout_assumed", "fit"}
+            "scales", "guess", "special", "layout_assumed", "fit", "book_slips"}
 FIT_KEYS = {"unknowns", "start", "used", "residual", "chose"}
 SCALE_KEYS = {"L", "v", "a", "F"}
 TRAVEL_KEYS = {"speed", "wheel_radius", "sprocket_wheel", "sprocket_crank", "angle"}
 MEMBER_KEYS = {"points", "length", "extra", "mass", "centre", "gyration", "label"}
-PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "angle",
+PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "angle", "centre",
              "slider_angle"}
 DRIVER_KEYS = {"member", "type", "at", "omega", "epsilon", "velocity", "acceleration"}
 FORCE_KEYS = {"member", "point", "magnitude", "angle", "follows_member", "label"}
@@ -244,6 +245,8 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
     )
     if "fit" in raw:
         scene = dataclasses.replace(scene, fit=_fit(raw, r, scene.book))
+    if "book_slips" in raw:
+        scene = dataclasses.replace(scene, book_slips=_slips(raw, r, scene.book))
     if scene.guess:
         scene = dataclasses.replace(scene, guess_at=driver.at)
     if "travel" in raw:
@@ -372,14 +375,35 @@ def _pairs(raw: dict, r: _Reader, frame: dict, members: dict[int, Member]) -> tu
                 slider_angle=math.radians(r.number(spec, "slider_angle", where, default=0.0)),
                 name=r.text(spec, "name", where, default=f"{guide}-{slider}"),
             )
+        elif kind == "circular":
+            pair = _circular(spec, r, where, frame, members)
         else:
-            raise r.fail(f"{where}.type", f"must be 'revolute' or 'prismatic', got {kind!r}")
+            raise r.fail(f"{where}.type",
+                         f"must be 'revolute', 'prismatic' or 'circular', got {kind!r}")
         pairs.append(pair)
     names = [p.name for p in pairs]
     for i, name in enumerate(names):
         if name in names[:i]:
             raise r.fail(f"pairs[{i}].name", f"repeats the pair name {name!r}; give one a name")
     return tuple(pairs)
+
+
+def _circular(spec: dict, r: _Reader, where: str, frame: dict, members: dict[int, Member]) -> Pair:
+    """A block in a circular slot of the guide member: the block carries the slot's centre
+    as a point (its distance from the block's point is the radius), shared with the guide."""
+    guide = _member_ref(spec.get("guide"), r, f"{where}.guide", members)
+    slider = _member_ref(spec.get("slider"), r, f"{where}.slider", members)
+    if slider == FRAME or guide == slider:
+        raise r.fail(f"{where}.slider", "must be a moving member other than the guide")
+    point = _point_ref(spec.get("point"), slider, r, f"{where}.point", frame, members)
+    centre = spec.get("centre")
+    for m in (guide, slider):
+        _point_ref(centre, m, r, f"{where}.centre", frame, members)
+    if centre == point:
+        raise r.fail(f"{where}.centre", "must differ from the block's point: the distance "
+                                        "between them is the slot's radius")
+    return Pair("revolute", (guide, slider), centre, on_slot=point,
+                name=r.text(spec, "name", where, default=f"{guide}-{slider}"))
 
 
 def _driver(raw: dict, r: _Reader, members: dict[int, Member], pairs: tuple[Pair, ...]) -> Driver:
@@ -476,14 +500,30 @@ def _fit(raw: dict, r: _Reader, book: dict[str, float]) -> Fit:
         raise r.fail("fit.unknowns", "must list the fitted numbers' paths, e.g. [\"frame.G.0\"]")
     if not (isinstance(start, list) and len(start) == len(unknowns)):
         raise r.fail("fit.start", f"must give one starting value per unknown ({len(unknowns)})")
-    if not (isinstance(used, list) and used and all(k in book for k in used)):
+    if not (isinstance(used, list) and used and all(isinstance(k, str) and k in book for k in used)):
         raise r.fail("fit.used", "must list keys of [book] the fit was made to")
     chose = spec.get("chose", [])
-    if not (isinstance(chose, list) and all(k in book and k not in used for k in chose)):
+    if not (isinstance(chose, list)
+            and all(isinstance(k, str) and k in book and k not in used for k in chose)):
         raise r.fail("fit.chose", "must list keys of [book], not used by the fit, that chose "
                                   "among layouts fitting equally")
     return Fit(tuple(unknowns), tuple(r.number({"v": v}, "v", "fit.start") for v in start),
                tuple(used), r.number(spec, "residual", "fit", non_negative=True), tuple(chose))
+
+
+def _slips(raw: dict, r: _Reader, book: dict[str, float]) -> dict[str, str]:
+    table = raw["book_slips"]
+    if not isinstance(table, dict):
+        raise r.fail("book_slips", "must be a table of formulas keyed like [book], e.g. "
+                                   "\"members.4.epsilon\" = \"points.D.a / 0.91\"")
+    for key, formula in table.items():
+        if key not in book:
+            raise r.fail(f"book_slips.{key}", "must be a key of [book]")
+        try:
+            formula_keys(r.text(table, key, "book_slips"))
+        except ValueError as error:
+            raise r.fail(f"book_slips.{key}", str(error)) from None
+    return dict(table)
 
 
 def _guess(raw: dict, r: _Reader) -> dict[str, complex]:

@@ -48,6 +48,12 @@ class Pair:
     guide's point ``through`` at angle ``angle`` in the guide's frame; ``slider_angle``
     is the same line's direction in the slider's frame, so the slider's orientation
     is locked: θ_slider = θ_guide + angle − slider_angle.
+
+    Circular slot: a revolute pair ``members = (guide, slider)`` at the slot's centre
+    ``point``, with ``on_slot`` the block's point on the arc. A block in a circular slot moves
+    exactly as a link from that point to the centre (every normal of the arc passes through
+    the centre, so the slot's force does too): the solvers treat it as that revolute, the
+    drawing and the relative motion (along the arc, its normal and Coriolis parts) as a slot.
     """
 
     kind: Literal["revolute", "prismatic"]
@@ -57,6 +63,7 @@ class Pair:
     through: str | None = None
     angle: float = 0.0
     slider_angle: float = 0.0
+    on_slot: str | None = None
 
     @property
     def letter(self) -> str:
@@ -187,6 +194,8 @@ class Scene:
     # a printed value that differs says nothing about a slip
     layout_assumed: bool = False
     fit: Fit | None = None  # the figure reconstructed by fitting its printed values
+    # a printed value the book miscalculated, as the book's own formula over exact values
+    book_slips: dict[str, str] = field(default_factory=dict)
 
     def with_loads(self, *, masses: dict[int, float] | None = None,
                    gyrations: dict[int, float] | None = None,

@@ -63,7 +63,7 @@ def from_scene(scene: Scene, positions: Mapping[str, complex]) -> dict:
     book's printed values stay behind (they belong to the task, not to a changed mechanism),
     and the drawing replaces the ±1 signs."""
     doc = tomllib.loads(to_toml(scene))
-    for key in ("book", "book_notes", "layout_assumed", "fit", "assembly", "travel"):
+    for key in ("book", "book_notes", "book_slips", "layout_assumed", "fit", "assembly", "travel"):
         doc.pop(key, None)
     doc["guess"] = drawn(doc, positions)
     return doc
@@ -108,6 +108,10 @@ def tables(doc: dict) -> dict[str, list[dict]]:
                                  "point": p.get("point"), "through": p.get("through"),
                                  "angle": p.get("angle", 0.0),
                                  "slider_angle": p.get("slider_angle", 0.0)})
+        elif p.get("type") == "circular":  # "through" holds the slot's centre
+            out["pairs"].append({"type": "circular", "p": p.get("guide"), "q": p.get("slider"),
+                                 "point": p.get("point"), "through": p.get("centre"),
+                                 "angle": None, "slider_angle": None})
         else:
             p_, q_ = (list(p.get("members", [])) + [None, None])[:2]
             out["pairs"].append({"type": "revolute", "p": p_, "q": q_, "point": p.get("point"),
@@ -176,6 +180,9 @@ def _pair(r: Mapping[str, Any]) -> dict:
                 "point": r.get("point"), "through": r.get("through"),
                 "angle": _num(0.0 if _blank(r.get("angle")) else r["angle"]),
                 "slider_angle": _num(0.0 if _blank(r.get("slider_angle")) else r["slider_angle"])}
+    elif r["type"] == "circular":
+        pair = {"type": "circular", "guide": _int(r.get("p")), "slider": _int(r.get("q")),
+                "point": r.get("point"), "centre": r.get("through")}
     else:
         pair = {"type": r["type"], "members": [_int(r.get("p")), _int(r.get("q"))],
                 "point": r.get("point")}

@@ -50,7 +50,10 @@ def to_toml(scene: Scene) -> str:
         out.append(f"gravity = {_n(scene.gravity)}")
     out.append("\npairs = [")
     for p in scene.pairs:
-        if p.kind == "revolute":
+        if p.on_slot:
+            out.append(f'  {{ type = "circular", guide = {p.members[0]}, slider = {p.members[1]}, '
+                       f'point = {_s(p.on_slot)}, centre = {_s(p.point)}, name = {_s(p.name)} }},')
+        elif p.kind == "revolute":
             out.append(f'  {{ type = "revolute", members = [{p.members[0]}, {p.members[1]}], '
                        f'point = {_s(p.point)}, name = {_s(p.name)} }},')
         else:
@@ -115,6 +118,9 @@ def to_toml(scene: Scene) -> str:
         if f.chose:
             out.append("chose = [" + ", ".join(map(_s, f.chose)) + "]")
     out += _book(scene.book, scene.book_notes)
+    if scene.book_slips:
+        out.append("\n[book_slips]")
+        out += [f"{_s(k)} = {_s(v)}" for k, v in scene.book_slips.items()]
     return "\n".join(out) + "\n"
 
 

@@ -54,7 +54,7 @@ def column(name: str):
     if name in UNITS:
         label = f"{label} [{UNITS[name]}]"
     if name == "type":
-        return st.column_config.SelectboxColumn(label, options=["revolute", "prismatic"])
+        return st.column_config.SelectboxColumn(label, options=["revolute", "prismatic", "circular"])
     if name == "follows_member":
         return st.column_config.CheckboxColumn(label)
     if name in TEXT:

@@ -8,7 +8,7 @@ import streamlit as st
 from mechanisms import load_preset, preset_ids
 from solvers.diagnostics import Unsolvable
 from solvers.textbook import BookRow, check
-from ui.book import VERDICTS, book_table, coverage_table, fit_summary, tasks_table
+from ui.book import COUNTED, VERDICTS, book_table, coverage_table, fit_summary, tasks_table
 from ui.chapters import page_for
 from ui.export import csv_button
 from ui.i18n import t, title_of
@@ -38,8 +38,8 @@ st.title(f":material/fact_check: {t('check.title')}")
 st.write(t("check.intro"))
 checks = all_checks()
 everything = [row for rows in checks.values() if isinstance(rows, list) for row in rows]
-cols = st.columns(4)
-for col, verdict in zip(cols, ("agrees", "close", "differs", "layout")):
+cols = st.columns(len(COUNTED))
+for col, verdict in zip(cols, COUNTED):
     col.metric(t(VERDICTS[verdict]), sum(r.verdict == verdict for r in everything))
 
 st.subheader(t("check.coverage_title"))

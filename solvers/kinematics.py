@@ -76,6 +76,7 @@ class SliderMotion:
     v: np.ndarray | None = None
     a: np.ndarray | None = None
     coriolis: np.ndarray | None = None
+    normal: np.ndarray | None = None  # a circular slot's v²/R towards its centre (complex)
 
 
 @dataclass
@@ -350,8 +351,9 @@ def _collect(scene, structure, at, order, bodies, feasible, transmission, issues
                         n(b.epsilon) if order >= 2 else None)
         for m, b in bodies.items() if m != FRAME}
     member_motion[DRIVER].angle = n(bodies[DRIVER].theta)  # φ₂ exactly as given
-    sliders = {p.name: _slider(scene, p, bodies, order, n) for p in scene.pairs
-               if p.kind == "prismatic" and p.members[0] in bodies and p.members[1] in bodies}
+    sliders = {p.name: (_arc if p.on_slot else _slider)(scene, p, bodies, order, n)
+               for p in scene.pairs if (p.kind == "prismatic" or p.on_slot)
+               and p.members[0] in bodies and p.members[1] in bodies}
     return Motion(scene, structure, at, order, point_motion, member_motion, sliders, feasible,
                   transmission, issues)
 
@@ -375,6 +377,26 @@ def _slider(scene: Scene, pair, bodies: dict[int, Body], order: int, n) -> Slide
     coriolis = n(2j * guide.omega * v * direction)
     a_rel = slider.acceleration(scene_local_p) - guide.acceleration(local_on_guide) - coriolis
     return SliderMotion(s, v, n((np.conj(direction) * a_rel).real), coriolis)
+
+
+def _arc(scene: Scene, pair, bodies: dict[int, Body], order: int, n) -> SliderMotion:
+    """A block in a circular slot: s is the arc from the guide's x-direction through the
+    centre to the block's point (m), v and a its rates along the arc (the block turns
+    about the centre relative to the guide), with the normal part v²/R of the relative
+    acceleration and the Coriolis part 2·ω_guide × v_rel."""
+    guide, slider = bodies[pair.members[0]], bodies[pair.members[1]]
+    local = scene.points_of(pair.members[1])
+    radial = slider.position(local[pair.on_slot]) - slider.position(local[pair.point])
+    radius = abs(local[pair.on_slot] - local[pair.point])
+    s = n(radius * np.angle(radial / guide.rot))
+    if order < 1:
+        return SliderMotion(s)
+    v = n(radius * (slider.omega - guide.omega))
+    if order < 2:
+        return SliderMotion(s, v)
+    tangent = 1j * radial / radius
+    return SliderMotion(s, v, n(radius * (slider.epsilon - guide.epsilon)),
+                        n(2j * guide.omega * v * tangent), n(-v ** 2 / radius * radial / radius))
 
 
 def _ranges(at: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:

@@ -29,9 +29,7 @@ def motion_json(motion: Motion) -> dict:
         "members": {str(n): {"angle_deg": math.degrees(m.angle[0]) % 360.0,
                              "omega": m.omega[0], "epsilon": m.epsilon[0]}
                     for n, m in sorted(motion.members.items())},
-        "sliders": {name: {"s": s.s[0], "v": s.v[0], "a": s.a[0],
-                           "coriolis": [s.coriolis[0].real, s.coriolis[0].imag]}
-                    for name, s in motion.sliders.items()},
+        "sliders": {name: _slide(s) for name, s in motion.sliders.items()},
     }
     if motion.special:
         data["special_points"] = {name: _point(p) for name, p in motion.special.items()}
@@ -41,6 +39,15 @@ def motion_json(motion: Motion) -> dict:
                           "cycle_time": tr.cycle_time, "step_time": tr.step_time(),
                           "step_distance": tr.step_distance()}
     return clean(data)
+
+
+def _slide(s) -> dict:
+    """s (m), v (m/s), a (m/s²) along the guide, the Coriolis part [x, y] (m/s²), and for a
+    circular slot the normal part [x, y] of the relative acceleration."""
+    out = {"s": s.s[0], "v": s.v[0], "a": s.a[0], "coriolis": [s.coriolis[0].real, s.coriolis[0].imag]}
+    if s.normal is not None:
+        out["normal"] = [s.normal[0].real, s.normal[0].imag]
+    return out
 
 
 def _point(p) -> dict:
@@ -179,6 +186,19 @@ def exact_values(scene) -> dict[str, float]:
         return flatten(gears_json(solution))
     motion = solve_instant(scene, None)
     values = flatten(motion_json(motion))
+    values.update(_distances(scene, motion))
     if has_loads(scene):
         values.update(flatten(forces_json(analyse(scene, motion=motion))))
     return values
+
+
+def _distances(scene, motion: Motion) -> dict[str, float]:
+    """A printed distance between two points at the drawn instant ("distances.B-C", m): the
+    book lists such lengths of its figure, e.g. from a moving point to a pivot."""
+    out = {}
+    for key in scene.book:
+        head, _, pair = key.partition(".")
+        a, _, b = pair.partition("-")
+        if head == "distances" and a in motion.points and b in motion.points:
+            out[key] = float(abs(motion.points[a].z[0] - motion.points[b].z[0]))
+    return out

@@ -8,13 +8,19 @@ by at most 2°, a protractor's reading), and *differs* otherwise — most likely
 whose layout is assumed (``layout_assumed``) says *layout* instead of *differs*: its
 printed values belong to a geometry nobody can see. A preset whose figure was
 reconstructed by fitting (``[fit]``) marks the values it was fitted to: the others are
-predictions, and only they test the reconstruction.
+predictions, and only they test the reconstruction. Where a preset writes down the
+book's own miscalculation of a value (``[book_slips]``: the formula the book used, e.g. a_D
+divided by DC where ε needs the tangential part), that formula is evaluated on the exact
+values: a printed value it reproduces is a *slip* — the layout is right, the book's
+arithmetic is not.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from decimal import Decimal
+
+from mechanisms.formula import evaluate
 
 from .report import exact_values
 
@@ -28,11 +34,12 @@ class BookRow:
     key: str  # e.g. "members.4.omega"
     book: float
     exact: float | None  # None when the scene does not produce that value
-    verdict: str  # "agrees", "close", "differs", "layout" or "missing"
+    verdict: str  # "agrees", "close", "slip", "differs", "layout" or "missing"
     note: str = ""
     # with a fitted figure: "fitted" (the fit was made to it), "chose" (it picked the layout
     # among equal fits) or "predicted" (a test of the reconstruction); "" without a fit
     role: str = ""
+    slip: float | None = None  # the book's own formula ([book_slips]) on the exact values
 
     @property
     def difference(self) -> float | None:
@@ -61,14 +68,18 @@ def check(scene) -> list[BookRow]:
     exact = exact_values(scene)
     notes = getattr(scene, "book_notes", {})
     fit = getattr(scene, "fit", None)
+    slips = getattr(scene, "book_slips", {})
     rows = []
     for key, book in scene.book.items():
         value = exact.get(key)
         found = "missing" if value is None else verdict(key, book, value)
+        slip = evaluate(slips[key], exact) if key in slips else None
+        if found == "differs" and slip is not None and verdict(key, book, slip) != "differs":
+            found = "slip"
         unfitted = fit is not None and fit.residual > PRECISION
         if found == "differs" and (getattr(scene, "layout_assumed", False) or unfitted):
             found = "layout"
-        rows.append(BookRow(key, book, value, found, notes.get(key, ""), _role(fit, key)))
+        rows.append(BookRow(key, book, value, found, notes.get(key, ""), _role(fit, key), slip))
     return rows
 
 

@@ -227,7 +227,7 @@ def _named(scene, task_scene, name: str):
     note = f"Variant {name} of {task_scene.source.lower()}: the task's given numbers changed."
     note_sr = (f"Varijanta {name}: zadatak sa izmenjenim zadatim vrednostima."
                if task_scene.title_sr else "")
-    fitted = {"fit": None} if isinstance(scene, Scene) else {}  # fitted to the book's numbers
+    fitted = {"fit": None, "book_slips": {}} if isinstance(scene, Scene) else {}  # the book's numbers
     return dataclasses.replace(scene, id=f"variant-{name}", title=title, title_sr=title_sr,
                                note=note, note_sr=note_sr, book={}, book_notes={}, **fitted)
 

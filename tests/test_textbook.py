@@ -1,5 +1,8 @@
 """Book vs exact: verdicts computed from the data, never from the printed numbers."""
 
+import dataclasses
+import math
+
 import pytest
 
 from mechanisms import load_preset
@@ -30,3 +33,51 @@ def test_task_2_1s_swapped_digits_are_flagged_with_the_reason():
 
 def test_the_tedders_travel_numbers_agree_with_the_book():
     assert {r.verdict for r in check(load_preset("zbirka-1.3"))} == {"agrees"}
+
+
+def test_a_slip_the_book_made_is_reproduced_by_its_own_formula():
+    """2.3: the book divides a_D by DC where ε₄ needs the tangential part; repeating that on
+    the exact a_D gives the printed value, so the layout is right and the arithmetic is not."""
+    from mechanisms import load_preset
+    from solvers.textbook import check
+
+    scene = load_preset("zbirka-2.3")
+    row = {r.key: r for r in check(scene)}["members.4.epsilon"]
+    exact_a_d = {r.key: r for r in check(scene)}["points.D.a"].exact
+    assert row.slip == pytest.approx(-exact_a_d / 0.91)
+    assert row.verdict == "slip"
+    plain = dataclasses.replace(scene, book_slips={})
+    assert {r.key: r for r in check(plain)}["members.4.epsilon"].verdict == "differs"
+
+
+@pytest.mark.parametrize("formula, message", [
+    ('__import__("os").system("true")', "calls only"),
+    ("points.D.a.real", "may use only"),
+    ("x + 1", "not a result key"),
+    ("1 +", "not a formula"),
+])
+def test_a_slip_formula_can_only_compute(formula, message):
+    from mechanisms.formula import formula_keys
+
+    with pytest.raises(ValueError, match=message):
+        formula_keys(formula)
+
+
+def test_a_slip_formula_evaluates_safely():
+    from mechanisms.formula import evaluate
+
+    assert evaluate("sqrt(points.D.a**2 - 16**2) / 0.91", {"points.D.a": 20.0}) == pytest.approx(12 / 0.91)
+    assert evaluate("points.D.a / 0", {"points.D.a": 1.0}) != evaluate("1", {})  # nan, no crash
+    assert evaluate("points.Z.a * 2", {"points.D.a": 1.0}) is None
+    assert math.isnan(evaluate("9.0 ** 9 ** 9", {}))
+
+
+def test_a_slip_must_name_a_printed_value():
+    from mechanisms import SceneError, load_preset, parse_document
+    from mechanisms.writer import to_text
+
+    text = to_text(load_preset("zbirka-2.3"))
+    with pytest.raises(SceneError, match="book_slips"):
+        parse_document(text.replace('"members.4.epsilon" = "-points.D.a', '"members.9.epsilon" = "-points.D.a'))
+    with pytest.raises(SceneError, match="book_slips"):
+        parse_document(text.replace('"-points.D.a / 0.91"', '"open(1)"'))

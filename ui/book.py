@@ -10,8 +10,9 @@ from solvers.textbook import PRECISION, BookRow, check
 from ui.export import show_table
 from ui.i18n import current, num, t
 
-VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs",
+VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs", "slip": "check.slip",
             "layout": "check.layout", "missing": "check.missing"}
+COUNTED = ("agrees", "close", "slip", "differs", "layout")  # the verdicts the check page counts
 ROLES = {"fitted": "check.fitted", "chose": "check.chose", "predicted": "check.predicted"}
 
 
@@ -23,7 +24,9 @@ def book_table(rows: list[BookRow]) -> pd.DataFrame:
         t("check.col_book"): num(r.book, 6),
         t("check.col_exact"): "—" if r.exact is None else num(r.exact, 6),
         t("check.col_difference"): "—" if r.difference is None else num(r.difference, 3),
-        t("check.col_verdict"): t(VERDICTS[r.verdict]), t("check.col_note"): r.note}
+        t("check.col_verdict"): t(VERDICTS[r.verdict]),
+        t("check.col_note"): r.note if r.slip is None else
+        f"{r.note} {t('check.slip_value', value=num(r.slip, 4))}".strip()}
         for r in rows])
 
 
@@ -33,7 +36,7 @@ def fit_summary(scene, rows: list[BookRow]) -> None:
     if getattr(scene, "fit", None) is None:  # gear trains and rotors are never fitted
         return
     predictions = [r for r in rows if r.role == "predicted"]
-    good = sum(r.verdict in ("agrees", "close") for r in predictions)
+    good = sum(r.verdict in ("agrees", "close", "slip") for r in predictions)
     text = t("check.fit", used=len(scene.fit.used), residual=num(100 * scene.fit.residual, 2),
              good=good, predictions=len(predictions))
     if scene.fit.chose:
@@ -61,12 +64,12 @@ def coverage_table(checks: dict[str, list[BookRow] | str]) -> pd.DataFrame:
     for task in tasks():
         row = rows.setdefault(task.chapter, {t("check.col_chapter"): task.chapter,
                                              t("check.col_tasks"): 0, t("check.col_presets"): 0,
-                                             **{t(VERDICTS[v]): 0 for v in ("agrees", "close", "differs", "layout")}})
+                                             **{t(VERDICTS[v]): 0 for v in COUNTED}})
         row[t("check.col_tasks")] += 1
         row[t("check.col_presets")] += task.covered
         found = checks.get(task.preset)
         for r in found if isinstance(found, list) else []:
-            if r.verdict in ("agrees", "close", "differs", "layout"):
+            if r.verdict in COUNTED:
                 row[t(VERDICTS[r.verdict])] += 1
     return pd.DataFrame(sorted(rows.values(), key=lambda r: r[t("check.col_chapter")]))
 
