@@ -58,7 +58,7 @@ def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dic
                      label: Callable[[int], str] | None = None) -> list[dict]:
     """Members as thick lines (a member with three or more points as a closed outline),
     frame pivots as triangles, sliders as squares on dotted guide lines (a circular slot's
-    dotted circle), point letters.
+    dotted arc), point letters.
     ``colour`` and ``label`` per member number default to the member's own."""
     traces = []
     blocks_in_slots = {pair.members[1]: pair.on_slot for pair in scene.pairs if pair.on_slot}
@@ -82,11 +82,12 @@ def mechanism_traces(scene: Scene, positions: dict[str, complex], rotations: dic
     reach = 0.6 * typical_length(scene)
     sliding = [pair for pair in scene.pairs if pair.kind == "prismatic" or pair.on_slot]
     for pair in sliding:
-        if pair.on_slot:  # the slot's whole circle: it turns with its guide about its centre
+        if pair.on_slot:  # the slot's arc about its centre, a quarter circle around the block
             centre, at = positions.get(pair.point), positions.get(pair.on_slot)
             if centre is None or at is None:
                 continue
-            x, y = _xy(list(centre + abs(at - centre) * np.exp(1j * np.linspace(0, 2 * np.pi, 73))))
+            arc = np.exp(1j * np.linspace(-np.pi / 4, np.pi / 4, 25))
+            x, y = _xy(list(centre + (at - centre) * arc))
             guide_x += x + [None]
             guide_y += y + [None]
             blocks.append(at)

@@ -197,6 +197,32 @@ class _Builder:
                Arrow("sliding", k, to.image, a_rel - coriolis, f"a^r_{{{sub}}}", along)]
         return v, acc
 
+    def _arc(self, pair: Pair, frm: Station, to: Station) -> tuple[Arrow, list[Arrow]]:
+        """Across a circular slot, from the block's point B to the guide's point B₄ under it:
+        v_B₄B ⊥ B₄H (H the slot's centre); in accelerations the Coriolis part 2·ω_guide ×
+        v_B₄B, the normal part v²/R along HB and the tangential part ⊥ B₄H."""
+        w, _ = self._omega(pair.members[0])
+        v_rel = self.vel.images[to.image] - self.vel.images[frm.image]
+        a_rel = self.acc.images[to.image] - self.acc.images[frm.image]
+        radial = self.pos[frm.name] - complex(self.m.points[pair.point].z[self.i])
+        radius = abs(radial)
+        sub = f"{to.tex}{frm.tex}"
+        v = Arrow("relative", frm.image, to.image, v_rel, f"v_{{{sub}}}",
+                  ("perp", to.name, pair.point))
+        coriolis = 2j * w * v_rel
+        normal = abs(v_rel) ** 2 / radius * radial / radius  # B₄ relative to the block: from H
+        self.k_count += 1
+        self.n_count += 1
+        k, n = f"k{self.k_count}", f"n{self.n_count}"
+        self.acc.images[k] = self.acc.images[frm.image] + coriolis
+        self.acc.images[n] = self.acc.images[k] + normal
+        acc = [Arrow("coriolis", frm.image, k, coriolis, f"a^k_{{{sub}}}",
+                     ("coriolis", str(pair.members[0]))),
+               Arrow("normal", k, n, normal, f"a^n_{{{sub}}}", ("toward", pair.point, frm.name)),
+               Arrow("tangential", n, to.image, a_rel - coriolis - normal, f"a^t_{{{sub}}}",
+                     ("perp", to.name, pair.point))]
+        return v, acc
+
     # --- the walk --------------------------------------------------------------------------
     def run(self) -> Plans:
         scene = self.scene
@@ -237,23 +263,24 @@ class _Builder:
         """Two chains, one from each outer pair, that meet at the inner pair."""
         j, k = group.members
         outer_j, inner, outer_k = group.pairs
-        if inner.kind == "revolute":
+        sliding = inner.kind == "prismatic" or inner.on_slot
+        if not sliding:
             meet = {j: Station(j, inner.point), k: Station(k, inner.point)}
             target = meet[j]
-        else:
+        else:  # the guide's point under the block's (B₄ under B) is where the chains meet
             guide, slider = inner.members
-            meet = {guide: Station(guide, inner.point, coincident=True),
-                    slider: Station(slider, inner.point)}
+            at = inner.on_slot or inner.point
+            meet = {guide: Station(guide, at, coincident=True), slider: Station(slider, at)}
             target = meet[guide]
-        if inner.kind == "prismatic":  # B₄ sits where the slider's point is
             self._place(meet[slider])
             self._place(target, self.pos[meet[slider].name])
         chains = [self._chain(member, outer, meet[member])
                   for member, outer in ((j, outer_j), (k, outer_k))]
-        if inner.kind == "prismatic":  # the slider's chain continues across the pair
+        if sliding:  # the slider's chain continues across the pair
             side = 0 if slider == j else 1
             start, v_arrows, a_arrows = chains[side]
-            v, acc = self._slide(inner, meet[slider], target)
+            move = self._arc if inner.on_slot else self._slide
+            v, acc = move(inner, meet[slider], target)
             chains[side] = (start, [*v_arrows, v], [*a_arrows, *acc])
         self._record(group.label(), target, chains)
 

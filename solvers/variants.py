@@ -241,6 +241,8 @@ def unit_of(key: str) -> str:
     """The unit of a result key (members.4.omega → s⁻¹; ratios are pure numbers)."""
     if key.startswith("ratios."):
         return "–"
+    if key.startswith("distances."):  # a length of the figure at the drawn instant
+        return "m"
     last = key.rsplit(".", 1)[-1]
     return UNITS.get(last.removesuffix("_zhukovsky").removesuffix("_power_balance"), "")
 
@@ -376,7 +378,8 @@ SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 def symbol(key: str) -> str:
     """A result key as the course writes the quantity: points.E.v → v_E, members.3.omega →
-    ω₃, reactions.1-2.magnitude → F₁₂, corrections.I.mass → m_I, ratios.2-7 → i₂₇."""
+    ω₃, reactions.1-2.magnitude → F₁₂, corrections.I.mass → m_I, ratios.2-7 → i₂₇,
+    distances.B-C → BC."""
     parts = key.split(".")
     head, last = parts[0], parts[-1]
     if head == "points":
@@ -391,6 +394,8 @@ def symbol(key: str) -> str:
         return "i" + parts[1].replace("-", "").translate(SUBSCRIPT)
     if head == "corrections":
         return ("φ" if last == "angle_deg" else last[0]) + "_" + parts[1]
+    if head == "distances":
+        return parts[1].replace("-", "")
     if head == "driving":
         return {"torque": "M_p", "force": "F_p", "power": "P"}.get(last, last)
     return key

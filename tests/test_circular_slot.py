@@ -63,7 +63,7 @@ def test_the_json_gives_the_slots_normal_part():
     assert "sliders.6-5.s" in values
 
 
-def test_the_slot_is_drawn_as_a_circle_and_the_block_without_its_link():
+def test_the_slot_is_drawn_as_an_arc_and_the_block_without_its_link():
     scene = load_preset("zbirka-2.3")
     m = solve_instant(scene, None)
     traces = mechanism_traces(scene, *pose(m, 0), t=lambda key, **v: key)
@@ -74,7 +74,7 @@ def test_the_slot_is_drawn_as_a_circle_and_the_block_without_its_link():
     ys = np.array([y for y in guides["y"] if y is not None], dtype=float)
     centre = m.points["H"].z[0]
     on_circle = np.isclose(np.abs(xs + 1j * ys - centre), 0.65, atol=1e-9)
-    assert on_circle.sum() >= 70
+    assert on_circle.sum() >= 25
     members = [tr for tr in traces if tr.get("mode") == "lines+markers"]
     block3 = members[list(scene.members).index(3)]
     assert len(block3["x"]) == 1  # the block alone, not a line to the centre
@@ -88,3 +88,23 @@ def test_a_wrong_slot_is_refused_with_the_reason(change, message):
     text = to_text(load_preset("zbirka-2.3"))
     with pytest.raises(SceneError, match="centre"):
         parse_document(text.replace(change, message))
+
+
+def test_the_plans_cross_the_slot_the_books_way():
+    """v_B₄ = v_B + v_B₄B (⊥ B₄H) = v_C + v_B₄C, and a_B₄ = a_B + a^k + a^n (v²/R) + a^t."""
+    from solvers.plans import build
+
+    scene = load_preset("zbirka-2.3")
+    m = solve(scene, [scene.driver.at], order=2)
+    plans = build(m)
+    step = next(s for s in plans.acceleration.steps if s.target == "b4")
+    arrows = {a.kind: a for start, side in step.sides if start == "b" for a in side}
+    b, h, c = (m.points[p].z[0] for p in "BHC")
+    w4, e4 = m.members[4].omega[0], m.members[4].epsilon[0]
+    assert plans.velocity.images["b4"] == pytest.approx(1j * w4 * (b - c), abs=1e-12)
+    assert plans.acceleration.images["b4"] == pytest.approx((1j * e4 - w4 ** 2) * (b - c), abs=1e-9)
+    v_rel = plans.velocity.images["b4"] - plans.velocity.images["b"]
+    assert abs(arrows["coriolis"].value) == pytest.approx(2 * abs(w4) * abs(v_rel), rel=1e-12)
+    assert abs(arrows["normal"].value) == pytest.approx(abs(v_rel) ** 2 / 0.65, rel=1e-12)
+    assert (arrows["tangential"].value * (b - h).conjugate()).real == pytest.approx(0, abs=1e-9)
+    assert plans.acceleration.closure() < 1e-9
