@@ -8,7 +8,7 @@ import streamlit as st
 from figures.style import nice_scale
 from figures.gears import schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
-from solvers.gears import TrainError, geometry_notes, solve_train, willis_table
+from solvers.gears import TrainError, geometry_notes, solve_train, stages, willis_table
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.export import chart, show_table
@@ -128,6 +128,11 @@ with main:
                                       if w.carrier is not None else f"ω{w.a}/ω{w.b}"),
             t("gears.col_radii"): num(w.ratio, 5), t("gears.col_solved"): num(w.check(solution.omega), 5)}
             for w in willis_table(train)]), f"{train.id}-willis.csv", "csv_willis")
+        st.markdown(f"**{t('gears.stages_title')}**")
+        for stage in stages(solution):
+            st.latex(stage.latex)
+            st.caption(t("gears.stage_fixed") if stage.carrier is None
+                       else t("gears.stage_carrier", carrier=stage.carrier))
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")
 
 with main:

@@ -56,6 +56,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--at", type=float, help="driver coordinate: φ₂ in degrees for a rotating "
                                              "driver, s in metres for a linear one")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
+    p.add_argument("--stages", action="store_true", help="a gear train: also each carrier's "
+                                                       "stage (speeds relative to it, Willis ratio)")
     p.set_defaults(run=_solve)
     p = sub.add_parser("plan", help="the velocity and acceleration plans at one instant")
     _scene_arguments(p)
@@ -178,13 +180,13 @@ def _solve_rotor(rotor: Rotor, as_json: bool) -> int:
     return 0
 
 
-def _solve_gears(train: GearTrain, as_json: bool) -> int:
+def _solve_gears(train: GearTrain, as_json: bool, with_stages: bool = False) -> int:
     solution = solve_train(train)
     if solution.status != "solved":
         raise Unsolvable(solution.message)
     if solution.message:
         print(f"note: {solution.message}", file=sys.stderr)
-    data = gears_json(solution)
+    data = gears_json(solution, with_stages)
     if as_json:
         return _print_json(data)
     print(f"{train.id} — {train.title}\n\ndegrees of freedom: {data['dof']}\n")
@@ -196,6 +198,15 @@ def _solve_gears(train: GearTrain, as_json: bool) -> int:
         print(f"i {pair:8s} {'∞ (does not rotate)' if ratio == 'inf' else f'{ratio:.6g}'}")
     for name, v in data.get("points", {}).items():
         print(f"v_{name} = {v:.6g} m/s")
+    for stage in data.get("stages", []):
+        c = stage["carrier"]
+        a, b = stage["ends"]
+        seen = "fixed axes" if c is None else f"carrier {c}"
+        minus = "" if c is None else f" − ω{c}"
+        print(f"\nstage, {seen}: " + ", ".join(f"ω{m}{minus} = {w:.6g}"
+                                                for m, w in stage["relative"].items()))
+        print(f"  i{a},{b} = {stage['ratio']:.6g} from the radii, {stage['solved']:.6g} from the speeds"
+              if stage["ratio"] is not None else f"  i{a},{b} = {stage['solved']:.6g} from the speeds")
     return 0
 
 
@@ -204,7 +215,7 @@ def _solve(args) -> int:
     if isinstance(scene, Rotor):
         return _solve_rotor(scene, args.json)
     if isinstance(scene, GearTrain):
-        return _solve_gears(scene, args.json)
+        return _solve_gears(scene, args.json, args.stages)
     motion = solve_instant(scene, args.at)
     for issue in motion.issues:
         print(f"warning: {explain_singular(scene, motion.at[0], issue.group, issue.worst_condition)}",

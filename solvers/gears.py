@@ -180,3 +180,108 @@ def solve_train(train: GearTrain) -> TrainSolution:
                              message="the input is at rest, so every member is at rest; the "
                                      "ratios are the train's own (the same for any input speed)")
     return TrainSolution(train, omega, dof, "solved")
+
+
+@dataclass(frozen=True)
+class Stage:
+    """The meshes seen from one carrier (None: the gears on fixed axes), the way the book
+    solves a train stage by stage: each member's speed relative to the carrier, and the
+    stage's Willis ratio between its two end members, from the radii (∓ the product of the
+    mesh ratios along the stage) and from the solved speeds."""
+
+    carrier: int | None
+    members: tuple[int, ...]  # the stage's gears, in mesh order
+    relative: dict[int, float]  # ω_m − ω_c, rad/s
+    ends: tuple[int, int]  # a, b of i^c_ab = (ω_a − ω_c)/(ω_b − ω_c)
+    ratio: float | None  # from the radii (None when the ends are not joined by the stage)
+    solved: float  # from the speeds (NaN when ω_b = ω_c)
+
+    @property
+    def latex(self) -> str:
+        """i^c_ab = (ω_a − ω_c)/(ω_b − ω_c) = (numbers) = value, = the radii's value."""
+        a, b = self.ends
+        c = self.carrier
+        if c is None:
+            head = f"i_{{{a},{b}}} = \\frac{{\\omega_{{{a}}}}}{{\\omega_{{{b}}}}}"
+        else:
+            head = (f"i^{{{c}}}_{{{a},{b}}} = \\frac{{\\omega_{{{a}}} - \\omega_{{{c}}}}}"
+                    f"{{\\omega_{{{b}}} - \\omega_{{{c}}}}}")
+        numbers = f"\\frac{{{self.relative[a]:.5g}}}{{{self.relative[b]:.5g}}}"
+        out = f"{head} = {numbers} = {self.solved:.5g}"
+        return out if self.ratio is None else f"{out},\\quad \\text{{radii: }} {self.ratio:.5g}"
+
+
+def stages(solution: TrainSolution) -> list[Stage]:
+    """One stage per carrier (the frame's first), with its ends: the two central gears a
+    planetary stage turns between (sun and ring), or a fixed-axes chain's first and last."""
+    train, omega = solution.train, solution.omega
+    table = willis_table(train)
+    out = []
+    for carrier in dict.fromkeys(w.carrier for w in table):
+        own = [w for w in table if w.carrier == carrier]
+        members = tuple(dict.fromkeys(m for w in own for m in (w.a, w.b)))
+        edges = _stage_edges(train, own, members)
+        central = [m for m in members if train.members[m].carrier is None]
+        ends = _ends(edges, central if carrier is not None and len(central) >= 2 else members)
+        c = 0.0 if carrier is None else omega.get(carrier, math.nan)
+        relative = {m: omega.get(m, math.nan) - c for m in members}
+        below = relative[ends[1]]
+        scale = max((abs(w) for w in omega.values()), default=1.0) or 1.0
+        solved = relative[ends[0]] / below if abs(below) > 1e-9 * scale else math.nan
+        out.append(Stage(carrier, members, relative, ends, _path_ratio(edges, *ends), solved))
+    return out
+
+
+def _stage_edges(train: GearTrain, meshes: list[Willis], members: tuple[int, ...]) -> dict:
+    """member → {neighbour: (ω_m − ω_c)/(ω_n − ω_c)}: meshes, and shafts joining two of the
+    stage's gears (they turn together, so the ratio is 1)."""
+    edges: dict[int, dict[int, float]] = {m: {} for m in members}
+    for w in meshes:
+        edges[w.a][w.b] = w.ratio
+        edges[w.b][w.a] = 1.0 / w.ratio
+    for shaft in train.shafts:
+        on = [m for m in shaft if m in edges]
+        for a in on:
+            for b in on:
+                if a != b:
+                    edges[a][b] = 1.0
+    return edges
+
+
+def _ends(edges: dict, candidates: list[int] | tuple[int, ...]) -> tuple[int, int]:
+    """The two candidates farthest apart along the stage (its first and last gear)."""
+    best = (candidates[0], candidates[-1])
+    longest = -1
+    for a in candidates:
+        hops = _hops(edges, a)
+        for b in candidates:
+            if b != a and hops.get(b, -1) > longest:
+                best, longest = (a, b), hops[b]
+    return best
+
+
+def _hops(edges: dict, start: int) -> dict[int, int]:
+    seen, frontier = {start: 0}, [start]
+    while frontier:
+        nxt = []
+        for m in frontier:
+            for n in edges[m]:
+                if n not in seen:
+                    seen[n] = seen[m] + 1
+                    nxt.append(n)
+        frontier = nxt
+    return seen
+
+
+def _path_ratio(edges: dict, a: int, b: int) -> float | None:
+    """The product of the mesh ratios along the stage from a to b (breadth first)."""
+    ratio, frontier = {a: 1.0}, [a]
+    while frontier and b not in ratio:
+        nxt = []
+        for m in frontier:
+            for n, r in edges[m].items():
+                if n not in ratio:
+                    ratio[n] = ratio[m] * r
+                    nxt.append(n)
+        frontier = nxt
+    return ratio.get(b)

@@ -12,7 +12,7 @@ from mechanisms.rotor import Rotor
 
 from .balancing import Balance, balance
 from .diagnostics import Unsolvable, solve_instant
-from .gears import TrainSolution, solve_train
+from .gears import TrainSolution, solve_train, stages
 from .kinematics import Motion
 from .kinetostatics import Kinetostatics, analyse
 from .plans import Plans, is_construction
@@ -132,9 +132,10 @@ def rotor_json(result: Balance) -> dict:
                   "residual": {"force": result.residual_force, "moment": result.residual_moment}})
 
 
-def gears_json(solution: TrainSolution) -> dict:
+def gears_json(solution: TrainSolution, with_stages: bool = False) -> dict:
     """The solved train: ω of every member, ratios from each input (and any the book quotes),
-    the named points' peripheral velocities and the degrees of freedom."""
+    the named points' peripheral velocities and the degrees of freedom; with ``with_stages``
+    each carrier's stage (``solvers.gears.stages``)."""
     train = solution.train
     pairs = {(i.member, m) for i in train.inputs for m in train.members if m != i.member}
     pairs |= {tuple(int(x) for x in k.split(".")[1].split("-")) for k in train.book
@@ -145,6 +146,12 @@ def gears_json(solution: TrainSolution) -> dict:
             "dof": solution.dof}
     if train.points:
         data["points"] = {name: solution.velocity(m, r) for name, (m, r) in train.points.items()}
+    if with_stages:
+        data["stages"] = [{"carrier": s.carrier, "members": list(s.members),
+                           "relative": {str(m): w for m, w in s.relative.items()},
+                           "ends": list(s.ends), "ratio": s.ratio,
+                           "solved": None if math.isnan(s.solved) else s.solved}
+                          for s in stages(solution)]
     return clean(data)
 
 

@@ -167,3 +167,15 @@ def test_a_damaged_link_on_the_command_line_is_a_clear_error():
     assert out.returncode == 2 and "link: the parameter is damaged" in out.stderr
     both = run("solve", "zbirka-2.1", "--link", "s=1abc")
     assert both.returncode == 2 and "not both" in both.stderr
+
+
+def test_a_gear_trains_stages_come_with_stages_json():
+    data = json.loads(run("solve", "zbirka-6.1", "--stages", "--json").stdout)
+    carriers = [s["carrier"] for s in data["stages"]]
+    assert carriers == [2, None, 13]
+    stage = data["stages"][0]
+    assert stage["ends"] == [4, 5] and stage["ratio"] == pytest.approx(-0.28125)
+    assert stage["relative"]["4"] == pytest.approx(-data["members"]["2"]["omega"])  # ring 4 is fixed
+    assert "stages" not in json.loads(run("solve", "zbirka-6.1", "--json").stdout)
+    text = run("solve", "zbirka-6.1", "--stages").stdout
+    assert "stage, carrier 13" in text and "i10,12 = -0.28 from the radii" in text

@@ -137,3 +137,22 @@ def test_every_willis_relation_holds_for_the_solved_speeds(pid):
         solved = w.check(solution.omega)
         if not math.isnan(solved):
             assert solved == pytest.approx(w.ratio, rel=1e-9), (w.a, w.b)
+
+
+def test_task_6_1_stage_by_stage_gives_each_carriers_willis_ratio_from_the_radii():
+    """The book's stages: seen from carrier 2, ring 4 to sun 5 is −R5/R4; seen from carrier
+    13, ring 10 to sun 12 is −R12/R10; the fixed-axes chain 6…10 is R7/R6·(−R9/R8)·(−R10/R9)
+    with 7 and 8 on one shaft. Each equals the same ratio from the solved speeds."""
+    from solvers.gears import stages
+
+    solution = solve_train(load_preset("zbirka-6.1"))
+    found = {s.carrier: s for s in stages(solution)}
+    assert found[2].ends == (4, 5) and found[2].ratio == pytest.approx(-0.18 / 0.64)
+    assert found[13].ends == (10, 12) and found[13].ratio == pytest.approx(-0.14 / 0.5)
+    assert found[None].ends == (6, 10)
+    assert found[None].ratio == pytest.approx(0.135 / 1.01 * (-0.094 / 0.09) * (-0.6 / 0.094))
+    for stage in found.values():
+        assert stage.solved == pytest.approx(stage.ratio, rel=1e-9)
+        c = 0.0 if stage.carrier is None else solution.omega[stage.carrier]
+        assert stage.relative == {m: pytest.approx(solution.omega[m] - c) for m in stage.members}
+    assert r"i^{2}_{4,5}" in found[2].latex and "-0.28125" in found[2].latex

@@ -59,3 +59,13 @@ def test_a_link_carries_the_edited_meshes_and_inputs():
 def test_a_broken_table_in_a_link_falls_back_to_the_scene():
     at = linked("pages/planetary_gears.py", scene="zbirka-6.8", lang="en", meshes="1,x;2")
     assert not at.exception and not at.error
+
+
+@pytest.mark.parametrize("lang", ["sr", "en", "sr-cyrl"])
+def test_the_willis_equations_are_written_stage_by_stage(lang):
+    at = page("pages/planetary_gears.py", lang=lang, scene="zbirka-6.1")
+    assert not at.exception
+    equations = [x.value for x in at.latex]
+    assert any(r"i^{2}_{4,5}" in e and "-0.28125" in e for e in equations)
+    assert any(r"i^{13}_{10,12}" in e for e in equations)
+    assert any(r"i_{6,10} = \frac{\omega_{6}}{\omega_{10}}" in e for e in equations)
