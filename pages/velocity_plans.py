@@ -122,6 +122,8 @@ if tab_plans.open:
         index = step - 1
         st.latex(steps[index].latex)
         st.latex(plans.acceleration.steps[index].latex)
+        if any(a.kind == "coriolis" for _, side in plans.acceleration.steps[index].sides for a in side):
+            st.caption(t("plans.extension", point=steps[index].target.upper()))
         left, right = st.columns(2)
         for column, plan, key, title in ((left, plans.velocity, "v", "plans.velocity_title"),
                                          (right, plans.acceleration, "a", "plans.acceleration_title")):

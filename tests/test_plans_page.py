@@ -113,3 +113,13 @@ def test_the_legend_names_each_kind_of_arrow_once_from_the_arrows_themselves():
     for entry in named:
         group = [tr for tr in figure["data"] if tr.get("legendgroup") == entry["legendgroup"]]
         assert {tr["line"]["color"] for tr in group} == {entry["line"]["color"]}
+
+
+@pytest.mark.parametrize("lang, words", [("sr", "metodom proširenja"), ("en", "method of extension")])
+def test_a_coincident_point_is_named_with_the_method_of_extension(lang, words):
+    """Task 2.3, step 2: B₄ of the slotted rocker under the block, with its Coriolis part."""
+    at = page(PAGE, lang=lang, scene="zbirka-2.3", step=2)
+    assert "B_{4}" in at.latex[0].value
+    assert any(words in c.value and "B4" in c.value for c in at.caption)
+    at.slider(key="step").set_value(1).run()  # the crank alone: no coincident point
+    assert not any(words in c.value for c in at.caption)
