@@ -179,3 +179,97 @@ def field_figure(times: np.ndarray, field: np.ndarray, relative: np.ndarray, poi
         text=[numbered(point, (i % 12) + 1) for i in range(len(marks))], textposition="top center",
         textfont=dict(size=look.font - 2), marker=dict(size=6 * look.line, color=path_colour(1)))])
     return plane_layout(fig, title, look)
+
+
+def compass_figure(scene: Scene, steps: list, texts: list[str], title: str, t: Text,
+                   look: Look = NORMAL) -> RawFigure:
+    """The compass construction (``solvers.compass``) one step per animation frame, with a
+    step slider and a play button that run in the browser: the arcs drawn so far in pencil,
+    this step's arcs in colour, the points found so far with their numbers, and at the end
+    each path through its 12 points. Each frame's title says what the step draws."""
+    fig = RawFigure()
+    pivots = list(scene.frame.values())
+    fig.add_raw([scatter(x=[z.real for z in pivots], y=[z.imag for z in pivots], mode="markers+text",
+                         text=list(scene.frame), textposition="bottom center", name=t("fig.frame"),
+                         hoverinfo="skip", marker=dict(symbol="triangle-up", size=14 * look.line,
+                                                       color=FRAME_COLOUR))])
+    near = _arc_targets(steps)
+
+    def drawn(upto: int) -> list[dict]:
+        old, new, found, paths = [], [], {}, []
+        for s, step in enumerate(steps[:upto + 1]):
+            for k, (centre, radius) in enumerate(step.arcs):
+                arc = _arc(centre, radius, near.get((s, k)), full=step.what == "crank")
+                (new if s == upto else old).append(arc)
+            found.update(step.found)
+            if step.what == "path":
+                paths.append(_closed(np.array(list(step.found.values()))))
+        pencil = dict(color="#999999", width=1 * look.line)
+        return [scatter(**_gapped(old), mode="lines", hoverinfo="skip", name=t("fig.compass"),
+                        line=pencil),
+                scatter(**_gapped(new), mode="lines", hoverinfo="skip", showlegend=False,
+                        line=dict(color=path_colour(1), width=2.5 * look.line)),
+                scatter(**_gapped(paths), mode="lines", hoverinfo="skip", showlegend=False,
+                        line=dict(color=path_colour(0), width=2 * look.line, shape="spline")),
+                scatter(x=[z.real for z in found.values()], y=[z.imag for z in found.values()],
+                        mode="markers+text", text=list(found), textposition="top center",
+                        hoverinfo="text", showlegend=False, textfont=dict(size=look.font),
+                        marker=dict(size=6 * look.line, color=path_colour(0)))]
+
+    last = len(steps) - 1
+    whole = drawn(last)
+    indices = fig.add_raw(whole)
+    fig.add_frames([dict(data=drawn(s), traces=indices, name=str(s),
+                         layout=dict(title=dict(text=texts[s]))) for s in range(len(steps))])
+    x = np.array([v for trace in whole for v in trace["x"] if v is not None] + [z.real for z in pivots])
+    y = np.array([v for trace in whole for v in trace["y"] if v is not None] + [z.imag for z in pivots])
+    pad = 0.05 * max(np.ptp(x), np.ptp(y), 1e-9)  # every arc and point stays in the frame
+    fig.merge_layout(dict(
+        xaxis=dict(range=[float(x.min() - pad), float(x.max() + pad)], autorange=False),
+        yaxis=dict(range=[float(y.min() - pad), float(y.max() + pad)], autorange=False)))
+    go = dict(frame=dict(duration=700, redraw=True), transition=dict(duration=0),
+              fromcurrent=True, mode="immediate")
+    jump = dict(frame=dict(duration=0, redraw=True), mode="immediate")
+    fig.merge_layout(dict(
+        updatemenus=[dict(type="buttons", direction="left", x=0.0, y=-0.08, xanchor="left",
+                          yanchor="top", showactive=False, font=dict(size=look.font + 2),
+                          pad=dict(t=10, r=10),
+                          buttons=[dict(label="▶ " + t("fig.play"), method="animate", args=[None, go]),
+                                   dict(label="■ " + t("fig.pause"), method="animate",
+                                        args=[[None], dict(frame=dict(duration=0, redraw=False),
+                                                           mode="immediate")])])],
+        sliders=[dict(active=last, x=0.36, y=-0.08, len=0.64, yanchor="top", pad=dict(t=10),
+                      currentvalue=dict(prefix=t("fig.step") + " ", font=dict(size=look.font + 2)),
+                      steps=[dict(label=str(s + 1), method="animate", args=[[str(s)], jump])
+                             for s in range(len(steps))])]))
+    plane_layout(fig, texts[last], look)
+    room = margins(fig, look.font)["b"] + 4 * look.font + 30
+    fig.merge_layout(dict(margin=dict(b=room)))
+    return fig
+
+
+def _arc_targets(steps: list) -> dict[tuple[int, int], complex]:
+    """Where each arc of an "arc" step will be crossed: the point its group's next "meet"
+    step finds (a student draws the arc only near there)."""
+    out = {}
+    for s, step in enumerate(steps):
+        if step.what in ("arc", "meet"):
+            meet = step if step.what == "meet" else next(m for m in steps[s + 1:] if m.what == "meet")
+            for k in range(len(step.arcs)):
+                out[(s, k)] = next(iter(meet.found.values()))
+    return out
+
+
+def _arc(centre: complex, radius: float, near: complex | None, full: bool = False) -> np.ndarray:
+    if full or near is None:
+        return centre + radius * np.exp(1j * np.linspace(0, 2 * np.pi, 121))
+    mid = np.angle(near - centre)
+    return centre + radius * np.exp(1j * (mid + np.linspace(-0.35, 0.35, 25)))
+
+
+def _gapped(curves: list[np.ndarray]) -> dict:
+    xs, ys = [], []
+    for c in curves:
+        xs += list(c.real) + [None]
+        ys += list(c.imag) + [None]
+    return dict(x=xs, y=ys)

@@ -9,8 +9,9 @@ import pandas as pd
 import streamlit as st
 
 from figures.style import Look
-from figures.trajectories import animation_figure, construction_figure, field_figure
+from figures.trajectories import animation_figure, compass_figure, construction_figure, field_figure
 from mechanisms.schema import Scene, Travel
+from solvers.compass import construction as compass_steps
 from solvers.diagnostics import dead_zones, format_range
 from solvers.paths import (animation_order, cycle_time, field_path, loops_backward,
                            path_errors, path_length, solve_times, strokes, swings)
@@ -60,6 +61,18 @@ def animation(scene: Scene, steps: int, points: tuple[str, ...], language: str, 
 controls, main = st.columns([1, 3], gap="large")
 
 
+COMPASS = {"crank": "compass.crank", "arc": "compass.arc", "meet": "compass.meet",
+           "group": "compass.group", "offset": "compass.offset", "path": "compass.path"}
+
+
+def compass_texts(steps: list) -> list[str]:
+    """What each step of the compass construction draws, in the page's language."""
+    def words(step) -> str:
+        values = {k: num(v, 4) if isinstance(v, float) else v for k, v in step.values.items()}
+        return t(COMPASS[step.what], **values)
+    return [t("compass.step", k=k + 1, n=len(steps), text=words(s)) for k, s in enumerate(steps)]
+
+
 def crank_pin(scene: Scene) -> str:
     """The driving member's moving point (B of tasks 1.1, C of 1.2): always numbered."""
     member = scene.members[2]
@@ -106,7 +119,7 @@ with controls:
     seed(defaults(base), st.session_state["scene"])
     steps = st.select_slider(t("traj.resolution"), RESOLUTIONS, value=360, key="res",
                              bind="query-params")
-    views = {"steps": "traj.view_steps", "smooth": "traj.view_smooth"}
+    views = {"steps": "traj.view_steps", "smooth": "traj.view_smooth", "compass": "traj.view_compass"}
     view = url_choice(st.radio, t("traj.view"), list(views), "view",
                       format_func=lambda v: t(views[v]), horizontal=True)
     movable = [p for p in base.point_names if p not in base.frame]
@@ -136,8 +149,12 @@ with main:
     if tab_paths.open:
         started = time.perf_counter()
         numbered = list(dict.fromkeys([crank_pin(scene), *points]))
-        fig = construction_figure(construction, fine if view == "smooth" else None, numbered,
-                                  title_of(scene), t, look())
+        if view == "compass":
+            steps_drawn = compass_steps(construction, points)
+            fig = compass_figure(scene, steps_drawn, compass_texts(steps_drawn), title_of(scene), t, look())
+        else:
+            fig = construction_figure(construction, fine if view == "smooth" else None, numbered,
+                                      title_of(scene), t, look())
         figure_ms = (time.perf_counter() - started) * 1e3
         with tab_paths:
             chart(fig, f"{scene.id}-paths", key="paths")
