@@ -83,7 +83,7 @@ except Unsolvable as exc:
     with main:
         st.error(t("plans.unsolvable", reason=str(exc)))
     st.stop()
-except StructureError:  # a class III group: plans.build draws class II groups only
+except StructureError:  # a class III group without its special point S at this instant
     with main:
         group = next(g for g in instant(scene).structure.groups if g.cls == 3)
         st.info(t("plans.not_drawn", group=group.label()))

@@ -21,7 +21,7 @@ import numpy as np
 
 from mechanisms.schema import DRIVER, FRAME, Pair, Scene
 
-from .kinematics import Motion
+from .kinematics import Motion, special_pairs
 from .structure import Group, StructureError
 
 POLE = "p"
@@ -108,13 +108,10 @@ class Plans:
 def build(motion: Motion, i: int = 0) -> Plans:
     """Both plans at position ``i`` of a motion solved with ``order=2``.
 
-    Raises ``StructureError`` for a class III group: its plan starts from the special
-    point S (``Motion.special``), which this walk does not draw yet."""
-    for group in motion.structure.groups:
-        if group.cls == 3:
-            raise StructureError(f"the plans are drawn step by step for class II groups; "
-                                 f"{group.label()} is a class III group, solved through its "
-                                 "special point S on the Assur groups page")
+    A class III group is drawn the book's way, through its special point S (where the lines
+    of two binary members meet, ``Motion.special``). Raises ``StructureError`` for a class
+    III group without one (a binary member that slides on the ternary member), or at an
+    instant where the two lines are parallel."""
     return _Builder(motion, i).run()
 
 
@@ -233,7 +230,7 @@ class _Builder:
         self._driver()
         for group in self.m.structure.groups:
             if all(m in self.m.members for m in group.members):
-                self._group(group)
+                (self._triad if group.cls == 3 else self._group)(group)
         for member in [DRIVER, *(m for g in self.m.structure.groups for m in g.members)]:
             if member in self.m.members:
                 self._similar(member)
@@ -283,6 +280,86 @@ class _Builder:
             v, acc = move(inner, meet[slider], target)
             chains[side] = (start, [*v_arrows, v], [*a_arrows, *acc])
         self._record(group.label(), target, chains)
+
+    def _triad(self, group: Group) -> None:
+        """A class III group through its special point S: S lies on the lines of two binary
+        members, so S's image is found from their two known ends like a dyad's joint; then
+        the third binary member's joint on the ternary member from S, as in a dyad; the rest
+        by similarity."""
+        name, b1, b2 = next(((n, a, b) for n, (g, a, b) in special_pairs(self.scene, [group]).items()),
+                            (None, 0, 0))
+        special = self.m.special.get(name) if name else None
+        if special is None or not np.isfinite(special.z[self.i]):
+            raise StructureError(f"{group.label()} has no special point S at this instant (the "
+                                 "lines of its binary members are parallel, or a binary member "
+                                 "slides on the ternary member): its plan cannot start from S")
+        ternary = group.members[0]
+        target = Station(ternary, name)
+        self.pos[target.name] = complex(special.z[self.i])
+        self.vel.images[target.image] = complex(special.v[self.i])
+        self.acc.images[target.image] = complex(special.a[self.i])
+        self._record(group.label(), target, [self._to_special(group, b, target) for b in (b1, b2)])
+        third = next(m for m in group.members[1:] if m not in (b1, b2))
+        inner = next(p for p in group.pairs if set(p.members) == {third, ternary})
+        outer = next(p for p in group.pairs if third in p.members and p is not inner)
+        joint = Station(ternary, inner.point)
+        self._place(joint)
+        v, acc = self._rigid(ternary, target, joint)
+        self._record(group.label(), joint, [(target, [v], acc),
+                                            self._chain(third, outer, Station(third, inner.point))])
+
+    def _to_special(self, group: Group, binary: int, s: Station):
+        """One side of S's equation along binary member ``binary`` (joint J on the ternary
+        member): from its pivot P, v_S − v_P ⊥ PS and a_S = a_P + a^n_JP + a^n_SJ + a^t ⊥ PS;
+        from a slider on a guide, v_S − v_J(guide) ∥ guide and a_S = a_J(guide) + a^k +
+        a^n_SJ + a^r ∥ guide (the ternary's turning adds along the guide there)."""
+        ternary = group.members[0]
+        inner = next(p for p in group.pairs if set(p.members) == {binary, ternary})
+        outer = next(p for p in group.pairs if binary in p.members and p is not inner)
+        joint = self.pos.get(inner.point, complex(self.m.points[inner.point].z[self.i]))
+        w_t, _ = self._omega(ternary)
+        normal_sj = -w_t * w_t * (self.pos[s.name] - joint)
+        if outer.kind == "revolute":
+            start = Station(outer.other(binary), outer.point)
+            rule = ("perp", start.name, s.name)
+            w_b, _ = self._omega(binary)
+            normals = [(-w_b * w_b * (joint - self.pos_of(start)), f"a^n_{{{inner.point}{start.tex}}}",
+                        ("toward", inner.point, start.name)),
+                       (normal_sj, f"a^n_{{{s.tex}{inner.point}}}", ("toward", s.name, inner.point))]
+            v_kind, a_kind = "relative", "tangential"
+        else:  # the binary member slides on a guide of a known member
+            guide = outer.members[0]
+            start = Station(guide, outer.point, coincident=True) if guide != FRAME else \
+                Station(FRAME, outer.through)
+            if guide != FRAME:
+                self._carried(start, joint)
+            rule = ("along", outer.name)
+            w_g, _ = self._omega(guide)
+            v_rel = complex(self.m.points[inner.point].v[self.i]) - self.vel.images[start.image]
+            normals = [(2j * w_g * v_rel, f"a^k_{{{inner.point}{start.tex}}}", ("coriolis", str(guide))),
+                       (normal_sj, f"a^n_{{{s.tex}{inner.point}}}", ("toward", s.name, inner.point))]
+            v_kind, a_kind = "sliding", "sliding"
+        sub = f"{s.tex}{start.tex}"
+        v = Arrow(v_kind, start.image, s.image, self.vel.images[s.image] - self.vel.images[start.image],
+                  f"v_{{{sub}}}", rule)
+        arrows, image = [], start.image
+        for value, symbol, how in normals:
+            if abs(value) == 0.0:
+                continue
+            self.n_count += 1
+            head = f"n{self.n_count}"
+            self.acc.images[head] = self.acc.images[image] + value
+            kind = "coriolis" if how[0] == "coriolis" else "normal"
+            arrows.append(Arrow(kind, image, head, value, symbol, how))
+            image = head
+        arrows.append(Arrow(a_kind, image, s.image, self.acc.images[s.image] - self.acc.images[image],
+                            f"a^{{{'t' if a_kind == 'tangential' else 'r'}}}_{{{sub}}}", rule))
+        return start, [v], arrows
+
+    def pos_of(self, st: Station) -> complex:
+        if st.name not in self.pos:
+            self._place(st) if st.member != FRAME or st.letter in self.scene.frame else None
+        return self.pos[st.name]
 
     def _chain(self, member: int, outer: Pair, meet: Station):
         """From the known side of ``outer`` into ``member`` and on to ``meet``."""

@@ -18,13 +18,36 @@ from solvers.kinematics import solve
 from solvers.plans import POLE, build, readings
 from solvers.structure import StructureError, decompose
 
-CLASS_III = {"zbirka-4.1", "zbirka-4.2", "zbirka-4.3", "triad-full-turn"}  # no plan walk yet
-LINKAGES = [pid for pid in preset_ids("linkage") if pid not in CLASS_III]
+CLASS_III = {"zbirka-4.1", "zbirka-4.2", "zbirka-4.3", "triad-full-turn"}  # drawn through S
+LINKAGES = list(preset_ids("linkage"))
 
 
-def test_a_class_iii_scene_is_refused_with_the_reason():
-    with pytest.raises(StructureError, match="class III group"):
-        build(solve(load_preset("zbirka-4.1")))
+@pytest.mark.parametrize("pid", sorted(CLASS_III))
+def test_a_class_iii_plan_starts_from_the_special_point(pid):
+    """S lies on the lines of two binary members, so from each one's pivot P the part
+    v_S − v_P is square to PS, and a_S's tangential part too (the two normal parts, of the
+    binary member and of the ternary one, come first); S's image is the solver's S."""
+    scene = load_preset(pid)
+    motion = solve(scene, [scene.driver.at], order=2)
+    plans = build(motion)
+    s = motion.special["S"]
+    assert plans.velocity.images["s"] == pytest.approx(complex(s.v[0]), abs=1e-12)
+    assert plans.acceleration.images["s"] == pytest.approx(complex(s.a[0]), abs=1e-9)
+    first = next(step for step in plans.acceleration.steps if step.target == "s")
+    assert first.group.startswith("III(") and len(first.sides) == 2
+    for _, side in first.sides:
+        last = side[-1]
+        if last.kind == "tangential":
+            pivot = motion.points[last.rule[1]].z[0]
+            assert (last.value * np.conj(s.z[0] - pivot)).real == pytest.approx(0, abs=1e-9)
+    assert plans.velocity.closure() < 1e-9 and plans.acceleration.closure() < 1e-9
+
+
+def test_a_class_iii_group_without_its_special_point_is_refused_with_the_reason():
+    motion = solve(load_preset("zbirka-4.1"), order=2)
+    motion.special = {}  # as where the binary lines are parallel
+    with pytest.raises(StructureError, match="special point S"):
+        build(motion)
 
 
 def plans_of(scene: Scene, at=None):
