@@ -9,7 +9,7 @@ import streamlit as st
 from figures.plans import KIND_KEYS, layout_plan, mechanism_figure, plain, plan_figure, plan_svg
 from figures.style import nice_scale
 from mechanisms.schema import Scene
-from solvers.analytic import equations, solved_values
+from solvers.analytic import derivation, equations, solved_values
 from solvers.diagnostics import Unsolvable
 from solvers.plans import Plans, build, describe, readings
 from solvers.structure import StructureError
@@ -27,6 +27,12 @@ from ui.url import seed
 SVG_CAPTIONS = {"v": "plans.svg_caption_v", "a": "plans.svg_caption_a"}
 
 page_title("pages/velocity_plans.py")
+
+
+def root_words() -> dict[str, str]:
+    """The words of a chosen root, in the page's language."""
+    return {"or": t("plans.root_or"), "chosen": t("plans.root_chosen"),
+            "drawn": t("plans.root_drawn"), "other": t("plans.root_other")}
 
 
 @st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
@@ -148,10 +154,17 @@ if tab_loops.open:
     with tab_loops:
         st.write(t("plans.analytic_intro"))
         for group in instant(scene).structure.groups:
+            if group.cls == 3:  # no closed form: Newton's method on the Assur groups page
+                st.info(t("plans.triad_loops", group=group.label()))
+                st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
+                continue
             eq = equations(scene, group)
             st.markdown(f"**{eq.group} · {eq.kind}** — {t('plans.unknowns')}: "
                         + ", ".join(f"${u}$" for u in eq.unknowns))
             st.latex(eq.position)
+            st.caption(t("plans.derivation"))
+            for line in derivation(instant(scene), group, words=root_words()):
+                st.latex(line)
             st.latex(r"\text{B:}\ " + eq.velocity)
             st.latex(r"\text{C:}\ " + eq.acceleration)
         units = {"member": ("°", "s⁻¹", "s⁻²"), "slide": ("m", "m/s", "m/s²")}

@@ -8,6 +8,7 @@ page can show the analytical method beside the graphical plan it must agree with
 
 from __future__ import annotations
 
+import cmath
 import math
 from dataclasses import dataclass
 
@@ -99,3 +100,101 @@ def solved_values(motion: Motion, i: int = 0) -> list[dict]:
         rows.append({"kind": "slide", "name": name, "position": float(s.s[i]),
                      "rate": float(s.v[i]), "acceleration": float(s.a[i])})
     return rows
+
+
+WORDS = {"or": "or", "chosen": "chosen", "drawn": "the drawn branch",
+         "other": "is the other assembly"}  # the page passes its own language's words
+
+
+def derivation(motion: Motion, group: Group, i: int = 0, words: dict[str, str] = WORDS) -> list[str]:
+    """The position equation solved the way the complex-number method writes it, with the
+    numbers at position ``i`` (LaTeX lines): the loop projected on x and y, one unknown
+    eliminated by squaring and adding (two angles: A·cos φ + B·sin φ = C; an angle and a
+    slide: a quadratic in the slide; two slides: a linear system), both roots, and the one
+    the mechanism is assembled in, which is the branch the drawing shows."""
+    scene = motion.scene
+    loop = build_loop(scene, group)
+    angle = {m: float(motion.members[m].angle[i]) for m in motion.members}
+    angle[FRAME] = 0.0
+    (m0, c0), (m1, c1) = loop.start, loop.end
+    rhs = _world(motion, m1, c1, i) - _world(motion, m0, c0, i)
+    lines = [_projection(loop, "x", rhs.real), _projection(loop, "y", rhs.imag)]
+    free, slides = loop.free, loop.slides
+    legs = loop.legs
+    known = sum(leg.local * cmath.exp(1j * angle[leg.ref]) for leg in legs
+                if leg.ref not in free and not leg.slide)
+    d = rhs - known  # what the unknown legs must make up
+    if len(free) == 2:
+        j, k = free
+        a_j = sum(leg.local for leg in legs if leg.ref == j and not leg.slide)
+        a_k = sum(leg.local for leg in legs if leg.ref == k and not leg.slide)
+        w = d * a_k.conjugate()
+        c = (abs(d) ** 2 + abs(a_k) ** 2 - abs(a_j) ** 2) / 2
+        lines.append(f"{w.real:.5g}\\cos\\varphi_{{{k}}} {w.imag:+.5g}\\sin\\varphi_{{{k}}} = {c:.5g}")
+        base, spread = math.atan2(w.imag, w.real), math.acos(max(-1.0, min(1.0, c / abs(w))))
+        roots = [math.degrees(base + r * spread) % 360 for r in (1, -1)]
+        lines += _roots(f"\\varphi_{{{k}}}", roots, math.degrees(angle[k]) % 360, "°", words)
+        return lines
+    if len(free) == 1 and len(slides) == 1:
+        (j,), slide_leg = free, next(leg for leg in legs if leg.slide)
+        a = sum(leg.local for leg in legs if leg.ref == j and not leg.slide)
+        s = _slide(slide_leg.slide)
+        if slide_leg.ref == j:  # the slide turns with the unknown angle: |a + s·u| = |d|
+            u = slide_leg.local
+            b, c = 2 * (a * u.conjugate()).real, abs(a) ** 2 - abs(d) ** 2
+            lines.append(f"|{_c(a)} + {s}\\,{_c(u)}|^2 = |{_c(d)}|^2")
+        else:  # the slide's direction is known: |a| = |d − s·v|
+            v = slide_leg.local * cmath.exp(1j * angle[slide_leg.ref])
+            b, c = -2 * (d * v.conjugate()).real, abs(d) ** 2 - abs(a) ** 2
+            lines.append(f"|{_c(d)} - {s}\\,{_c(v)}|^2 = {abs(a):.5g}^2")
+        lines.append(f"{s}^2 {b:+.5g}\\,{s} {c:+.5g} = 0")
+        disc = b * b - 4 * c
+        roots = [(-b + r * math.sqrt(max(disc, 0.0))) / 2 for r in (1, -1)]
+        lines += _roots(s, roots, float(motion.sliders[slide_leg.slide].s[i]), "m", words)
+        return lines
+    # two slides: s₁·v₁ + s₂·v₂ = d, solved by Cramer's rule
+    v1, v2 = (leg.local * cmath.exp(1j * angle[leg.ref]) for leg in legs if leg.slide)
+    det = (v1.conjugate() * v2).imag
+    s1, s2 = (_slide(name) for name in slides)
+    lines.append(f"{s1} = \\frac{{d \\times v_2}}{{v_1 \\times v_2}} = {(d.conjugate() * v2).imag / det:.5g}"
+                 f",\\quad {s2} = \\frac{{v_1 \\times d}}{{v_1 \\times v_2}} = {(v1.conjugate() * d).imag / det:.5g}")
+    return lines
+
+
+def _world(motion: Motion, member: int, local: complex, i: int) -> complex:
+    """Where a member's point is at position i (the loop's start and end points)."""
+    scene = motion.scene
+    name = next(k for k, z in scene.points_of(member).items() if z == local)
+    return complex(motion.points[name].z[i])
+
+
+def _projection(loop: DyadLoop, axis: str, value: float) -> str:
+    trig = "\\cos" if axis == "x" else "\\sin"
+    out = []
+    for leg in loop.legs:
+        length, alpha = abs(leg.local), math.degrees(cmath.phase(leg.local))
+        phi = _angle(leg.ref) if leg.ref != FRAME else ""
+        arg = (f"{phi} {alpha:+.2f}^\\circ" if abs(alpha) > 1e-9 else phi) if phi else f"{alpha:.2f}^\\circ"
+        factor = f"{_slide(leg.slide)}\\," if leg.slide else f"{length:.4g}\\,"
+        if leg.slide and abs(length - 1) > 1e-12:
+            factor = f"{length:.4g}{_slide(leg.slide)}\\,"
+        out.append(f"{factor}{trig}({arg})")
+    return f"{axis}:\\ " + " + ".join(out) + f" = {value:.5g}"
+
+
+def _c(z: complex) -> str:
+    return f"({z.real:.4g} {z.imag:+.4g}i)"
+
+
+def _roots(symbol: str, roots: list[float], chosen: float, unit: str, words: dict) -> list[str]:
+    """Both roots, and which one the mechanism takes (the other is the mirror assembly)."""
+    near = min(range(2), key=lambda r: abs(_wrap(roots[r] - chosen, unit)))
+    other = 1 - near
+    return [f"{symbol} = {roots[0]:.5g}\\,\\text{{{unit}}}\\ \\text{{{words['or']}}}\\ "
+            f"{roots[1]:.5g}\\,\\text{{{unit}}}",
+            f"\\text{{{words['chosen']}: }}{symbol} = {roots[near]:.5g}\\,\\text{{{unit}}}"
+            f"\\ (\\text{{{words['drawn']}; }}{roots[other]:.5g}\\,\\text{{{unit} {words['other']}}})"]
+
+
+def _wrap(x: float, unit: str) -> float:
+    return (x + 180) % 360 - 180 if unit == "°" else x

@@ -245,3 +245,53 @@ def test_velocity_images_scale_with_omega_and_accelerations_with_its_square():
     for k in ("c", "m"):
         assert fast.acceleration.images[k] == pytest.approx(4 * base.acceleration.images[k])
     assert np.isfinite([abs(z) for z in fast.acceleration.images.values()]).all()
+
+
+@pytest.mark.parametrize("pid", ["analitika-2.1", "analitika-2.2", "slider-crank", "zbirka-2.3",
+                                 "analitika-2.5", "scotch-yoke"])
+def test_the_squared_and_added_position_equation_has_the_solutions_root(pid):
+    """Each group's derivation ends on two roots, and the chosen one is the solver's value (to
+    the printed five digits)."""
+    from solvers.analytic import derivation
+
+    scene = load_preset(pid)
+    motion = solve(scene, [scene.driver.at], order=2)
+    for group in motion.structure.groups:
+        lines = derivation(motion, group)
+        assert lines[0].startswith("x:") and lines[1].startswith("y:")
+        if len(lines) == 3:  # two slides: Cramer's rule gives both
+            values = [float(v) for v in re.findall(r"= (-?[\d.]+(?:e-?\d+)?)", lines[2])]
+            exact = sorted(float(motion.sliders[p.name].s[0]) for p in group.pairs if p.kind == "prismatic")
+            assert sorted(values) == pytest.approx(exact, rel=1e-4, abs=1e-6)
+            continue
+        chosen = float(re.search(r"= (-?[\d.]+(?:e-?\d+)?)\\,", lines[-1]).group(1))
+        unknown = lines[-1].split("}", 1)[1]
+        if "varphi" in lines[-1]:
+            member = int(re.search(r"varphi_\{(\d+)\}", lines[-1]).group(1))
+            assert chosen == pytest.approx(math.degrees(motion.members[member].angle[0]) % 360, abs=1e-2)
+        else:
+            name = next(p.name for p in group.pairs if p.kind == "prismatic"
+                        and f"s_{{{p.name.replace('-', '')}}}" in unknown)
+            assert chosen == pytest.approx(float(motion.sliders[name].s[0]), rel=1e-4)
+
+
+def test_the_other_root_is_the_other_assembly():
+    """Task 2.1 of the complex-number seed: the root not chosen is where the solver puts the
+    rocker when the group is assembled the other way."""
+    import dataclasses
+
+    from solvers.analytic import derivation
+
+    scene = load_preset("analitika-2.1")
+    motion = solve(scene, [scene.driver.at], order=2)
+    group = motion.structure.groups[0]
+    line = derivation(motion, group)[-2]  # φ₄ = … ° or … °
+    roots = [float(x) for x in re.findall(r"(-?\d+(?:\.\d+)?)\\,\\text", line)]
+    assert len(roots) == 2
+    key = tuple(sorted(group.members))
+    flipped = dataclasses.replace(scene, assembly={key: -scene.assembly.get(key, 1)}, guess={})
+    other = solve(flipped, [scene.driver.at])
+    phi4 = math.degrees(other.members[4].angle[0]) % 360
+    assert phi4 == pytest.approx(min(roots, key=lambda r: abs(r - phi4)), abs=1e-2)
+    assert min(abs(r - math.degrees(motion.members[4].angle[0]) % 360) for r in roots) < 1e-2
+    assert abs(roots[0] - roots[1]) > 1.0

@@ -123,3 +123,21 @@ def test_a_coincident_point_is_named_with_the_method_of_extension(lang, words):
     assert any(words in c.value and "B4" in c.value for c in at.caption)
     at.slider(key="step").set_value(1).run()  # the crank alone: no coincident point
     assert not any(words in c.value for c in at.caption)
+
+
+@pytest.mark.parametrize("lang, tab, chosen", [("en", "Complex-number method", "chosen"),
+                                               ("sr", "Metoda kompleksnog broja", "izabrano"),
+                                               ("sr-cyrl", "Метода комплексног броја", "изабрано")])
+def test_the_complex_number_tab_solves_each_loop_by_squaring_and_adding(lang, tab, chosen):
+    at = page(PAGE, lang=lang, scene="analitika-2.1", tab=tab)
+    assert not at.exception
+    equations = [x.value for x in at.latex]
+    assert any(r"\cos\varphi_{4}" in e and r"\sin\varphi_{4}" in e for e in equations)  # A cos + B sin = C
+    assert any(f"{chosen}: " in e and "275.13" in e for e in equations)  # the drawn root of φ₄
+    assert any(r"s_{56}^2" in e for e in equations)  # the RPR group's quadratic in the slide
+
+
+def test_a_class_iii_group_in_the_complex_number_tab_points_to_newton():
+    at = plan_page(scene="zbirka-4.1", tab="Complex-number method")
+    assert not at.exception
+    assert any("Newton" in i.value for i in at.info)
