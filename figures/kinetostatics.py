@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from solvers.kinetostatics import Kinetostatics
@@ -19,14 +21,17 @@ LEGEND_KEYS = {"external": "forces.legend_external", "inertia": "forces.legend_i
                "weight": "forces.legend_weight", "reaction": "forces.legend_reaction"}
 
 
+REACTION = re.compile(r"F_\d\d(\^[tn])?")  # F_45, and its parts F_45^t, F_45^n
+
+
 def _kind(name: str) -> str:
     """What a force is, from the course's name: F_i3 inertia, G_3 weight, F_45 (two member
-    numbers) a reaction, anything else an external load."""
+    numbers, or a part of it) a reaction, anything else an external load."""
     if name.startswith(("F_i", "M_i")):
         return "inertia"
     if name.startswith("G_"):
         return "weight"
-    return "reaction" if len(name) == 4 and name[2:].isdigit() else "external"
+    return "reaction" if REACTION.fullmatch(name) else "external"
 
 
 def html(name: str) -> str:
@@ -39,10 +44,12 @@ def html(name: str) -> str:
 
 def forces_figure(k: Kinetostatics, index: int, forces: list[tuple[str, complex, complex]],
                   title: str, t: Text, look: Look = NORMAL,
-                  members: tuple[int, ...] | None = None) -> RawFigure:
+                  members: tuple[int, ...] | None = None,
+                  marks: dict[str, complex] | None = None) -> RawFigure:
     """The mechanism (or only ``members``: a free body) at one position, with each force
     (name, point of action, force) as an arrow from its point; the longest arrow is a third
-    of a typical link, and each label gives the value."""
+    of a typical link, and each label gives the value. ``marks`` are named points (the point
+    a moment equation is taken about)."""
     motion = k.motion
     positions, rotations = pose(motion, index)
     if members is not None:
@@ -59,6 +66,11 @@ def forces_figure(k: Kinetostatics, index: int, forces: list[tuple[str, complex,
                [LOAD_COLOURS[_kind(n)] for n, *_ in forces],
                [f"{html(n)} = {abs(f):.4g} N" for n, _, f in forces], look,
                {colour: t(LEGEND_KEYS[kind]) for kind, colour in LOAD_COLOURS.items()})
+    for name, z in (marks or {}).items():
+        fig.add_raw([scatter(x=[z.real], y=[z.imag], mode="markers+text", text=[name],
+                             textposition="bottom right", showlegend=False, hoverinfo="skip",
+                             marker=dict(size=11 * look.line, color="black", symbol="circle-x-open"),
+                             textfont=dict(size=look.font + 2))])
     return plane_layout(fig, title, look)
 
 

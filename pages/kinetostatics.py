@@ -14,6 +14,8 @@ from figures.polygon import polygon_figure, polygon_svg
 from figures.style import nice_scale
 from mechanisms.schema import Scene
 from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_resolution
+from solvers.force_steps import equation
+from solvers.force_steps import steps as force_steps
 from solvers.kinetostatics import Kinetostatics, analyse, free_body
 from solvers.report import has_loads
 from solvers.structure import StructureError
@@ -51,7 +53,7 @@ def defaults(base: Scene) -> dict[str, object]:
     values: dict[str, object] = {
         "at": driver_start(base),
         "omega": float(base.driver.speed), "inertia": True, "gravity": base.gravity > 0,
-        "steps": 360, "UF": base.scales.get("F", 0.0)}
+        "steps": 360, "UF": base.scales.get("F", 0.0), "fstep": 1}
     for n, m in base.members.items():
         values[f"m{n}"], values[f"rho{n}"] = float(m.mass), float(m.gyration)
     for i, f in enumerate(base.forces):
@@ -131,6 +133,48 @@ def driving_metrics(k: Kinetostatics, i: int) -> None:
         st.caption(t("forces.crank_force", value=num(k.crank_force[i], 4)))
 
 
+def group_name(group: str) -> str:
+    return t("forces.driver") if group == "driver" else t("forces.group_label", members=group)
+
+
+def construction_steps(k: Kinetostatics, now: int) -> None:
+    """The graphical method one equation at a time: a step slider (forwards and backwards),
+    the equation with its numbers, and the free body or the polygon drawn to the scale U_F."""
+    construction = force_steps(k, now)
+    count = len(construction.steps)
+    st.write(t("forces.steps_intro"))
+    st.session_state["fstep"] = min(max(int(st.session_state.get("fstep", 1)), 1), count)
+    number = st.slider(t("forces.step"), 1, count, key="fstep", bind="query-params")
+    step = construction.steps[number - 1]
+    members = ", ".join(str(m) for m in sorted(step.members))
+    what = {"moment": t("forces.step_moment", members=members, point=step.about),
+            "polygon": t("forces.step_polygon", members=members),
+            "together": t("forces.step_together", members=members)}[step.kind]
+    if step.about == "S" and len(step.members) > 1:
+        what = t("forces.step_special", members=members)
+    st.markdown(f"**{number}/{count} · {group_name(step.group)}** — {what}")
+    for line in equation(step):
+        st.latex(line)
+    st.caption(t("forces.step_units"))
+    if step.kind == "polygon":
+        known = [(html(term.name), term.force) for term in step.terms]
+        closing = [(html(name), force) for name, force in step.closing]
+        biggest = max((abs(f) for _, f in known + closing), default=1.0)
+        uf = st.session_state.get("UF") or nice_scale(biggest / 8)
+        chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
+                             (t("forces.legend_known"), t("forces.legend_closing")), look()),
+              f"{k.motion.scene.id}-step-{number}", key="fig_step")
+    elif step.kind == "moment":
+        marks = {step.about: step.at} if step.at is not None else None
+        chart(forces_figure(k, now, step.forces(), t("forces.free_body_title"), t, look(),
+                            members=step.members, marks=marks),
+              f"{k.motion.scene.id}-step-{number}", key="fig_step")
+    if number == count:
+        unit, symbol = ("N·m", "M_p") if k.rotating else ("N", "F_p")
+        st.success(t("forces.steps_done", symbol=symbol, value=num(construction.driving, 5),
+                     unit=unit, solver=num(float(k.driving[now]), 5)))
+
+
 controls, main = st.columns([1, 3], gap="large")
 with controls:
     base = scene_picker(default="predavanja-kinetostatika")
@@ -154,8 +198,8 @@ with main:
     if not np.isfinite(k.driving[now]):
         st.warning(t("forces.singular"))
     driving_metrics(k, now)
-    tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_lever"),
-                    t("forces.tab_cycle")], key="tab", on_change="rerun")
+    tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_steps"),
+                    t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
 
 rotating = scene.driver.kind == "rotating"
 at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
@@ -207,6 +251,10 @@ if tabs[1].open:
 
 if tabs[2].open:
     with tabs[2]:
+        construction_steps(k, now)
+
+if tabs[3].open:
+    with tabs[3]:
         st.write(t("forces.lever_intro"))
         chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
               key="fig_lever")
@@ -216,8 +264,8 @@ if tabs[2].open:
                               for f in k.lever if abs(f.force[now]) > 0])
         show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
 
-if tabs[3].open:
-    with tabs[3]:
+if tabs[4].open:
+    with tabs[4]:
         c = over_cycle(scene.with_(at=base.driver.at), steps, st.session_state["inertia"])
         x = c.motion.at
         x = np.degrees(x) if rotating else x

@@ -263,6 +263,24 @@ def test_the_kinetostatics_page_draws_the_polygon_and_shows_three_equal_torques(
     keep(shot)
 
 
+def test_the_graphical_kinetostatics_steps_in_the_browser(app_url, browser, tmp_path):
+    """Task 5.1 at step 2 of its construction (from the link): the group's polygon closes with
+    F_45^n and F_16; the step slider moves to the next equation."""
+    page = open_page(browser, f"{app_url}/kinetostatics?lang=en&scene=zbirka-5.1&fstep=2",
+                     size=(1600, 1800))
+    page.get_by_role("tab", name="Step by step").click()
+    labels = ("() => [...document.querySelectorAll('.js-plotly-plot')].flatMap(p => p.data)"
+              ".filter(t => (t.mode || '').includes('text')).flatMap(t => [...t.text])")
+    page.wait_for_function(f"() => ({labels})().includes('F<sub>45</sub><sup>n</sup>')",
+                           timeout=30_000)
+    assert "F<sub>16</sub>" in page.evaluate(labels)
+    assert page.get_by_text("2/10").count() == 1
+    assert page.locator("[data-testid='stException']").count() == 0
+    shot = tmp_path / "kinetostatics-steps.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+
+
 def test_a_table_downloads_as_csv_when_asked(app_url, browser, tmp_path):
     """The CSV is written when the button is pressed (deferred), and holds the table."""
     page = open_page(browser, f"{app_url}/kinetostatics?lang=en", size=(1600, 1100))

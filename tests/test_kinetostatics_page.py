@@ -45,13 +45,14 @@ def test_moving_the_crank_and_adding_inertia_change_the_torque():
     assert metrics(at)[0] == moved  # a mass without inertia or weight changes nothing
 
 
-@pytest.mark.parametrize("tab", [1, 2, 3])
+@pytest.mark.parametrize("tab", [1, 2, 3, 4])
 def test_every_tab_draws(tab):
-    labels = ["Loads and reactions", "Force polygons", "Zhukovsky's lever", "Over the cycle"]
+    labels = ["Loads and reactions", "Force polygons", "Step by step", "Zhukovsky's lever",
+              "Over the cycle"]
     at = page(PAGE, lang="en", tab=labels[tab])
     assert not at.exception and not at.error
-    keys = {1: ["fig_free_body", "fig_polygon"], 2: ["fig_lever"],
-            3: ["fig_cycle", "fig_reactions_cycle"]}[tab]
+    keys = {1: ["fig_free_body", "fig_polygon"], 2: ["fig_step"], 3: ["fig_lever"],
+            4: ["fig_cycle", "fig_reactions_cycle"]}[tab]
     for key in keys:
         assert chart(at, key)["data"]
 
@@ -127,3 +128,26 @@ def test_loads_that_do_no_net_work_need_no_mean_power():
     values = {m.label: m.value for m in at.metric}
     assert values["Mean driving power"] == "0 W"
     assert values["Peak |M_p|"].endswith("N·m")
+
+
+STEPS_TAB = {"en": "Step by step", "sr": "Korak po korak", "sr-cyrl": "Корак по корак"}
+
+
+@pytest.mark.parametrize("lang", ["en", "sr", "sr-cyrl"])
+def test_the_graphical_method_steps_from_the_first_to_the_last_equation(lang):
+    """Task 5.1 step by step: the first step is a moment equation of member 5 with its free
+    body; a middle one a polygon drawn to scale; the last one ends in the solver's M_p. A step
+    beyond the last (an old link) shows the last."""
+    at = page(PAGE, lang=lang, scene="zbirka-5.1", tab=STEPS_TAB[lang], fstep=1)
+    assert not at.exception and not at.error
+    assert r"\sum M_{F}^{(5)}" in at.latex[0].value
+    assert "F<sub>45</sub><sup>t</sup>" in " ".join(texts(chart(at, "fig_step")))
+    at.slider(key="fstep").set_value(2).run()
+    polygon = texts(chart(at, "fig_step"))
+    assert {"F<sub>45</sub><sup>n</sup>", "F<sub>16</sub>", "G<sub>5</sub>"} <= set(polygon)
+    last = page(PAGE, lang=lang, scene="zbirka-5.1", tab=STEPS_TAB[lang], fstep=99)
+    assert not last.exception
+    count = last.slider(key="fstep").max
+    assert last.slider(key="fstep").value == count
+    torque = metrics(last)[0]
+    assert torque in last.success[0].value  # "M_p = … N·m", the group-by-group value
