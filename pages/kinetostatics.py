@@ -17,6 +17,8 @@ from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_r
 from solvers.force_steps import equation
 from solvers.force_steps import steps as force_steps
 from solvers.kinetostatics import Kinetostatics, analyse, free_body
+from solvers.lever_steps import construction as lever_construction
+from solvers.lever_steps import latex as lever_latex
 from solvers.report import has_loads
 from solvers.structure import StructureError
 from ui.benchmarks import speed_panel
@@ -175,6 +177,23 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
                      unit=unit, solver=num(float(k.driving[now]), 5)))
 
 
+def book_lever(k: Kinetostatics, now: int) -> None:
+    """The reduced mechanism as tasks 5.3–5.4 write it: the unlettered points placed by
+    proportion, the moments about the pole, F_p and M_p against the group-by-group value."""
+    st.subheader(t("forces.lever_book"))
+    st.caption(t("forces.lever_book_hint"))
+    lever = lever_construction(k, now)
+    proportions, moments = lever_latex(lever, k.rotating)
+    for line in proportions + moments:
+        st.latex(line)
+    if k.rotating:
+        st.success(t("forces.lever_compare", symbol="M_p", lever=num(lever.torque, 5),
+                     groups=num(float(k.driving[now]), 5), unit="N·m"))
+    else:
+        st.success(t("forces.lever_compare", symbol="F_p", lever=num(lever.balancing, 5),
+                     groups=num(float(k.driving[now]), 5), unit="N"))
+
+
 controls, main = st.columns([1, 3], gap="large")
 with controls:
     base = scene_picker(default="predavanja-kinetostatika")
@@ -263,6 +282,7 @@ if tabs[3].open:
                                t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
                               for f in k.lever if abs(f.force[now]) > 0])
         show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
+        book_lever(k, now)
 
 if tabs[4].open:
     with tabs[4]:

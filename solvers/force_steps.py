@@ -115,7 +115,8 @@ def steps(k: Kinetostatics, index: int = 0) -> Construction:
     return Construction(out, known, driving)
 
 
-def _at(x, index: int):
+def value_at(x, index: int):
+    """Position ``index`` of an array over the cycle (a constant as it is)."""
     return np.asarray(x).reshape(-1)[index] if np.ndim(x) else x
 
 
@@ -125,8 +126,8 @@ def _drive(k: Kinetostatics, index: int, pair: Pair) -> Unknown:
         return Unknown("M_p", "drive", None, 0, DRIVER, 0j, 0j, 1.0)
     bodies = k.motion.bodies
     guide, slider = pair.members
-    direction = complex(_at(np.exp(1j * pair.angle) * bodies[guide].rot, index))
-    point = complex(_at(bodies[slider].position(k.motion.scene.points_of(slider)[pair.point]), index))
+    direction = complex(value_at(np.exp(1j * pair.angle) * bodies[guide].rot, index))
+    point = complex(value_at(bodies[slider].position(k.motion.scene.points_of(slider)[pair.point]), index))
     return Unknown("F_p", "drive", None, 0, DRIVER, direction, point)
 
 
@@ -141,7 +142,7 @@ class _Body:
         self.position = {}  # (member, letter) → world point
         for m in members:
             for letter, local in scene.points_of(m).items():
-                self.position[(m, letter)] = complex(_at(bodies[m].position(local), index))
+                self.position[(m, letter)] = complex(value_at(bodies[m].position(local), index))
         self.size = max([abs(a - b) for a, b in combinations(self.position.values(), 2)] + [1e-9])
         self.unknowns: list[Unknown] = []
         for pair in pairs:
@@ -157,10 +158,10 @@ class _Body:
         inner = a in self.members and b in self.members
         by, on = (a, b) if inner or b in self.members else (b, a)
         scene, bodies = self.k.motion.scene, self.k.motion.bodies
-        point = complex(_at(bodies[b].position(scene.points_of(b)[pair.point]), self.index))
+        point = complex(value_at(bodies[b].position(scene.points_of(b)[pair.point]), self.index))
         name = f"F_{by}{on}"
         if pair.kind == "prismatic":
-            normal = 1j * complex(_at(np.exp(1j * pair.angle) * bodies[a].rot, self.index))
+            normal = 1j * complex(value_at(np.exp(1j * pair.angle) * bodies[a].rot, self.index))
             return [Unknown(name, "N", pair, by, on, normal, point),
                     Unknown(f"{name}·h_{by}{on}", "Fh", pair, by, on, 0j, point, 1.0)]
         towards = None if inner else self._other_joint(on, pair, point)
@@ -187,9 +188,9 @@ class _Body:
         """Every known action on ``member`` as (name, force, point, couple): loads, couples,
         and the reactions of the groups solved before."""
         i = self.index
-        out = [(ld.name, complex(_at(ld.force, i)), complex(_at(ld.point, i)), 0.0)
+        out = [(ld.name, complex(value_at(ld.force, i)), complex(value_at(ld.point, i)), 0.0)
                for ld in self.k.loads if ld.member == member]
-        out += [(c.name, 0j, None, float(_at(c.value, i)))
+        out += [(c.name, 0j, None, float(value_at(c.value, i)))
                 for c in self.k.couples if c.member == member]
         out += [(f"F_{p}{q}", f, z, c) for (p, q), (f, z, c) in self.known.items()
                 if q == member and p not in self.members]
@@ -402,36 +403,47 @@ def latex_name(name: str) -> str:
     return re.sub(r"\^([A-Za-z0-9]+)", r"^{\1}", name).replace("·", r"\cdot ")
 
 
-def _number(x: float) -> str:
+def number(x: float) -> str:
+    """A value for an equation: 4 digits, a negative one in parentheses, round-off as 0."""
     text = f"{x + 0.0:.4g}" if abs(x) > 1e-12 else "0"
     return f"({text})" if x < 0 else text
+
+
+def wrapped(head: str, terms: list[str], tail: str, per_line: int = 4) -> str:
+    """``head`` + the terms joined by + + ``tail``, broken into lines of ``per_line`` terms
+    (st.latex does not wrap, and a long sum ran off a projected page)."""
+    rows = [" + ".join(terms[i:i + per_line]) for i in range(0, len(terms), per_line)]
+    if len(rows) <= 1:
+        return head + " + ".join(terms) + tail
+    return (r"\begin{aligned}&" + head + r" \\ &\quad + ".join(rows) + tail
+            + r"\end{aligned}")
 
 
 def equation(step: Step, size: float | None = None) -> list[str]:
     """The step's equation as LaTeX lines: the symbols, then the numbers and what they give.
     Moments: each force times its signed lever arm (m), couples as they are (N·m); polygons:
     the vector sum in the order the polygon is drawn."""
-    found = r",\quad ".join(rf"{latex_name(n)} = {_number(v).strip('()')}\ \mathrm{{{u}}}".replace("·", r"\cdot ")
+    found = r",\quad ".join(rf"{latex_name(n)} = {number(v).strip('()')}\ \mathrm{{{u}}}".replace("·", r"\cdot ")
                             for n, (v, u) in step.found.items())
     body = ",".join(str(m) for m in sorted(step.members))
     if step.kind == "together":
         return [rf"\sum \vec F^{{({body})}} = 0,\ \sum M^{{({body})}} = 0 \;\Rightarrow\; {found}"]
     if step.kind == "polygon":
         names = [latex_name(t.name) for t in step.terms] + [latex_name(n) for n, _ in step.closing]
-        return [rf"\sum \vec F^{{({body})}} = " + " + ".join(rf"\vec {n}" for n in names) + " = 0",
+        return [wrapped(rf"\sum \vec F^{{({body})}} = ", [rf"\vec {n}" for n in names], " = 0"),
                 rf"\Rightarrow\; {found}"]
     symbols, numbers = [], []
     for t in step.terms:
         if t.unknown:  # with its signed lever arm (a couple: alone)
             symbols.append(latex_name(t.name) + ("" if t.point is None else r"\cdot h"))
-            numbers.append(latex_name(t.name) + ("" if t.point is None else rf"\cdot {_number(t.moment)}"))
+            numbers.append(latex_name(t.name) + ("" if t.point is None else rf"\cdot {number(t.moment)}"))
         elif t.point is None:
             symbols.append(latex_name(t.name))
-            numbers.append(_number(t.moment))
+            numbers.append(number(t.moment))
         else:
             arm = t.moment / abs(t.force)
             symbols.append(latex_name(t.name) + r"\cdot h")
-            numbers.append(f"{abs(t.force):.4g}" + rf"\cdot {_number(arm)}")
+            numbers.append(f"{abs(t.force):.4g}" + rf"\cdot {number(arm)}")
     about = step.about
-    return [rf"\sum M_{{{about}}}^{{({body})}} = " + " + ".join(symbols) + " = 0",
-            " + ".join(numbers) + rf" = 0 \;\Rightarrow\; {found}"]
+    return [wrapped(rf"\sum M_{{{about}}}^{{({body})}} = ", symbols, " = 0"),
+            wrapped("", numbers, rf" = 0 \;\Rightarrow\; {found}")]

@@ -128,6 +128,7 @@ class LeverForce:
     member: int
     image: np.ndarray
     force: np.ndarray
+    local: complex = 0j  # the point of action in the member's frame
 
     @property
     def moment(self) -> np.ndarray:
@@ -154,6 +155,7 @@ class Kinetostatics:
     scale: np.ndarray | float = 1.0  # Σ|F·v| + Σ|M·ω| per unit driver speed: the size of
     # the terms the three methods add, against which their disagreement is measured
     lever: list[LeverForce] = field(default_factory=list)  # Zhukovsky's lever
+    unit: dict[int, Body] = field(default_factory=dict)  # the members' motion per unit ω₂
 
     @property
     def rotating(self) -> bool:
@@ -224,7 +226,7 @@ def analyse(scene: Scene, at=None, *, inertia: bool = True, motion: Motion | Non
     power = driving * scene.driver.speed
     return Kinetostatics(motion, loads, couples, inertias, known, driving, -virtual,
                          driving_lever, power, virtual * scene.driver.speed + power, condition,
-                         tuple(order), scale, lever)
+                         tuple(order), scale, lever, unit_v)
 
 
 def _record(known: dict, reactions: list[Reaction]) -> None:
@@ -445,7 +447,7 @@ def _lever_forces(scene: Scene, bodies: dict[int, Body], loads, couples, inertia
     points of its member, as the book replaces M_6 by a force at D."""
     def at(member: int, local, force, name: str) -> LeverForce:
         image = 1j * bodies[member].velocity(local)  # the point's image, turned 90°
-        return LeverForce(name, member, image, force)
+        return LeverForce(name, member, image, force, local)
 
     out = [at(ld.member, ld.local, ld.force, ld.name) for ld in loads if not ld.inertial]
     as_couples = [c for c in couples if not c.inertial]

@@ -11,6 +11,8 @@ from mechanisms.loader import preset_ids
 from mechanisms.schema import Force
 from solvers.force_steps import _Body, equation, steps
 from solvers.kinetostatics import analyse
+from solvers.lever_steps import construction as lever_construction
+from solvers.lever_steps import latex as lever_latex
 
 from .test_kinetostatics import loaded
 
@@ -128,3 +130,33 @@ def test_the_equations_read_as_latex_with_their_results():
     value, unit = step.found["F_45^t"]
     assert numbers.endswith(rf"F_{{45}}^{{t}} = {value:.4g}\ \mathrm{{N}}")
     assert numbers.startswith("70")  # G_5 = 70 N (task 5.1), times its signed arm
+
+
+@pytest.mark.parametrize("pid", preset_ids("linkage"))
+def test_the_reduced_mechanism_the_books_way_gives_the_solvers_driving_torque(pid):
+    """F_p at the crank pin's image from the moments about the pole, M_p = F_p·AB: equal to the
+    group-by-group M_p (F_p itself for a linear driver) on every preset with masses."""
+    k = analyse(with_masses(pid))
+    lever = lever_construction(k)
+    exact = float(k.driving[0])
+    found = lever.torque if k.rotating else lever.balancing
+    assert found == pytest.approx(exact, rel=1e-9, abs=1e-9 * max(1.0, abs(lever.balancing)))
+    for image in lever.images:  # the image of a member is similar to the member
+        ratio = image.side[1] / image.side[0]
+        assert image.plan[0] == pytest.approx(image.real[0] * ratio, rel=1e-9, abs=1e-12)
+        assert image.plan[1] == pytest.approx(image.real[1] * ratio, rel=1e-9, abs=1e-12)
+
+
+def test_the_lever_places_s_and_k_by_proportion_along_the_member():
+    """Task 5.3's members 3 and 6: S and K lie on the member's axis, so one proportion each
+    (b⁰k⁰ = b⁰c⁰·BK/BC), and BK = BS + ρ²/BS."""
+    k = analyse(load_preset("zbirka-5.3"))
+    lever = lever_construction(k)
+    placed = {im.point: im for im in lever.images}
+    assert {"S_3", "K_3"} <= set(placed) and placed["K_3"].along
+    bs, bk = placed["S_3"].real[0], placed["K_3"].real[0]
+    rho = k.motion.scene.members[3].gyration
+    assert bk == pytest.approx(bs + rho ** 2 / bs)
+    proportions, moments = lever_latex(lever, rotating=True)
+    assert any(r"\frac{BK_{3}}{BC}" in line for line in proportions)
+    assert moments[-1].endswith(rf"M_p = F_p\cdot\overline{{AB}} = {lever.torque:.4g}\ \mathrm{{N\cdot m}}")

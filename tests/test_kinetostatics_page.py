@@ -151,3 +151,16 @@ def test_the_graphical_method_steps_from_the_first_to_the_last_equation(lang):
     assert last.slider(key="fstep").value == count
     torque = metrics(last)[0]
     assert torque in last.success[0].value  # "M_p = … N·m", the group-by-group value
+
+
+@pytest.mark.parametrize("lang, tab", [("en", "Zhukovsky's lever"), ("sr", "Redukovani mehanizam")])
+def test_the_lever_tab_writes_the_books_equation_and_agrees_with_the_groups(lang, tab):
+    """Task 5.3: S and K placed by proportion, the moments about the pole, then M_p = F_p·AB
+    next to the group-by-group value (the same digits)."""
+    at = page(PAGE, lang=lang, scene="zbirka-5.3", tab=tab)
+    assert not at.exception and not at.error
+    lines = [x.value for x in at.latex]
+    assert any(r"\frac{BK_{3}}{BC}" in line for line in lines)
+    assert any(r"\sum M_P = F_p\cdot h_p" in line for line in lines)
+    torque = metrics(at)[0]
+    assert at.success[0].value.count(torque) == 2  # from the lever, and group by group
