@@ -10,7 +10,7 @@ import streamlit as st
 from figures.assur import structure_figure
 from mechanisms.schema import Scene
 from solvers.diagnostics import (TOLERANCES, Unsolvable, format_range, newton_accuracy,
-                                 sweep_values)
+                                 newton_iterations, sweep_values)
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
@@ -63,10 +63,39 @@ def special_table(motion: Motion, index: int) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+def newton_table(scene: Scene, tol: float) -> None:
+    """Newton's method at this instant for each class III group, iterate by iterate, from the
+    pose a chosen step earlier: the residual falls quadratically once it is near, and a start
+    too far away wanders (which is why the solver marches along the cycle in small steps)."""
+    rotating = scene.driver.kind == "rotating"
+    st.caption(t("assur.iterations_hint"))
+    back = st.number_input(t("assur.iterations_back_deg" if rotating else "assur.iterations_back_mm"),
+                           min_value=0.0, max_value=180.0 if rotating else 1000.0, key="back",
+                           format="%.4g", bind="query-params")
+    offset = np.radians(back) if rotating else back / 1000.0
+    for name, iterates in newton_iterations(scene, offset, tol).items():
+        if not iterates:
+            st.warning(t("assur.iterations_unreachable", group=name))
+            continue
+        rows = pd.DataFrame([{"k": k, t("assur.col_residual"): f"{it.residual:.2e}",
+                              t("assur.col_correction"): f"{it.correction:.2e}",
+                              **{f"θ{m} [°]": num(round(float(np.degrees(a)), 9) + 0.0, 8)
+                                 for m, a in it.angles.items()}}
+                             for k, it in enumerate(iterates)])
+        show_table(rows, f"{scene.id}-newton-{name}.csv", f"csv_iterations_{name}")
+        last = iterates[-1].residual
+        if last <= tol * 10 or last < 1e-12:
+            st.caption(t("assur.iterations_done", group=name, count=len(iterates) - 1,
+                         residual=f"{last:.1e}"))
+        else:
+            st.warning(t("assur.iterations_failed", group=name, count=len(iterates) - 1))
+
+
 controls, main = st.columns([1, 3], gap="large")
 with controls:
     base = scene_picker(default="zbirka-4.1")
-    seed({"at": driver_start(base), "tol": 1e-10, "upto": 99}, st.session_state["scene"])
+    seed({"at": driver_start(base), "tol": 1e-10, "upto": 99, "back": 5.0},
+         st.session_state["scene"])
     scene = driver_position(base)
     tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
                            key="tol", format_func=lambda v: f"{v:.0e}", bind="query-params")
@@ -118,6 +147,8 @@ with main:
                                   t("assur.col_error"): f"{r['error_m']:.1e}"}
                                  for r in table])
             show_table(rows, f"{base.id}-newton-tolerance.csv", "csv_newton")
+        with st.expander(t("assur.iterations"), expanded=False):
+            newton_table(scene, tol)
 
 with controls:
     quantities = [Quantity("W", float(degrees_of_freedom(scene)), ""),

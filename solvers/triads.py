@@ -205,6 +205,44 @@ def newton(system: _System, known: dict[int, Body], z, th, tol: float, stall: in
     return z, th, iterations, residual
 
 
+@dataclass(frozen=True)
+class Iterate:
+    """One iterate of Newton's method at one position, for showing the method at work."""
+
+    residual: float  # m: the largest gap left in the group's pairs
+    angles: dict[int, float]  # θ of each member of the group, rad
+    correction: float  # the size of the step that follows (m, and rad times the group's size)
+
+
+def newton_trace(scene: Scene, group: Group, motion, index: int, start: int, size: float,
+                 tol: float = TOL) -> list[Iterate]:
+    """Newton's method for ``group`` at position ``index`` of a solved ``motion``, started
+    from the group's pose at position ``start`` (a neighbouring one, as a student iterates
+    from the last position drawn), every iterate kept. The solver runs the same iteration
+    batched over the cycle (``newton``); this one is for showing it."""
+    known = {m: _take(b, np.array([index])) for m, b in motion.bodies.items()
+             if m not in group.members}
+    system = _System(scene, group, size)
+    z = np.array([[complex(motion.bodies[m].position(0j)[start]) for m in system.unknown]])
+    th = np.array([[float(motion.bodies[m].theta[start]) for m in system.unknown]])
+    scale = np.tile([1.0, 1.0, size], len(system.unknown))  # a turn counts as its arc
+    out: list[Iterate] = []
+    for _ in range(MAX_ITERATIONS):
+        bodies = {**known, **_poses(system.unknown, z, th)}
+        rows = system.values(bodies, 0)
+        residual = float(np.max(np.abs(rows)))
+        done = not residual > tol * size
+        step = np.zeros(3 * len(system.unknown)) if done else _solve(
+            system.jacobian(bodies), -rows)[0]
+        out.append(Iterate(residual, dict(zip(system.unknown, map(float, th[0]))),
+                           float(np.max(np.abs(step * scale)))))
+        if done or not np.all(np.isfinite(step)):
+            break
+        z += cplx(step[0::3], step[1::3])
+        th += step[2::3]
+    return out
+
+
 def rates(system: _System, known: dict[int, Body], bodies: dict[int, Body], level: int,
           jac: np.ndarray) -> np.ndarray:
     """Velocities (level 1) or accelerations (level 2) of the unknown members: the constraint

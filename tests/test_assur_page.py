@@ -62,3 +62,21 @@ def test_check_my_answer_grades_the_degrees_of_freedom_and_s():
     assert "x_S [m]" in labels
     at.text_input(key="self_value").input("2").run()
     assert any("Off by 100" in w.value for w in at.warning)
+
+
+@pytest.mark.parametrize("lang, done", [("en", "Newton step(s)"), ("sr", "Njutnovih koraka"),
+                                        ("sr-cyrl", "Њутнових корака")])
+def test_newton_is_shown_iteration_by_iteration(lang, done):
+    """Task 4.1 from the pose 5° earlier: a row per iterate, the residual ending below the
+    tolerance, and the last angles equal to the page's own solution; a start too far away
+    says so instead of showing a wrong pose."""
+    at = page("pages/assur_groups.py", lang=lang, scene="triad-full-turn")
+    assert not at.exception and not at.error
+    table = at.dataframe[-1].value
+    residuals = [float(r) for r in table.iloc[:, 1]]
+    assert list(table["k"]) == list(range(len(table))) and residuals[-1] < 1e-9 < residuals[0]
+    assert any(done in c.value for c in at.caption)
+    at.number_input(key="back").set_value(15.0).run()  # too far for this triad (it wanders)
+    assert not at.exception
+    assert any("15" not in w.value and ("converge" in w.value or "konvergen" in w.value
+                                        or "конверген" in w.value) for w in at.warning)
