@@ -16,6 +16,7 @@ from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
+from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.i18n import num, t, title_of
 from ui.present import look
@@ -149,6 +150,7 @@ with main:
             show_table(rows, f"{base.id}-newton-tolerance.csv", "csv_newton")
         with st.expander(t("assur.iterations"), expanded=False):
             newton_table(scene, tol)
+        method_doc("complex-number.md")
 
 with controls:
     quantities = [Quantity("W", float(degrees_of_freedom(scene)), ""),

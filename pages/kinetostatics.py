@@ -25,6 +25,7 @@ from ui.benchmarks import speed_panel
 from ui.book import book_section
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
+from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.i18n import num, scaled_title, t, title_of
 from ui.present import look
@@ -171,6 +172,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
         chart(forces_figure(k, now, step.forces(), t("forces.free_body_title"), t, look(),
                             members=step.members, marks=marks),
               f"{k.motion.scene.id}-step-{number}", key="fig_step")
+    method_doc("graphical-kinetostatics.md")
     if number == count:
         unit, symbol = ("N·m", "M_p") if k.rotating else ("N", "F_p")
         st.success(t("forces.steps_done", symbol=symbol, value=num(construction.driving, 5),
@@ -283,6 +285,7 @@ if tabs[3].open:
                               for f in k.lever if abs(f.force[now]) > 0])
         show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
         book_lever(k, now)
+        method_doc("reduced-mechanism.md")
 
 if tabs[4].open:
     with tabs[4]:

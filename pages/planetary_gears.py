@@ -11,6 +11,7 @@ from mechanisms.gears import GearTrain, Input, Mesh
 from solvers.gears import TrainError, geometry_notes, solve_train, stages, willis_table
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
+from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.i18n import num, t
 from ui.present import look
@@ -133,6 +134,7 @@ with main:
             st.latex(stage.latex)
             st.caption(t("gears.stage_fixed") if stage.carrier is None
                        else t("gears.stage_carrier", carrier=stage.carrier))
+        method_doc("willis.md")
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")
 
 with main:

@@ -18,6 +18,7 @@ from solvers.paths import (animation_order, cycle_time, field_path, loops_backwa
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, cycle
 from ui.chapters import page_title
+from ui.docs import method_doc
 from ui.export import chart, csv_button, show_table
 from ui.i18n import current, num, t, title_of
 from ui.present import look
@@ -158,6 +159,8 @@ with main:
         figure_ms = (time.perf_counter() - started) * 1e3
         with tab_paths:
             chart(fig, f"{scene.id}-paths", key="paths")
+            if view == "compass":
+                method_doc("compass.md")
     if tab_anim.open:
         with tab_anim:
             if not fine.feasible.all():

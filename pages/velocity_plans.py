@@ -17,6 +17,7 @@ from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.book import book_section
 from ui.chapters import page_title
+from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.i18n import num, t, title_of
 from ui.present import look
@@ -130,6 +131,8 @@ if tab_plans.open:
         st.latex(plans.acceleration.steps[index].latex)
         if any(a.kind == "coriolis" for _, side in plans.acceleration.steps[index].sides for a in side):
             st.caption(t("plans.extension", point=steps[index].target.upper()))
+        if any(g.cls == 3 for g in instant(scene).structure.groups):
+            method_doc("triad-plans.md")
         left, right = st.columns(2)
         for column, plan, key, title in ((left, plans.velocity, "v", "plans.velocity_title"),
                                          (right, plans.acceleration, "a", "plans.acceleration_title")):
@@ -177,6 +180,7 @@ if tab_loops.open:
         show_table(pd.DataFrame(rows), f"{scene.id}-analytic.csv", "csv_analytic")
         st.success(t("plans.agreement", v=f"{plans.velocity.closure():.1e}",
                      a=f"{plans.acceleration.closure():.1e}"))
+        method_doc("complex-number.md")
 
 values = readings(plans, scales, scales["precision_cm"])
 if tab_accuracy.open:

@@ -136,3 +136,20 @@ def test_closed_panels_cost_a_rerun_nothing(chapter):
     assert not closed.get("file_uploader") and not [w for w in closed.text_input if w.key == "self_value"]
     opened = page(chapter.file, lang="en", about=True, self_open=True)
     assert opened.get("file_uploader") and [w for w in opened.text_input if w.key == "self_value"]
+
+
+@pytest.mark.parametrize("path, query, doc", [
+    ("pages/trajectories.py", {"view": "compass"}, "compass.md"),
+    ("pages/velocity_plans.py", {"scene": "zbirka-4.1"}, "triad-plans.md"),
+    ("pages/kinetostatics.py", {"tab": "Step by step"}, "graphical-kinetostatics.md"),
+    ("pages/kinetostatics.py", {"tab": "Zhukovsky's lever"}, "reduced-mechanism.md"),
+    ("pages/planetary_gears.py", {}, "willis.md"),
+    ("pages/assur_groups.py", {"scene": "triad-full-turn"}, "complex-number.md"),
+])
+def test_each_method_links_its_page_of_the_docs(path, query, doc):
+    """Each step-by-step method opens its docs page in the app, the page's text itself."""
+    at = page(path, lang="en", **query)
+    assert not at.exception
+    expander = next(e for e in at.expander if f"docs/{doc}" in e.label)
+    first = (Path(__file__).resolve().parents[1] / "docs" / doc).read_text().splitlines()[0]
+    assert any(first in m.value for m in expander.markdown)
