@@ -150,7 +150,7 @@ with main:
             show_table(rows, f"{base.id}-newton-tolerance.csv", "csv_newton")
         with st.expander(t("assur.iterations"), expanded=False):
             newton_table(scene, tol)
-        method_doc("complex-number.md")
+        method_doc("complex-number")
 
 with controls:
     quantities = [Quantity("W", float(degrees_of_freedom(scene)), ""),

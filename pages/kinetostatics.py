@@ -172,7 +172,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
         chart(forces_figure(k, now, step.forces(), t("forces.free_body_title"), t, look(),
                             members=step.members, marks=marks),
               f"{k.motion.scene.id}-step-{number}", key="fig_step")
-    method_doc("graphical-kinetostatics.md")
+    method_doc("graphical-kinetostatics")
     if number == count:
         unit, symbol = ("N·m", "M_p") if k.rotating else ("N", "F_p")
         st.success(t("forces.steps_done", symbol=symbol, value=num(construction.driving, 5),
@@ -285,7 +285,7 @@ if tabs[3].open:
                               for f in k.lever if abs(f.force[now]) > 0])
         show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
         book_lever(k, now)
-        method_doc("reduced-mechanism.md")
+        method_doc("reduced-mechanism")
 
 if tabs[4].open:
     with tabs[4]:

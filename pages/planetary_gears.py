@@ -134,7 +134,7 @@ with main:
             st.latex(stage.latex)
             st.caption(t("gears.stage_fixed") if stage.carrier is None
                        else t("gears.stage_carrier", carrier=stage.carrier))
-        method_doc("willis.md")
+        method_doc("willis")
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")
 
 with main:

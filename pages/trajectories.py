@@ -160,7 +160,7 @@ with main:
         with tab_paths:
             chart(fig, f"{scene.id}-paths", key="paths")
             if view == "compass":
-                method_doc("compass.md")
+                method_doc("compass")
     if tab_anim.open:
         with tab_anim:
             if not fine.feasible.all():

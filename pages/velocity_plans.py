@@ -10,6 +10,8 @@ from figures.plans import KIND_KEYS, layout_plan, mechanism_figure, plain, plan_
 from figures.style import nice_scale
 from mechanisms.schema import Scene
 from solvers.analytic import derivation, equations, solved_values
+from solvers.contour import contour, free_points
+from solvers.contour import latex as contour_latex
 from solvers.diagnostics import Unsolvable
 from solvers.plans import Plans, build, describe, readings
 from solvers.structure import StructureError
@@ -132,7 +134,7 @@ if tab_plans.open:
         if any(a.kind == "coriolis" for _, side in plans.acceleration.steps[index].sides for a in side):
             st.caption(t("plans.extension", point=steps[index].target.upper()))
         if any(g.cls == 3 for g in instant(scene).structure.groups):
-            method_doc("triad-plans.md")
+            method_doc("triad-plans")
         left, right = st.columns(2)
         for column, plan, key, title in ((left, plans.velocity, "v", "plans.velocity_title"),
                                          (right, plans.acceleration, "a", "plans.acceleration_title")):
@@ -170,6 +172,12 @@ if tab_loops.open:
                 st.latex(line)
             st.latex(r"\text{B:}\ " + eq.velocity)
             st.latex(r"\text{C:}\ " + eq.acceleration)
+        for name in free_points(scene):
+            chain = contour(scene, name)
+            if chain is not None:
+                st.markdown(t("plans.final_contour", point=name))
+                for line in contour_latex(instant(scene), chain):
+                    st.latex(line)
         units = {"member": ("°", "s⁻¹", "s⁻²"), "slide": ("m", "m/s", "m/s²")}
         names = {"member": "plans.row_member", "slide": "plans.row_slide"}
         rows = [{t("plans.col_quantity"): t(names[r["kind"]], name=r["name"]),
@@ -180,7 +188,7 @@ if tab_loops.open:
         show_table(pd.DataFrame(rows), f"{scene.id}-analytic.csv", "csv_analytic")
         st.success(t("plans.agreement", v=f"{plans.velocity.closure():.1e}",
                      a=f"{plans.acceleration.closure():.1e}"))
-        method_doc("complex-number.md")
+        method_doc("complex-number")
 
 values = readings(plans, scales, scales["precision_cm"])
 if tab_accuracy.open:

@@ -49,10 +49,10 @@ def _slide(name: str) -> str:
     return f"s_{{{name.replace('-', '')}}}"
 
 
-def _terms(loop: DyadLoop, level: int) -> str:
-    """The legs of the loop, differentiated ``level`` times."""
+def legs_latex(legs, level: int) -> str:
+    """A chain of legs (a loop, or a final contour), differentiated ``level`` times."""
     out = []
-    for leg in loop.legs:
+    for leg in legs:
         length, e = _direction(leg)
         sign = "-" if length < 0 else "+"
         size = f"{abs(length):.4g}"
@@ -84,7 +84,7 @@ def equations(scene: Scene, group: Group) -> LoopEquations:
     a, b = names
     rhs = [f"\\vec r_{{{b}}} - \\vec r_{{{a}}}", f"\\vec v_{{{b}}} - \\vec v_{{{a}}}",
            f"\\vec a_{{{b}}} - \\vec a_{{{a}}}"]
-    texts = [f"{_terms(loop, k)} = {rhs[k]}" for k in range(3)]
+    texts = [f"{legs_latex(loop.legs, k)} = {rhs[k]}" for k in range(3)]
     unknowns = tuple([f"\\varphi_{{{m}}}" for m in loop.free] + [_slide(p) for p in loop.slides])
     return LoopEquations(group.label(), group.kind, *texts, unknowns)
 

@@ -2,6 +2,9 @@
 
 import pytest
 
+from mechanisms import load_preset
+from solvers.kinematics import solve
+
 from .test_pages import arrows as drawn_arrows
 from .test_pages import chart, charts, page
 from .test_plans import LINKAGES
@@ -141,3 +144,18 @@ def test_a_class_iii_group_in_the_complex_number_tab_points_to_newton():
     at = plan_page(scene="zbirka-4.1", tab="Complex-number method")
     assert not at.exception
     assert any("Newton" in i.value for i in at.info)
+
+
+@pytest.mark.parametrize("lang, words", [("en", "Final contour of point"),
+                                         ("sr", "Završna kontura tačke")])
+def test_the_complex_number_tab_ends_with_the_final_contour_of_a_coupler_point(lang, words):
+    """E of the four-bar is no joint: its contour from the origin through the crank, with
+    |v_E| the same digits as the graphical plan's reading."""
+    tab = {"en": "Complex-number method", "sr": "Metoda kompleksnog broja"}[lang]
+    at = page(PAGE, lang=lang, scene="four-bar-crank-rocker", tab=tab)
+    assert not at.exception
+    assert any(words in m.value and "E" in m.value for m in at.markdown)
+    lines = [x.value for x in at.latex]
+    velocity = next(line for line in lines if r"\vec v_{E} = 0.1\,i\omega_{2}" in line)
+    motion = solve(load_preset("four-bar-crank-rocker"))
+    assert f"|v_{{E}}| = {abs(motion.points['E'].v[0]):.5g}" in velocity

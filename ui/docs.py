@@ -15,10 +15,10 @@ DOCS = Path(__file__).resolve().parents[1] / "docs"
 
 @cache
 def _text(name: str) -> str:
-    return (DOCS / name).read_text(encoding="utf-8")
+    return (DOCS / f"{name}.md").read_text(encoding="utf-8")
 
 
 def method_doc(name: str) -> None:
-    """``docs/<name>`` (written in English) in a closed expander named after the file."""
-    with st.expander(t("app.method_doc", file=f"docs/{name}")):
+    """``docs/<name>.md`` (written in English) in a closed expander named after the file."""
+    with st.expander(t("app.method_doc", file=f"docs/{name}.md")):
         st.markdown(_text(name))
