@@ -79,7 +79,8 @@ def values(motion: Motion, c: Contour, i: int = 0) -> tuple[complex, complex, co
 
 
 def latex(motion: Motion, c: Contour, i: int = 0) -> list[str]:
-    """Equations A, B and C of the final contour, each with its value at position ``i``."""
+    """Equations A, B and C of the final contour, each followed by its value at position
+    ``i`` (on a line of its own: st.latex does not wrap)."""
     r, v, a = values(motion, c, i)
     p = c.point
     symbols = (rf"\vec r_{{{p}}}", rf"\vec v_{{{p}}}", rf"\vec a_{{{p}}}")
@@ -87,7 +88,7 @@ def latex(motion: Motion, c: Contour, i: int = 0) -> list[str]:
     lines = []
     for level, (symbol, value, unit) in enumerate(zip(symbols, (r, v, a), units)):
         legs = [leg for leg in c.legs if leg.local != 0]
-        lines.append(rf"\text{{{'ABC'[level]}:}}\ {symbol} = {legs_latex(legs, level)}"
-                     rf" = ({value.real:.5g};\ {value.imag:.5g})\ \mathrm{{{unit}}},\quad"
-                     rf" |{symbol[5:]}| = {abs(value):.5g}\ \mathrm{{{unit}}}")
+        lines.append(rf"\text{{{'ABC'[level]}:}}\ {symbol} = {legs_latex(legs, level)}")
+        lines.append(rf"{symbol} = ({value.real:.5g};\ {value.imag:.5g})\ \mathrm{{{unit}}},"
+                     rf"\quad |{symbol[5:]}| = {abs(value):.5g}\ \mathrm{{{unit}}}")
     return lines

@@ -156,6 +156,6 @@ def test_the_complex_number_tab_ends_with_the_final_contour_of_a_coupler_point(l
     assert not at.exception
     assert any(words in m.value and "E" in m.value for m in at.markdown)
     lines = [x.value for x in at.latex]
-    velocity = next(line for line in lines if r"\vec v_{E} = 0.1\,i\omega_{2}" in line)
+    assert any(r"\vec v_{E} = 0.1\,i\omega_{2}" in line for line in lines)
     motion = solve(load_preset("four-bar-crank-rocker"))
-    assert f"|v_{{E}}| = {abs(motion.points['E'].v[0]):.5g}" in velocity
+    assert any(f"|v_{{E}}| = {abs(motion.points['E'].v[0]):.5g}" in line for line in lines)
