@@ -133,21 +133,9 @@ def animation_figure(motion: Motion, order: np.ndarray, points: list[str], title
     fig.add_frames([dict(data=moving(s), traces=indices, name=str(s)) for s in range(len(order))])
     x = np.concatenate([p.x for p in motion.points.values()])
     y = np.concatenate([p.y for p in motion.points.values()])
-    pad = 0.05 * max(np.nanmax(x) - np.nanmin(x), np.nanmax(y) - np.nanmin(y), 1e-9)
+    _fixed_range(fig, x, y)
     fig.merge_layout(dict(
-        xaxis=dict(range=[float(np.nanmin(x) - pad), float(np.nanmax(x) + pad)], autorange=False),
-        yaxis=dict(range=[float(np.nanmin(y) - pad), float(np.nanmax(y) + pad)], autorange=False)))
-    frame_ms = 60
-    play = dict(frame=dict(duration=frame_ms, redraw=False), transition=dict(duration=0),
-                fromcurrent=True, mode="immediate")
-    pause = dict(frame=dict(duration=0, redraw=False), mode="immediate")
-    fig.merge_layout(dict(
-        updatemenus=[dict(type="buttons", direction="left", x=0.0, y=-0.08, xanchor="left",
-                          yanchor="top", showactive=False, font=dict(size=look.font + 2),
-                          pad=dict(t=10, r=10),
-                          buttons=[dict(label="▶ " + t("fig.play"), method="animate", args=[None, play]),
-                                   dict(label="■ " + t("fig.pause"), method="animate",
-                                        args=[[None], pause])])],
+        updatemenus=_play_buttons(t, look, frame_ms=60, redraw=False),
         sliders=[dict(active=0, x=0.25, y=-0.08, len=0.75, yanchor="top", pad=dict(t=10),
                       currentvalue=dict(prefix="φ₂ = ", suffix="°", font=dict(size=look.font + 2)),
                       steps=[dict(label=f"{labels[s]:.0f}", method="animate",
@@ -223,21 +211,10 @@ def compass_figure(scene: Scene, steps: list, texts: list[str], title: str, t: T
                          layout=dict(title=dict(text=texts[s]))) for s in range(len(steps))])
     x = np.array([v for trace in whole for v in trace["x"] if v is not None] + [z.real for z in pivots])
     y = np.array([v for trace in whole for v in trace["y"] if v is not None] + [z.imag for z in pivots])
-    pad = 0.05 * max(np.ptp(x), np.ptp(y), 1e-9)  # every arc and point stays in the frame
-    fig.merge_layout(dict(
-        xaxis=dict(range=[float(x.min() - pad), float(x.max() + pad)], autorange=False),
-        yaxis=dict(range=[float(y.min() - pad), float(y.max() + pad)], autorange=False)))
-    go = dict(frame=dict(duration=700, redraw=True), transition=dict(duration=0),
-              fromcurrent=True, mode="immediate")
+    _fixed_range(fig, x, y)  # every arc and point stays in the frame
     jump = dict(frame=dict(duration=0, redraw=True), mode="immediate")
     fig.merge_layout(dict(
-        updatemenus=[dict(type="buttons", direction="left", x=0.0, y=-0.08, xanchor="left",
-                          yanchor="top", showactive=False, font=dict(size=look.font + 2),
-                          pad=dict(t=10, r=10),
-                          buttons=[dict(label="▶ " + t("fig.play"), method="animate", args=[None, go]),
-                                   dict(label="■ " + t("fig.pause"), method="animate",
-                                        args=[[None], dict(frame=dict(duration=0, redraw=False),
-                                                           mode="immediate")])])],
+        updatemenus=_play_buttons(t, look, frame_ms=700, redraw=True),
         sliders=[dict(active=last, x=0.36, y=-0.08, len=0.64, yanchor="top", pad=dict(t=10),
                       currentvalue=dict(prefix=t("fig.step") + " ", font=dict(size=look.font + 2)),
                       steps=[dict(label=str(s + 1), method="animate", args=[[str(s)], jump])
@@ -246,6 +223,28 @@ def compass_figure(scene: Scene, steps: list, texts: list[str], title: str, t: T
     room = margins(fig, look.font)["b"] + 4 * look.font + 30
     fig.merge_layout(dict(margin=dict(b=room)))
     return fig
+
+
+def _fixed_range(fig: RawFigure, x: np.ndarray, y: np.ndarray) -> None:
+    """Axes fixed around every drawn coordinate (NaN ignored), 5 % to spare: frames of an
+    animation must not rescale the picture."""
+    pad = 0.05 * max(np.nanmax(x) - np.nanmin(x), np.nanmax(y) - np.nanmin(y), 1e-9)
+    fig.merge_layout(dict(
+        xaxis=dict(range=[float(np.nanmin(x) - pad), float(np.nanmax(x) + pad)], autorange=False),
+        yaxis=dict(range=[float(np.nanmin(y) - pad), float(np.nanmax(y) + pad)], autorange=False)))
+
+
+def _play_buttons(t: Text, look: Look, frame_ms: int, redraw: bool) -> list[dict]:
+    """▶ and ■ under the figure: play the frames from the current one, ``frame_ms`` each."""
+    play = dict(frame=dict(duration=frame_ms, redraw=redraw), transition=dict(duration=0),
+                fromcurrent=True, mode="immediate")
+    pause = dict(frame=dict(duration=0, redraw=False), mode="immediate")
+    return [dict(type="buttons", direction="left", x=0.0, y=-0.08, xanchor="left",
+                 yanchor="top", showactive=False, font=dict(size=look.font + 2),
+                 pad=dict(t=10, r=10),
+                 buttons=[dict(label="▶ " + t("fig.play"), method="animate", args=[None, play]),
+                          dict(label="■ " + t("fig.pause"), method="animate",
+                               args=[[None], pause])])]
 
 
 def _arc_targets(steps: list) -> dict[tuple[int, int], complex]:

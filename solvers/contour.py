@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from mechanisms.schema import DRIVER, FRAME, Scene
 
 from .analytic import legs_latex
-from .force_steps import value_at
+from .state import value_at
 from .kinematics import Motion
 from .loops import Leg
 

@@ -32,6 +32,7 @@ from mechanisms.schema import DRIVER, Pair
 
 from .kinetostatics import Kinetostatics
 from .loops import cross
+from .state import value_at
 
 ZERO = 1e-9  # a lever arm or determinant this small (relative to the body's size) is zero
 
@@ -113,11 +114,6 @@ def steps(k: Kinetostatics, index: int = 0) -> Construction:
         if name == "driver":
             driving = body.values[len(body.unknowns) - 1]
     return Construction(out, known, driving)
-
-
-def value_at(x, index: int):
-    """Position ``index`` of an array over the cycle (a constant as it is)."""
-    return np.asarray(x).reshape(-1)[index] if np.ndim(x) else x
 
 
 def _drive(k: Kinetostatics, index: int, pair: Pair) -> Unknown:
@@ -217,11 +213,16 @@ class _Body:
                          for u in self.unknowns])
         return coef, terms
 
+    def _appears(self, j: int, coef, moment: bool) -> bool:
+        """Unknown ``j`` enters the equation (a lever arm of a ten-millionth of the body is
+        none: the force passes through the point)."""
+        force = self.unknowns[j].force != 0
+        return abs(coef[j]) > ZERO * (self.size if moment and force else 1.0)
+
     def _open(self, coef, moment: bool) -> list[int]:
-        """Unsolved unknowns that appear in an equation (a lever arm of a ten-millionth of the
-        body is none: the force passes through the point)."""
-        return [j for j, u in enumerate(self.unknowns) if j not in self.values and abs(coef[j])
-                > ZERO * (self.size if moment and u.force != 0 else 1.0)]
+        """Unsolved unknowns that appear in an equation."""
+        return [j for j in range(len(self.unknowns))
+                if j not in self.values and self._appears(j, coef, moment)]
 
     def _rest(self, coef, known) -> complex:
         """The equation's known part: known terms plus the unknowns solved so far."""
@@ -230,14 +231,9 @@ class _Body:
     def _solved(self, coef, body, moment: bool) -> list[Term]:
         """Parts found in earlier steps of this body that enter the equation (the x and y of
         one reaction as one vector)."""
-        entering = [j for j in self.values if self.unknowns[j].force == 0 or
-                    abs(coef[j]) > ZERO * (self.size if moment and self.unknowns[j].force != 0
-                                           else 1.0)]
         out: dict[str, Term] = {}
-        for j in entering:
+        for j in (j for j in self.values if self._appears(j, coef, moment)):
             u, v = self.unknowns[j], self.values[j]
-            if u.force == 0 and abs(coef[j]) <= ZERO:
-                continue
             old = out.get(u.name, Term(u.name, 0j, 0.0))
             out[u.name] = Term(u.name, old.force + u.force * v,
                                old.moment + (coef[j] * v if moment else 0.0),
@@ -362,9 +358,7 @@ class _Body:
             rows.append(coef / self.size)
             rhs.append(-self._rest(coef, sum(t.moment for t in terms)).real / self.size)
         left = [j for j in range(len(self.unknowns)) if j not in self.values]
-        a = np.array(rows)
-        a[:, list(self.values)] = 0.0  # already in the known part
-        x = np.linalg.lstsq(a[:, left], np.array(rhs), rcond=None)[0]
+        x = np.linalg.lstsq(np.array(rows)[:, left], np.array(rhs), rcond=None)[0]
         self.values.update(dict(zip(left, x)))
         return Step(self.name, "together", self.members, "", [], self._found(left))
 

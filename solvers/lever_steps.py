@@ -19,20 +19,21 @@ from dataclasses import dataclass
 
 from mechanisms.schema import DRIVER
 
-from .force_steps import latex_name, number, value_at, wrapped
+from .force_steps import latex_name, number, wrapped
 from .kinetostatics import Kinetostatics, LeverForce, centre_of_mass
 from .loops import cross
+from .state import value_at
 
 SAME = 1e-12  # m: a point of action this close to a lettered point is that point
 
 
 @dataclass(frozen=True)
 class Image:
-    """Where a force goes on the lever: its point of action and how its image is found."""
+    """Where a force at an unlettered point goes on the lever: how its image is found."""
 
     force: str  # the force's name
     point: str  # B, S_3, K_3
-    base: tuple[str, str] | None  # the lettered points PQ it is proportioned from, or None
+    base: tuple[str, str]  # the lettered points PQ it is proportioned from
     real: tuple[float, float]  # |PX|, |QX| on the mechanism (m)
     plan: tuple[float, float]  # |p⁰x⁰|, |q⁰x⁰| on the plan (m/s)
     along: bool  # X lies on the line PQ: one proportion is enough
@@ -74,7 +75,9 @@ def construction(k: Kinetostatics, index: int = 0) -> Lever:
         image = complex(value_at(f.image, index)) * speed
         arm = cross(image, force) / abs(force)
         moments.append(Moment(f.name, abs(force), 0.0 if abs(arm) < 1e-12 * plan else arm))
-        images.append(_image(k, f, index, speed))
+        image_step = _image(k, f, index, speed)
+        if image_step is not None:
+            images.append(image_step)
     if k.rotating:
         member = scene.members[DRIVER]
         pivot, pin = (member.points[p] for p in member.axis)
@@ -89,24 +92,24 @@ def construction(k: Kinetostatics, index: int = 0) -> Lever:
     balancing = -total / arm
     torque = balancing * scene.members[DRIVER].length if k.rotating else None
     letters = "".join(scene.members[DRIVER].axis)
-    return Lever([i for i in images if i.base], moments, arm, balancing, torque, letters)
+    return Lever(images, moments, arm, balancing, torque, letters)
 
 
-def _image(k: Kinetostatics, f: LeverForce, index: int, speed: float) -> Image:
-    """The force's point of action and its image by proportion from the member's two lettered
-    axis points (the member and its image are similar)."""
+def _image(k: Kinetostatics, f: LeverForce, index: int, speed: float) -> Image | None:
+    """How the image of the force's point is found by proportion from the member's two
+    lettered axis points (the member and its image are similar); None for a lettered point,
+    whose image the plan has already (or a member with one point)."""
     member = k.motion.scene.members[f.member]
     letter = next((p for p, z in member.points.items() if abs(z - f.local) < SAME), None)
-    name = letter or _unlettered(k, f)
     if letter or len(member.axis) < 2:
-        return Image(f.name, name, None, (0.0, 0.0), (0.0, 0.0), False, (0.0, 0.0))
+        return None
     p, q = member.axis
     body = k.unit[f.member]
     plan = {c: complex(value_at(1j * body.velocity(member.points[c]), index)) * speed for c in (p, q)}
     x = complex(value_at(1j * body.velocity(f.local), index)) * speed
     pq = member.points[q] - member.points[p]
     along = abs(cross(pq, f.local - member.points[p])) < SAME * max(abs(pq), 1.0)
-    return Image(f.name, name, (p, q),
+    return Image(f.name, _unlettered(k, f), (p, q),
                  (abs(f.local - member.points[p]), abs(f.local - member.points[q])),
                  (abs(x - plan[p]), abs(x - plan[q])), along,
                  (abs(pq), abs(plan[q] - plan[p])))

@@ -30,6 +30,11 @@ def cplx(re, im) -> np.ndarray:
     return out
 
 
+def value_at(x, index: int):
+    """Position ``index`` of an array over the cycle (a constant, as the frame's, as it is)."""
+    return np.asarray(x).reshape(-1)[index] if np.ndim(x) else x
+
+
 @dataclass
 class Body:
     rot: np.ndarray | complex
