@@ -8,6 +8,7 @@ import streamlit as st
 from figures.style import nice_scale
 from figures.gears import schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
+from solvers.gear_steps import speed_steps, total_ratio
 from solvers.gears import TrainError, geometry_notes, solve_train, stages, willis_table
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
@@ -20,6 +21,12 @@ from ui.selfcheck import Quantity, answer_box
 from ui.url import seed, table_to_url, url_table
 
 page_title("pages/planetary_gears.py")
+
+# the caption under each step of solvers.gear_steps: (kind, on fixed axes) → locale key
+STEP_WORDS = {("input", True): "gears.kind_input", ("fixed", True): "gears.kind_fixed",
+              ("shaft", True): "gears.kind_shaft", ("mesh", True): "gears.kind_mesh_fixed",
+              ("mesh", False): "gears.kind_mesh_planet", ("stage", False): "gears.kind_stage",
+              ("system", True): "gears.kind_system"}
 
 
 def defaults(base: GearTrain) -> dict[str, object]:
@@ -131,9 +138,19 @@ with main:
             for w in willis_table(train)]), f"{train.id}-willis.csv", "csv_willis")
         st.markdown(f"**{t('gears.stages_title')}**")
         for stage in stages(solution):
-            st.latex(stage.latex)
+            st.latex(stage.latex(t("gears.from_radii")))
             st.caption(t("gears.stage_fixed") if stage.carrier is None
                        else t("gears.stage_carrier", carrier=stage.carrier))
+        steps = speed_steps(solution)
+        if steps:
+            st.markdown(f"**{t('gears.chain_title')}**")
+            for step in steps:
+                st.latex(step.latex)
+                st.caption(t(STEP_WORDS[step.kind, step.carrier is None], carrier=step.carrier))
+            total = total_ratio(steps, a, b)
+            if total:
+                st.latex(total)
+                st.caption(t("gears.total_ratio"))
         method_doc("willis")
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")
 

@@ -205,8 +205,15 @@ def _solve_gears(train: GearTrain, as_json: bool, with_stages: bool = False) -> 
         minus = "" if c is None else f" − ω{c}"
         print(f"\nstage, {seen}: " + ", ".join(f"ω{m}{minus} = {w:.6g}"
                                                 for m, w in stage["relative"].items()))
-        print(f"  i{a},{b} = {stage['ratio']:.6g} from the radii, {stage['solved']:.6g} from the speeds"
-              if stage["ratio"] is not None else f"  i{a},{b} = {stage['solved']:.6g} from the speeds")
+        speeds = ("0/0 from the speeds (both ends turn with the carrier)" if stage["solved"] is None
+                  else f"{stage['solved']:.6g} from the speeds")
+        print(f"  i{a},{b} = {stage['ratio']:.6g} from the radii, {speeds}"
+              if stage["ratio"] is not None else f"  i{a},{b} = {speeds}")
+    if "order" in data:
+        print("\none unknown speed per equation, in the collection's order:")
+        for step in data["order"]:
+            where = "" if step["carrier"] is None else f", carrier {step['carrier']}"
+            print(f"  ω{step['member']} = {step['omega']:.6g}  ({step['kind']}{where})")
     return 0
 
 

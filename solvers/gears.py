@@ -196,9 +196,10 @@ class Stage:
     ratio: float | None  # from the radii (None when the ends are not joined by the stage)
     solved: float  # from the speeds (NaN when ω_b = ω_c)
 
-    @property
-    def latex(self) -> str:
-        """i^c_ab = (ω_a − ω_c)/(ω_b − ω_c) = (numbers) = value, = the radii's value."""
+    def latex(self, radii: str = "radii") -> str:
+        """i^c_ab = (ω_a − ω_c)/(ω_b − ω_c) = (numbers) = value, then the value from the radii
+        after the word ``radii`` (in the reader's language). Both ends turning with the
+        carrier (0/0) leave only the radii's value."""
         a, b = self.ends
         c = self.carrier
         if c is None:
@@ -207,8 +208,8 @@ class Stage:
             head = (f"i^{{{c}}}_{{{a},{b}}} = \\frac{{\\omega_{{{a}}} - \\omega_{{{c}}}}}"
                     f"{{\\omega_{{{b}}} - \\omega_{{{c}}}}}")
         numbers = f"\\frac{{{self.relative[a]:.5g}}}{{{self.relative[b]:.5g}}}"
-        out = f"{head} = {numbers} = {self.solved:.5g}"
-        return out if self.ratio is None else f"{out},\\quad \\text{{radii: }} {self.ratio:.5g}"
+        out = f"{head} = {numbers}" + ("" if math.isnan(self.solved) else f" = {self.solved:.5g}")
+        return out if self.ratio is None else f"{out},\\quad \\text{{{radii}: }} {{{self.ratio:.5g}}}"
 
 
 def stages(solution: TrainSolution) -> list[Stage]:
@@ -220,21 +221,31 @@ def stages(solution: TrainSolution) -> list[Stage]:
     for carrier in dict.fromkeys(w.carrier for w in table):
         own = [w for w in table if w.carrier == carrier]
         members = tuple(dict.fromkeys(m for w in own for m in (w.a, w.b)))
-        edges = _stage_edges(train, own, members)
+        edges = _stage_edges(train, carrier, own, members)
         central = [m for m in members if train.members[m].carrier is None]
         ends = _ends(edges, central if carrier is not None and len(central) >= 2 else members)
         c = 0.0 if carrier is None else omega.get(carrier, math.nan)
-        relative = {m: omega.get(m, math.nan) - c for m in members}
-        below = relative[ends[1]]
         scale = max((abs(w) for w in omega.values()), default=1.0) or 1.0
+        relative = {m: _rest(omega.get(m, math.nan) - c, scale) for m in members}
+        below = relative[ends[1]]
         solved = relative[ends[0]] / below if abs(below) > 1e-9 * scale else math.nan
         out.append(Stage(carrier, members, relative, ends, _path_ratio(edges, *ends), solved))
     return out
 
 
-def _stage_edges(train: GearTrain, meshes: list[Willis], members: tuple[int, ...]) -> dict:
+def _rest(value: float, scale: float) -> float:
+    """A relative speed of round-off size is a gear at the carrier's speed: exactly 0."""
+    return 0.0 if abs(value) <= 1e-12 * scale else value
+
+
+def _stage_edges(train: GearTrain, carrier: int | None, meshes: list[Willis],
+                 members: tuple[int, ...]) -> dict:
     """member → {neighbour: (ω_m − ω_c)/(ω_n − ω_c)}: meshes, and shafts joining two of the
-    stage's gears (they turn together, so the ratio is 1)."""
+    stage's planets (they turn together, so the ratio is 1). A shaft joining two central
+    gears is no path of the stage: it locks the stage (a differential driving straight)."""
+    def locked(m: int) -> bool:  # a central gear of a planetary stage
+        return carrier is not None and train.members[m].carrier is None
+
     edges: dict[int, dict[int, float]] = {m: {} for m in members}
     for w in meshes:
         edges[w.a][w.b] = w.ratio
@@ -243,7 +254,7 @@ def _stage_edges(train: GearTrain, meshes: list[Willis], members: tuple[int, ...
         on = [m for m in shaft if m in edges]
         for a in on:
             for b in on:
-                if a != b:
+                if a != b and not (locked(a) and locked(b)):
                     edges[a][b] = 1.0
     return edges
 

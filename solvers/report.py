@@ -12,6 +12,7 @@ from mechanisms.rotor import Rotor
 
 from .balancing import Balance, balance
 from .diagnostics import Unsolvable, solve_instant
+from .gear_steps import speed_steps
 from .gears import TrainSolution, solve_train, stages
 from .kinematics import Motion
 from .kinetostatics import Kinetostatics, analyse
@@ -135,7 +136,8 @@ def rotor_json(result: Balance) -> dict:
 def gears_json(solution: TrainSolution, with_stages: bool = False) -> dict:
     """The solved train: ω of every member, ratios from each input (and any the book quotes),
     the named points' peripheral velocities and the degrees of freedom; with ``with_stages``
-    each carrier's stage (``solvers.gears.stages``)."""
+    each carrier's stage (``solvers.gears.stages``) and every member's speed in the book's
+    order (``solvers.gear_steps``)."""
     train = solution.train
     pairs = {(i.member, m) for i in train.inputs for m in train.members if m != i.member}
     pairs |= {tuple(int(x) for x in k.split(".")[1].split("-")) for k in train.book
@@ -152,6 +154,8 @@ def gears_json(solution: TrainSolution, with_stages: bool = False) -> dict:
                            "ends": list(s.ends), "ratio": s.ratio,
                            "solved": None if math.isnan(s.solved) else s.solved}
                           for s in stages(solution)]
+        data["order"] = [{"member": s.member, "omega": s.omega, "kind": s.kind, "carrier": s.carrier}
+                         for s in speed_steps(solution)]
     return clean(data)
 
 

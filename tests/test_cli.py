@@ -179,3 +179,13 @@ def test_a_gear_trains_stages_come_with_stages_json():
     assert "stages" not in json.loads(run("solve", "zbirka-6.1", "--json").stdout)
     text = run("solve", "zbirka-6.1", "--stages").stdout
     assert "stage, carrier 13" in text and "i10,12 = -0.28 from the radii" in text
+    order = data["order"]  # every member once, in the book's order, with the system's speeds
+    assert [s["member"] for s in order][:4] == [2, 4, 6, 7]
+    assert {str(s["member"]): pytest.approx(s["omega"]) for s in order} == \
+        {m: w["omega"] for m, w in data["members"].items()}
+    assert f"ω12 = {data['members']['12']['omega']:.6g}  (stage, carrier 13)" in text
+
+
+def test_a_locked_differential_prints_its_stage_without_a_ratio_of_speeds():
+    text = run("solve", "zbirka-6.10", "--stages").stdout
+    assert "i9,11 = -1 from the radii, 0/0 from the speeds" in text

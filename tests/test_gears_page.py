@@ -69,3 +69,24 @@ def test_the_willis_equations_are_written_stage_by_stage(lang):
     assert any(r"i^{2}_{4,5}" in e and "-0.28125" in e for e in equations)
     assert any(r"i^{13}_{10,12}" in e for e in equations)
     assert any(r"i_{6,10} = \frac{\omega_{6}}{\omega_{10}}" in e for e in equations)
+    radii = {"en": "from the radii", "sr": "iz poluprečnika", "sr-cyrl": "из полупречника"}[lang]
+    assert any(rf"\text{{{radii}: }} {{-0.28125}}" in e for e in equations)
+
+
+@pytest.mark.parametrize("lang", ["sr", "en", "sr-cyrl"])
+def test_the_stages_combine_speed_by_speed_into_the_chosen_total_ratio(lang):
+    """Task 6.1 the book's way: from ω2 = v/R through the shafts, the fixed-axes meshes and
+    each carrier's stage, each step under a caption in the reader's language; the last line is
+    the total ratio between the members picked above, with the page's own metric's digits."""
+    at = page("pages/planetary_gears.py", lang=lang, scene="zbirka-6.1")
+    at.selectbox(key="ra").set_value(6).run()
+    at.selectbox(key="rb").set_value(12).run()
+    assert not at.exception
+    equations = [x.value.strip("$\n") for x in at.latex]
+    first = equations.index(r"\omega_{2} = \frac{v}{R} = \frac{1}{0.41} = 2.439")
+    assert equations[first + 2] == r"\omega_{6} = \omega_{2} = 2.439"  # one body with carrier 2
+    assert equations[-1].startswith(r"i_{6,12} = \frac{\omega_{6}}{\omega_{12}}")
+    ratio = at.metric[0].value.replace(",", ".")
+    assert equations[-1].endswith(f"= {float(ratio):.5g}")
+    shaft = {"en": "Same shaft", "sr": "Isto vratilo", "sr-cyrl": "Исто вратило"}[lang]
+    assert sum(shaft in c.value for c in at.caption) == 3  # 6 = 2, 8 = 7, 13 = 5

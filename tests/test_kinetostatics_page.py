@@ -153,7 +153,8 @@ def test_the_graphical_method_steps_from_the_first_to_the_last_equation(lang):
     assert torque in last.success[0].value  # "M_p = … N·m", the group-by-group value
 
 
-@pytest.mark.parametrize("lang, tab", [("en", "Zhukovsky's lever"), ("sr", "Redukovani mehanizam")])
+@pytest.mark.parametrize("lang, tab", [("en", "Zhukovsky's lever"), ("sr", "Redukovani mehanizam"),
+                                       ("sr-cyrl", "Редуковани механизам")])
 def test_the_lever_tab_writes_the_books_equation_and_agrees_with_the_groups(lang, tab):
     """Task 5.3: S and K placed by proportion, the moments about the pole, then M_p = F_p·AB
     next to the group-by-group value (the same digits)."""

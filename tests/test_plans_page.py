@@ -147,11 +147,13 @@ def test_a_class_iii_group_in_the_complex_number_tab_points_to_newton():
 
 
 @pytest.mark.parametrize("lang, words", [("en", "Final contour of point"),
-                                         ("sr", "Završna kontura tačke")])
+                                         ("sr", "Završna kontura tačke"),
+                                         ("sr-cyrl", "Завршна контура тачке")])
 def test_the_complex_number_tab_ends_with_the_final_contour_of_a_coupler_point(lang, words):
     """E of the four-bar is no joint: its contour from the origin through the crank, with
     |v_E| the same digits as the graphical plan's reading."""
-    tab = {"en": "Complex-number method", "sr": "Metoda kompleksnog broja"}[lang]
+    tab = {"en": "Complex-number method", "sr": "Metoda kompleksnog broja",
+           "sr-cyrl": "Метода комплексног броја"}[lang]
     at = page(PAGE, lang=lang, scene="four-bar-crank-rocker", tab=tab)
     assert not at.exception
     assert any(words in m.value and "E" in m.value for m in at.markdown)
@@ -159,3 +161,22 @@ def test_the_complex_number_tab_ends_with_the_final_contour_of_a_coupler_point(l
     assert any(r"\vec v_{E} = 0.1\,i\omega_{2}" in line for line in lines)
     motion = solve(load_preset("four-bar-crank-rocker"))
     assert any(f"|v_{{E}}| = {abs(motion.points['E'].v[0]):.5g}" in line for line in lines)
+
+
+@pytest.mark.parametrize("lang", ["en", "sr", "sr-cyrl"])
+def test_the_class_iii_plans_step_through_s_to_the_exact_velocities(lang):
+    """Task 4.3 step by step: B first, then the special point S, and the last step (D) reads
+    the solver's relative velocity v_DE in the language's own number format."""
+    at = page(PAGE, lang=lang, scene="zbirka-4.3", step=1)
+    assert not at.exception and not at.error
+    assert at.latex[0].value.strip("$\n") == r"\vec v_{B} = \vec v_{BA}"
+    last = at.slider(key="step").max
+    at.slider(key="step").set_value(2).run()
+    assert at.latex[0].value.strip("$\n").startswith(r"\vec v_{S} = ")
+    at.slider(key="step").set_value(last).run()
+    assert at.latex[0].value.strip("$\n").startswith(r"\vec v_{D} = \vec v_{E} + \vec v_{DE}")
+    motion = solve(load_preset("zbirka-4.3"))
+    v_de = abs(motion.points["D"].v[0] - motion.points["E"].v[0])
+    table = at.dataframe[0].value
+    expected = f"{v_de:.4g} m/s".replace(".", "," if lang.startswith("sr") else ".")
+    assert expected in table.iloc[:, -1].tolist()

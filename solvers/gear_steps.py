@@ -1,0 +1,163 @@
+"""A gear train solved the way the collection's chapter 6 does it by hand (task 6.1): from the
+input, one unknown speed per equation — shafts, gears on fixed axes mesh by mesh, then each
+carrier's stage between its two central gears, planets last — until the speed of every member,
+and so the total ratio, is known.
+
+The speeds are carried through these equations on their own, not read from the linear system
+of ``solvers.gears``, so the two solutions check each other. A train whose speeds no single
+equation can reach (a closed loop of stages) ends with a step that solves the rest together.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from mechanisms.gears import GearTrain
+from solvers.gears import TrainSolution, stages, willis_table
+
+
+@dataclass(frozen=True)
+class SpeedStep:
+    """One member's speed found from one equation (``kind``: input, fixed, shaft, mesh, stage
+    or system), written with its numbers."""
+
+    member: int
+    omega: float  # rad/s
+    kind: str
+    latex: str
+    carrier: int | None = None  # the carrier the equation is written relative to
+
+
+def _n(x: float) -> str:
+    """A number in an equation, bracketed when negative so signs never run together."""
+    text = f"{x:.5g}"
+    return f"({text})" if text.startswith("-") else text
+
+
+def _w(m: int) -> str:
+    return f"\\omega_{{{m}}}"
+
+
+# an equation: (ω_a − ω_c) = i·(ω_b − ω_c) between members a, b and carrier c (None: ω_c = 0)
+Relation = tuple[int, int, int | None, float, str]  # a, b, c, i, kind
+
+
+def _relations(solution: TrainSolution) -> list[Relation]:
+    """Fixed-axes meshes first (the book goes gear by gear there), then each carrier's stage
+    between its central gears, then the meshes that give the planets."""
+    table = willis_table(solution.train)
+    fixed = [(w.a, w.b, None, w.ratio, "mesh") for w in table if w.carrier is None]
+    staged = [(s.ends[0], s.ends[1], s.carrier, s.ratio, "stage") for s in stages(solution)
+              if s.carrier is not None and s.ratio is not None]
+    planets = [(w.a, w.b, w.carrier, w.ratio, "mesh") for w in table if w.carrier is not None]
+    return fixed + staged + planets
+
+
+def _solve_relation(rel: Relation, known: dict[int, float],
+                    shafts: tuple[tuple[int, ...], ...]) -> tuple[int, float, str] | None:
+    """The one unknown of a relation with the other two known, and its equation; or both
+    ends of a stage whose ends share a shaft (a differential driving straight), which then
+    turn with the carrier."""
+    a, b, c, i, _ = rel
+    members = (a, b) if c is None else (a, b, c)
+    unknown = [m for m in members if m not in known]
+    if c is None:
+        name, ratio = f"i_{{{a},{b}}}", f"\\frac{{{_w(a)}}}{{{_w(b)}}}"
+    else:
+        name = f"i^{{{c}}}_{{{a},{b}}}"
+        ratio = f"\\frac{{{_w(a)} - {_w(c)}}}{{{_w(b)} - {_w(c)}}}"
+    equation = f"{name} = {ratio} = {_n(i)}"
+    if (unknown == [a, b] and c is not None and abs(1.0 - i) > 1e-12
+            and any(a in shaft and b in shaft for shaft in shafts)):
+        return a, known[c], _lines(f"{_w(a)} = {_w(b)},\\quad {equation}",
+                                   f"{_w(a)} = {_w(c)}", f"{known[c]:.5g}")
+    if len(unknown) != 1:
+        return None
+    x = unknown[0]
+    if c is None:
+        if x == b:
+            value = known[a] / i
+            return x, value, _lines(equation, f"{_w(b)} = \\frac{{{_w(a)}}}{{{name}}}",
+                                    f"\\frac{{{_n(known[a])}}}{{{_n(i)}}} = {value:.5g}")
+        value = i * known[b]
+        return x, value, _lines(equation, f"{_w(a)} = {name}\\,{_w(b)}",
+                                f"{_n(i)}\\cdot{_n(known[b])} = {value:.5g}")
+    wc = known.get(c)
+    if x == b:
+        value = wc + (known[a] - wc) / i
+        return x, value, _lines(equation, f"{_w(b)} = {_w(c)} + \\frac{{{_w(a)} - {_w(c)}}}{{{name}}}",
+                                f"{_n(wc)} + \\frac{{{_n(known[a])} - {_n(wc)}}}{{{_n(i)}}} = {value:.5g}")
+    if x == a:
+        value = wc + i * (known[b] - wc)
+        return x, value, _lines(equation, f"{_w(a)} = {_w(c)} + {name}\\,({_w(b)} - {_w(c)})",
+                                f"{_n(wc)} + {_n(i)}\\cdot({_n(known[b])} - {_n(wc)}) = {value:.5g}")
+    if abs(1.0 - i) < 1e-12:
+        return None  # i = 1: the carrier's speed does not follow from this stage
+    value = (known[a] - i * known[b]) / (1.0 - i)
+    return x, value, _lines(equation, f"{_w(c)} = \\frac{{{_w(a)} - {name}\\,{_w(b)}}}{{1 - {name}}}",
+                            f"\\frac{{{_n(known[a])} - {_n(i)}\\cdot{_n(known[b])}}}{{1 - {_n(i)}}}"
+                            f" = {value:.5g}")
+
+
+def _lines(equation: str, solved_for: str, numbers: str) -> str:
+    """The equation, what it gives for the unknown, and that with the numbers — one line each,
+    so a long stage never runs off a narrow page."""
+    return (f"\\begin{{gathered}}{equation}\\\\ \\Rightarrow\\; {solved_for}\\\\"
+            f" = {numbers}\\end{{gathered}}")
+
+
+def speed_steps(solution: TrainSolution) -> list[SpeedStep]:
+    """Every member's speed in the book's order (empty unless the train is solved)."""
+    if solution.status != "solved":
+        return []
+    train = solution.train
+    known: dict[int, float] = {}
+    out: list[SpeedStep] = []
+
+    scale = max((abs(i.omega) for i in train.inputs), default=1.0) or 1.0
+
+    def found(member: int, omega: float, kind: str, latex: str, carrier: int | None = None) -> None:
+        if abs(omega) <= 1e-12 * scale:  # at rest, not at 1e-15 rad/s
+            omega, latex = 0.0, latex.rsplit("=", 1)[0] + "= 0"
+        known[member] = omega
+        out.append(SpeedStep(member, omega, kind, latex, carrier))
+
+    for inp in train.inputs:
+        given = (f"{_w(inp.member)} = \\frac{{v}}{{R}} = \\frac{{{_n(inp.velocity)}}}{{{_n(inp.radius)}}}"
+                 if inp.velocity is not None and inp.radius else _w(inp.member))
+        found(inp.member, inp.omega, "input", f"{given} = {inp.omega:.5g}")
+    for m in train.fixed:
+        found(m, 0.0, "fixed", f"{_w(m)} = 0")
+    relations = _relations(solution)
+    while (step := _first(train, relations, known)) is not None:
+        found(*step)
+    rest = [m for m in train.members if m not in known]
+    if rest:  # no single equation reaches them: the stages close a loop, solved together
+        for m in rest:
+            found(m, solution.omega[m], "system", f"{_w(m)} = {solution.omega[m]:.5g}")
+    return out
+
+
+def _first(train: GearTrain, relations: list[Relation],
+           known: dict[int, float]) -> tuple[int, float, str, str, int | None] | None:
+    """The first equation with one unknown: a shaft before any mesh, so a speed found is
+    passed along its shaft at once, as the book does."""
+    for shaft in train.shafts:
+        source = next((m for m in shaft if m in known), None)
+        target = next((m for m in shaft if m not in known), None)
+        if source is not None and target is not None:
+            return target, known[source], "shaft", f"{_w(target)} = {_w(source)} = {known[source]:.5g}", None
+    for rel in relations:
+        solved = _solve_relation(rel, known, train.shafts)
+        if solved is not None:
+            member, value, latex = solved
+            return member, value, rel[4], latex, rel[2]
+    return None
+
+
+def total_ratio(steps: list[SpeedStep], a: int, b: int) -> str | None:
+    """i_ab = ω_a/ω_b with the speeds the steps found (None when member b stands still)."""
+    omega = {s.member: s.omega for s in steps}
+    if a not in omega or b not in omega or omega[b] == 0.0:
+        return None
+    return (f"i_{{{a},{b}}} = \\frac{{{_w(a)}}}{{{_w(b)}}} = \\frac{{{_n(omega[a])}}}{{{_n(omega[b])}}}"
+            f" = {omega[a] / omega[b]:.5g}")
