@@ -12,6 +12,7 @@ import cmath
 import dataclasses
 import functools
 import math
+import weakref
 from collections import OrderedDict
 from dataclasses import dataclass, field
 
@@ -32,6 +33,11 @@ _PREPARED: OrderedDict[tuple, tuple] = OrderedDict()
 PREPARED_MAX = 32
 # A dyad's branch taken from the drawn positions, per geometry and group (see _drawn_branch)
 _BRANCHES: OrderedDict[tuple, int] = OrderedDict()
+# What a scene's solve needs before any position (its structure, each dyad's loop on its
+# drawn branch), kept per scene object for as long as the object lives: a page or a
+# benchmark solving one scene again and again pays this Python work once (issue 21: it was
+# about a third of a 360-position solve). Scenes are frozen; a changed one is a new object.
+_PLANS: dict[int, dict] = {}
 NEAR_SINGULAR = 1e-3  # |sin| of the angle between a group's unknown directions
 SINGULAR = 1e-9
 
@@ -150,7 +156,7 @@ def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = N
     ``tol`` is Newton's stopping residual for class III groups, relative to the group's size.
     """
     at = np.atleast_1d(np.asarray(scene.driver.at if at is None else at, dtype=float))
-    structure = structure or decompose(scene)
+    structure = structure or _planned(scene, "structure", lambda: decompose(scene))
     if points is None:
         groups = structure.groups
     else:
@@ -178,8 +184,9 @@ class _Solved:
         for i, group in enumerate(groups):
             check()
             if group.cls == 2:
-                branch = _drawn_branch(scene, group, groups[:i], tol)
-                solution = solve_dyad(build_loop(scene, group, branch), self.bodies, order)
+                loop = _planned(scene, (group.name, tol), lambda: build_loop(
+                    scene, group, _drawn_branch(scene, group, groups[:i], tol)))
+                solution = solve_dyad(loop, self.bodies, order)
             else:
                 solution = self._triad(scene, group, groups[:i], at, order, tol)
             self._add(group, solution, at)
@@ -226,6 +233,17 @@ class _Solved:
             if weak.any():
                 self.issues.append(GroupIssue(group.name, group.kind, "near-singular",
                                               _ranges(at, weak), float(1.0 / np.nanmin(t))))
+
+
+def _planned(scene: Scene, key, make):
+    """``make()`` once per live scene object and ``key`` (see _PLANS)."""
+    plan = _PLANS.get(id(scene))
+    if plan is None:
+        plan = _PLANS[id(scene)] = {}
+        weakref.finalize(scene, _PLANS.pop, id(scene), None)
+    if key not in plan:
+        plan[key] = make()
+    return plan[key]
 
 
 def _drawn_branch(scene: Scene, group: Group, before, tol: float) -> int | None:
@@ -331,8 +349,14 @@ def special_point(scene: Scene, group: Group, bodies: dict[int, Body], b1: int, 
 
 
 def _collect(scene, structure, at, order, bodies, feasible, transmission, issues, wanted) -> Motion:
+    shape = at.shape
+
     def n(value):  # constants (the frame, a constant ω₂) as read-only arrays over the cycle
-        return value if np.shape(value) == at.shape else np.broadcast_to(value, at.shape)
+        if isinstance(value, np.ndarray) and value.shape == shape:
+            return value
+        out = np.full(shape, value)  # (np.broadcast_to costs more than filling 3600 values)
+        out.flags.writeable = False
+        return out
 
     point_motion: dict[str, PointMotion] = {}
     for number in [FRAME, *scene.members]:
@@ -342,10 +366,9 @@ def _collect(scene, structure, at, order, bodies, feasible, transmission, issues
         for name, local in scene.points_of(number).items():
             if name in point_motion or (wanted is not None and name not in wanted):
                 continue
-            point_motion[name] = PointMotion(
-                z=n(b.position(local)),
-                v=n(b.velocity(local)) if order >= 1 else None,
-                a=n(b.acceleration(local)) if order >= 2 else None)
+            z, v, a = b.point(local, order)
+            point_motion[name] = PointMotion(n(z), None if v is None else n(v),
+                                             None if a is None else n(a))
     member_motion = {
         m: MemberMotion(n(b.rot), n(b.omega) if order >= 1 else None,
                         n(b.epsilon) if order >= 2 else None)

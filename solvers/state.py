@@ -24,7 +24,8 @@ def unit(angle) -> np.ndarray:
 
 def cplx(re, im) -> np.ndarray:
     """A complex array from its real and imaginary parts, without complex arithmetic."""
-    out = np.empty(np.broadcast_shapes(np.shape(re), np.shape(im)), dtype=complex)
+    same = isinstance(re, np.ndarray) and isinstance(im, np.ndarray) and re.shape == im.shape
+    out = np.empty(re.shape if same else np.broadcast_shapes(np.shape(re), np.shape(im)), dtype=complex)
     out.real = re
     out.imag = im
     return out
@@ -57,7 +58,7 @@ class Body:
         return self.angle
 
     def _at_ref(self, local) -> bool:
-        return np.isscalar(local) and local == self.ref
+        return not isinstance(local, np.ndarray) and local == self.ref
 
     def arm(self, local: complex):
         """(c − ref)·rot: the world vector from the reference point to point ``c``."""
@@ -74,3 +75,13 @@ class Body:
         if self._at_ref(local):
             return self.a
         return self.a + (1j * self.epsilon - self.omega * self.omega) * self.arm(local)
+
+    def point(self, local: complex, order: int) -> tuple:
+        """Position, velocity and acceleration of point ``local`` up to ``order`` (None
+        beyond), its arm computed once for all three."""
+        if self._at_ref(local):
+            return self.z, self.v if order >= 1 else None, self.a if order >= 2 else None
+        arm = self.arm(local)
+        v = self.v + 1j * self.omega * arm if order >= 1 else None
+        a = self.a + (1j * self.epsilon - self.omega * self.omega) * arm if order >= 2 else None
+        return self.z + arm, v, a
