@@ -53,6 +53,12 @@ class RawFigure(go.Figure):
             spec["frames"] = self._raw_frames
         return spec
 
+    def raw_dict(self) -> dict:
+        """Data and layout as added, without the validated layout (no template, no deep
+        copy): for the crank frames of ui/crank.py, about 2 ms cheaper a figure than
+        ``to_dict``; their base figure is drawn from the full one first."""
+        return {"data": self._raw_data, "layout": self._raw_layout}
+
     def add_frames(self, frames: list[dict]) -> None:
         """Animation frames as plain dicts: ``{"name", "data", "traces"}``."""
         self._raw_frames.extend(frames)

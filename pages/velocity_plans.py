@@ -2,26 +2,30 @@
 
 from __future__ import annotations
 
+import math
 
 import pandas as pd
 import streamlit as st
 
+from figures.raw import RawFigure
 from figures.plans import KIND_KEYS, layout_plan, mechanism_figure, plain, plan_figure, plan_svg
-from figures.style import nice_scale
+from figures.style import Look, nice_scale
 from mechanisms.schema import Scene
 from solvers.analytic import derivation, equations, solved_values
 from solvers.contour import contour, free_points
 from solvers.contour import latex as contour_latex
-from solvers.diagnostics import Unsolvable
+from solvers.diagnostics import Unsolvable, solve_instant
+from solvers.kinematics import Motion
 from solvers.plans import Plans, build, describe, readings
 from solvers.structure import StructureError
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.book import book_section
 from ui.chapters import page_title
+from ui.crank import Crank, crank_frames, live, nearest, turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
-from ui.i18n import num, t, title_of
+from ui.i18n import current, num, t, title_of
 from ui.present import look
 from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -113,6 +117,35 @@ with main:
         key="tab", on_change="rerun")
 
 
+def plan_figures(scene: Scene, plans: Plans, scales: dict[str, float], index: int,
+                 motion: Motion | None = None) -> dict[str, RawFigure]:
+    """Both plans up to step ``index`` and the mechanism, at the scene's instant."""
+    out = {key: plan_figure(layout_plan(plan, scales[key], index),
+                            t(title, scale=num(scales[key], 4)), t, look())
+           for plan, key, title in ((plans.velocity, "v", "plans.velocity_title"),
+                                    (plans.acceleration, "a", "plans.acceleration_title"))}
+    at = num(math.degrees(scene.driver.at) % 360, 4)
+    out["mech"] = mechanism_figure(motion or instant(scene), plans,
+                                   t("plans.mechanism_title", at=at), t, look())
+    return out
+
+
+@st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
+def turn_frames(scene: Scene, scales: dict[str, float], index: int, language: str,
+                look_: Look) -> dict[str, str]:
+    """The three figures every 5° of φ₂ (ui.crank), once per geometry, scales and step: the
+    scene comes at φ₂ = 0, so the angle the page shows is not part of the key."""
+    def draw(angle: float) -> dict[str, RawFigure] | None:
+        at = scene.with_(at=angle)
+        try:
+            motion = solve_instant(at, None)
+            return plan_figures(at, build(motion), scales, index, motion)
+        except (Unsolvable, StructureError):
+            return None
+
+    return crank_frames(draw, turn())
+
+
 def step_table(index: int) -> pd.DataFrame:
     """The vectors of one step in both plans: name, kind, direction, plan length, value."""
     rows = []
@@ -135,13 +168,16 @@ if tab_plans.open:
             st.caption(t("plans.extension", point=steps[index].target.upper()))
         if any(g.cls == 3 for g in instant(scene).structure.groups):
             method_doc("triad-plans")
+        figures = plan_figures(scene, plans, scales, index)
+        values = turn() if scene.driver.kind == "rotating" else ()
+        sent = turn_frames(scene.with_(at=0.0), scales, index, current(), look()) if values and live() else {}
+        frames = {k: Crank(values, nearest(values, st.session_state["at"]), "plans", sent.get(k))
+                  for k in ("v", "a", "mech")} if values else {}
         left, right = st.columns(2)
-        for column, plan, key, title in ((left, plans.velocity, "v", "plans.velocity_title"),
-                                         (right, plans.acceleration, "a", "plans.acceleration_title")):
-            drawing = layout_plan(plan, scales[key], index)
+        for column, plan, key in ((left, plans.velocity, "v"), (right, plans.acceleration, "a")):
             with column:
-                chart(plan_figure(drawing, t(title, scale=num(scales[key], 4)), t, look()),
-                      f"{scene.id}-{plan.quantity}-plan", key=f"fig_{key}")
+                chart(figures[key], f"{scene.id}-{plan.quantity}-plan", key=f"fig_{key}",
+                      crank=frames.get(key))
                 caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
                 print_button(plan_svg(layout_plan(plan, scales[key]), caption),
                              f"{scene.id}-{plan.quantity}-plan.svg", key=f"svg_{key}")
@@ -151,9 +187,7 @@ if tab_plans.open:
                                  t("plans.col_sense"): t("plans.ccw" if w > 0 else "plans.cw" if w < 0 else "plans.still")}
                                 for n, (w, e) in sorted(plans.members.items())])
         show_table(members, f"{scene.id}-members.csv", "csv_members")
-        chart(mechanism_figure(instant(scene), plans,
-                               t("plans.mechanism_title", at=num(st.session_state["at"], 4)), t, look()),
-              f"{scene.id}-mechanism", key="fig_mech")
+        chart(figures["mech"], f"{scene.id}-mechanism", key="fig_mech", crank=frames.get("mech"))
 
 if tab_loops.open:
     with tab_loops:

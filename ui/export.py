@@ -6,6 +6,7 @@ import pandas as pd
 import streamlit as st
 
 from figures.raw import RawFigure
+from ui.crank import LIVE, Crank
 from ui.i18n import t
 from ui.plot import plot
 
@@ -17,12 +18,24 @@ def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
                        icon=":material/download:")
 
 
-def chart(fig: RawFigure, filename: str, key: str, editable: bool = False):
+def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
+          crank: Crank | None = None):
     """A Plotly chart whose toolbar saves it as SVG (to print) or PNG, and shows it full screen.
     Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE).
-    ``editable``: its shapes drag and its paper clicks (ui.plot.plot), read from the result."""
+    ``editable``: its shapes drag and its paper clicks (ui.plot.plot), read from the result.
+    ``crank``: its own φ₂ control (ui.crank); letting go of it sets the page's φ₂ (``at``)."""
     return plot(fig, key, filename, {"svg": t("export.save_svg"), "png": t("export.save_png"),
-                                     "fullscreen": t("export.fullscreen")}, editable)
+                                     "fullscreen": t("export.fullscreen"), "play": t("fig.play"),
+                                     "pause": t("fig.pause"), "crank": "φ₂"},
+                editable, crank, None if crank is None else _turned)
+
+
+def _turned(degrees: float | None) -> None:
+    """The student touched a chart's φ₂ control (None) or let go of it at ``degrees``: the
+    rerun that follows sends the frames, and takes φ₂ from the control."""
+    st.session_state[LIVE] = True
+    if degrees is not None:
+        st.session_state["at"] = degrees
 
 
 def print_button(svg: str, filename: str, key: str) -> None:

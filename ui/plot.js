@@ -118,6 +118,140 @@ function listen(gd, send) {
   });
 }
 
+// φ₂ in the browser (ui/crank.py): a slider and play controls under the chart. The first
+// touch asks the server for the figure's frames over a turn (the trigger "frames"); from
+// then on every chart of the same group redraws locally while φ₂ moves, and only letting
+// go (or pausing, or a step button) goes back to the server, as the trigger "at".
+function frameFigure(gd, k) {
+  const turn = gd.__crank.spec.turn;
+  const patch = turn && turn.frames[k];
+  if (!patch) return null;  // no frames yet, or the mechanism cannot be drawn there
+  const data = patch.all || (patch.data ? turn.base.data.map((tr, i) => patch.data[i] || tr)
+                                        : turn.base.data);
+  return { data, layout: patch.layout ? { ...gd.__layout, ...patch.layout } : gd.__layout };
+}
+
+function showFrame(gd, k) {
+  const crank = gd.__crank;
+  const { spec } = crank;
+  crank.index = k;
+  crank.range.value = String(k);
+  const fig = frameFigure(gd, k);
+  const reachable = !spec.turn || spec.turn.frames[k];
+  crank.label.textContent = `${spec.label} = ${spec.values[k]}°${reachable ? "" : " ✕"}`;
+  if (fig && window.Plotly) window.Plotly.react(gd, { ...fig, config: gd.__config });
+}
+
+function moveCrank(gd, k, release) {
+  const { spec } = gd.__crank;
+  window.dispatchEvent(new CustomEvent("mehanizmi-crank", { detail: { group: spec.group, index: k } }));
+  const url = new URL(window.location.href);  // the link follows φ₂ while it moves
+  url.searchParams.set("at", String(spec.values[k]));
+  window.history.replaceState(window.history.state, "", url);
+  if (release) gd.__send.current("at", spec.values[k]);
+}
+
+function askFrames(gd) {
+  const crank = gd.__crank;
+  if (crank.spec.turn || crank.asked) return;
+  crank.asked = true;
+  gd.__send.current("frames", true);
+}
+
+function crankButton(text, title, click) {
+  const b = document.createElement("button");
+  b.type = "button";
+  b.textContent = text;
+  b.title = title;
+  b.addEventListener("click", click);
+  return b;
+}
+
+function crankControls(gd, labels) {
+  const crank = gd.__crank;
+  if (crank.box) return;
+  const box = document.createElement("div");
+  box.className = "mehanizmi-crank";
+  box.style.cssText = "display:flex;align-items:center;gap:0.5em;padding:0.3em 0;font-size:0.9em";
+  const range = document.createElement("input");
+  range.type = "range";
+  range.min = "0";
+  range.step = "1";
+  range.style.flex = "1";
+  const label = document.createElement("span");
+  label.style.minWidth = "6.5em";
+  const n = () => crank.spec.values.length;
+  let timer = null;
+  const play = crankButton("▶", labels.play, () => {
+    if (crank.stop()) {
+      moveCrank(gd, crank.index, true);
+      return;
+    }
+    if (!crank.spec.turn) {  // play once the frames are here
+      crank.playing = true;
+      askFrames(gd);
+      return;
+    }
+    crank.start();
+  });
+  crank.start = () => {
+    crank.playing = false;
+    play.textContent = "❚❚";
+    play.title = labels.pause;
+    timer = setInterval(() => moveCrank(gd, (crank.index + 1) % n(), false), 80);
+  };
+  crank.stop = () => {
+    if (timer === null) return false;
+    clearInterval(timer);
+    timer = null;
+    play.textContent = "▶";
+    play.title = labels.play;
+    return true;
+  };
+  const step = (by) => () => {
+    crank.stop();
+    askFrames(gd);
+    moveCrank(gd, (crank.index + by + n()) % n(), true);
+  };
+  range.addEventListener("pointerdown", () => askFrames(gd));
+  range.addEventListener("input", () => { crank.stop(); moveCrank(gd, Number(range.value), false); });
+  range.addEventListener("change", () => moveCrank(gd, Number(range.value), true));
+  box.append(crankButton("◀", "−5°", step(-1)), play, crankButton("▶|", "+5°", step(1)), range, label);
+  gd.after(box);
+  Object.assign(crank, { box, range, label });
+  crank.follow = (e) => {
+    if (e.detail.group === crank.spec.group) showFrame(gd, e.detail.index);
+  };
+  window.addEventListener("mehanizmi-crank", crank.follow);
+}
+
+function updateCrank(gd, spec) {
+  if (!spec.crank) {
+    dropCrank(gd);
+    return;
+  }
+  const crank = gd.__crank = gd.__crank || {};
+  crank.spec = spec.crank;
+  crank.asked = false;
+  crankControls(gd, spec.labels);
+  crank.range.max = String(spec.crank.values.length - 1);
+  if (!crank.box.contains(document.activeElement) || !spec.crank.turn) {
+    crank.index = spec.crank.index;  // the server's φ₂, unless the student is on the control
+  }
+  crank.range.value = String(crank.index);
+  crank.label.textContent = `${spec.crank.label} = ${spec.crank.values[crank.index]}°`;
+  if (crank.playing && spec.crank.turn) crank.start();
+}
+
+function dropCrank(gd) {
+  const crank = gd.__crank;
+  if (!crank) return;
+  if (crank.stop) crank.stop();
+  if (crank.follow) window.removeEventListener("mehanizmi-crank", crank.follow);
+  if (crank.box) crank.box.remove();
+  gd.__crank = null;
+}
+
 export default function (component) {
   const { data, parentElement, setTriggerValue } = component;
   let gd = parentElement.querySelector(".mehanizmi-plot");
@@ -134,6 +268,7 @@ export default function (component) {
   gd.__filename = spec.filename;
   gd.__send = gd.__send || { current: null };
   gd.__send.current = setTriggerValue;  // the newest mount's, as Streamlit hands it over
+  updateCrank(gd, spec);
   plotly(spec.src).then((Plotly) => schedule(gd, () => {
     // one toolbar button per file format instead of Plotly's camera (one format, set in
     // advance); no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a
@@ -142,6 +277,8 @@ export default function (component) {
                      modeBarButtonsToRemove: ["toImage"],
                      modeBarButtonsToAdd: toolbar(Plotly, spec.labels),
                      ...(spec.editable ? EDITABLE : {}) };
+    gd.__config = config;  // the frames of φ₂ are drawn with the same config (see BUTTONS)
+    gd.__layout = spec.figure.layout;  // and over the same layout
     Plotly.react(gd, { ...spec.figure, config })
       .then(() => { if (spec.editable) listen(gd, gd.__send); })
       .catch((error) => { gd.textContent = String(error); });
@@ -149,6 +286,7 @@ export default function (component) {
   // called when the chart leaves the page (not between reruns): free Plotly's listeners
   return () => {
     waiting.delete(gd);
+    dropCrank(gd);
     if (window.Plotly) window.Plotly.purge(gd);
   };
 }

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+from collections.abc import Callable
 from pathlib import Path
 
 import plotly
@@ -20,6 +21,7 @@ import plotly.io as pio
 import streamlit as st
 
 from figures.raw import RawFigure
+from ui.crank import Crank
 
 ROOT = Path(__file__).resolve().parents[1]
 PLOTLY_JS = f"plotly-{plotly.__version__}.min.js"  # named after the package that ships it
@@ -43,18 +45,28 @@ def publish_plotly_js(static: Path = ROOT / "static") -> Path:
 
 
 def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
-         editable: bool = False):
+         editable: bool = False, crank: Crank | None = None,
+         on_crank: Callable[[float | None], None] | None = None):
     """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns. Its
     toolbar saves it as ``filename``.svg or .png; ``labels`` name the buttons ("svg", "png",
     "fullscreen").
 
     ``editable``: the figure's shapes can be dragged and the paper clicked; the rerun that
     follows reads the result's ``drag`` ({point, x, y}: a shape named after a point, moved
-    to x, y) or ``click`` ({x, y}), each set for that one rerun."""
+    to x, y) or ``click`` ({x, y}), each set for that one rerun.
+
+    ``crank``: the chart's own φ₂ control (ui/crank.py), labelled ``labels["crank"]``.
+    ``on_crank`` is called before the rerun the control starts: with the angle in degrees
+    when the student lets go of it, with None when they first touch it (to ask for the
+    frames)."""
+    control = "null" if crank is None else crank.json(labels.get("crank", "φ₂"))
     body = (f'{{"src": {json.dumps(URL)}, "filename": {json.dumps(filename)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
-            f'"figure": {pio.to_json(fig, validate=False)}}}')
+            f'"crank": {control}, "figure": {pio.to_json(fig, validate=False)}}}')
     events = {"on_drag_change": _ignore, "on_click_change": _ignore} if editable else {}
+    if on_crank is not None:
+        events["on_at_change"] = lambda: on_crank(float(st.session_state[key]["at"]))
+        events["on_frames_change"] = lambda: on_crank(None)
     return _render(key=key, data=body.encode("utf-8"), **events)
 
 

@@ -1,0 +1,102 @@
+"""The crank angle in the browser (issue 21): a page's figures at every few degrees of φ₂,
+sent once per geometry, so that the chart element (ui/plot.js) redraws them locally while a
+student scrubs or plays φ₂, with no rerun until the slider is released.
+
+Each frame carries only what differs from the first one: the traces that moved and the
+layout keys that changed (a title with the angle, the letters). A position the mechanism
+cannot reach is sent as null and shown as such.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import streamlit as st
+from plotly.io.json import to_json_plotly
+
+from figures.raw import RawFigure
+
+STEP_DEG = 5.0  # 72 frames a turn: smooth to scrub, small enough to send
+LIVE = "crank_live"  # session key: the student asked for the frames (see live())
+
+
+@dataclass(frozen=True)
+class Crank:
+    """A chart's own φ₂ control: the frame angles (degrees), the one showing, the group of
+    charts that move together, and the frames themselves (JSON) once the student has asked
+    for them by touching the control — ordinary reruns do not pay for 72 figures."""
+
+    values: tuple[float, ...]
+    index: int
+    group: str
+    frames: str | None = None  # {"base", "frames"} from crank_frames
+
+    def json(self, label: str) -> str:
+        return (f'{{"values": {json.dumps(list(self.values))}, "index": {self.index}, '
+                f'"group": {json.dumps(self.group)}, "label": {json.dumps(label)}, '
+                f'"turn": {self.frames or "null"}}}')
+
+
+def turn(step_deg: float = STEP_DEG) -> tuple[float, ...]:
+    """The frame angles of a whole turn, in degrees."""
+    return tuple(k * step_deg for k in range(int(round(360.0 / step_deg))))
+
+
+def nearest(values: tuple[float, ...], degrees: float) -> int:
+    """The frame closest to ``degrees`` around the turn."""
+    return min(range(len(values)), key=lambda k: abs((values[k] - degrees + 180.0) % 360.0 - 180.0))
+
+
+def crank_frames(draw: Callable[[float], dict[str, RawFigure] | None],
+                 values: tuple[float, ...]) -> dict[str, str]:
+    """``draw(φ₂ in rad)`` gives a page's figures at one angle, by name (None where the
+    mechanism cannot be drawn); per name, the JSON of its frames, each a patch on the first.
+    Numbers are rounded to 5 significant digits (a tenth of a millimetre on a drawing)."""
+    drawn = [draw(math.radians(v)) for v in values]
+    names = next((list(d) for d in drawn if d), [])
+    out = {}
+    for name in names:
+        specs = [None if d is None else _rounded(json.loads(to_json_plotly(d[name].raw_dict())))
+                 for d in drawn]
+        base = next(s for s in specs if s is not None)
+        varying = {k for s in specs if s is not None for k, v in s["layout"].items()
+                   if base["layout"].get(k) != v}
+        frames = [None if s is None else _patch(base, s, varying) for s in specs]
+        out[name] = json.dumps({"base": base, "frames": frames}, separators=(",", ":"))
+    return out
+
+
+def _rounded(value):
+    if isinstance(value, float):
+        return float(f"{value:.5g}")
+    if isinstance(value, list):
+        return [_rounded(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _rounded(v) for k, v in value.items()}
+    return value
+
+
+def _patch(base: dict, spec: dict, varying: set[str]) -> dict:
+    """What turns ``base`` into ``spec``: the changed traces by index (or all of them when
+    their number differs), and every layout key that changes anywhere in the turn (the chart
+    lays them over the figure it showed first, drawn at another angle)."""
+    patch: dict = {}
+    if len(spec["data"]) != len(base["data"]):
+        patch["all"] = spec["data"]
+    else:
+        changed = {str(i): tr for i, (tr, old) in enumerate(zip(spec["data"], base["data"])) if tr != old}
+        if changed:
+            patch["data"] = changed
+    layout = {k: spec["layout"][k] for k in varying if k in spec["layout"]}
+    if layout:
+        patch["layout"] = layout
+    return patch
+
+
+def live() -> bool:
+    """Whether this run answers a touch of a chart's φ₂ control (the frames are sent then),
+    read once a run: any other rerun, a geometry change among them, sends none."""
+    return bool(st.session_state.pop(LIVE, False))
