@@ -304,3 +304,65 @@ def test_a_figure_saves_as_svg_or_png_from_its_toolbar(app_url, browser, fmt, st
     assert download.value.suggested_filename == f"zbirka-2.1-velocity-plan.{fmt.lower()}"
     data = Path(download.value.path()).read_bytes()
     assert data.decode("latin-1").startswith(start)
+
+
+def crank_letters(page) -> dict[str, complex]:
+    """Where the plans page's mechanism chart (the last chart) writes each point's letter."""
+    traces = page.evaluate("() => { const g = [...document.querySelectorAll('.mehanizmi-plot')].pop();"
+                           " return g.data.filter(t => t.mode === 'text')"
+                           ".map(t => [Array.from(t.text), Array.from(t.x), Array.from(t.y)]); }")
+    return {name: complex(x, y) for text, xs, ys in traces for name, x, y in zip(text, xs, ys)}
+
+
+TABLE_CELLS = ("() => [...document.querySelectorAll('[data-testid=stDataFrame] table td')]"
+               ".map(td => td.textContent).join('|')")
+
+
+def scrub(page, index: int, release: bool) -> None:
+    page.evaluate("([k, release]) => { const r = document.querySelector('.mehanizmi-crank input');"
+                  " r.value = String(k); r.dispatchEvent(new Event('input'));"
+                  " if (release) r.dispatchEvent(new Event('change')); }", [index, release])
+
+
+def test_scrubbing_phi2_redraws_the_plans_locally_and_letting_go_updates_the_tables(
+        app_url, browser, tmp_path):
+    """The first touch brings the frames; scrubbing to 150° then moves every chart without a
+    rerun (the letters sit where the solver puts the joints at 150°, the link says at=150);
+    letting go reruns once, and the tables follow. Another scene replaces the frames."""
+    import math
+
+    from mechanisms import load_preset
+    from solvers.kinematics import solve
+
+    page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=four-bar-crank-rocker")
+    page.locator(".mehanizmi-crank input").first.dispatch_event("pointerdown")
+    loaded = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
+              ".every(g => g.__crank && g.__crank.spec.turn)")
+    page.wait_for_function(loaded, timeout=30_000)
+    wait_idle(page)
+    table = page.evaluate(TABLE_CELLS)
+    assert table
+    scrub(page, 30, release=False)  # 30 frames of 5°
+    motion = solve(load_preset("four-bar-crank-rocker"), math.radians(150.0))
+    letters = crank_letters(page)
+    for name in ("A", "B", "E"):
+        assert abs(letters[name] - motion.points[name].z[0]) < 1e-4  # 5 digits sent
+    assert "at=150" in page.url
+    assert page.evaluate(TABLE_CELLS) == table  # no rerun yet
+    assert "30.00" in page.locator("[data-testid='stSlider']").first.inner_text()
+    shot = tmp_path / "plans-scrubbed.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+    scrub(page, 30, release=True)
+    page.wait_for_function(f"t => ({TABLE_CELLS})() !== t", arg=table, timeout=30_000)
+    wait_idle(page)
+    assert "150.00" in page.locator("[data-testid='stSlider']").first.inner_text()
+
+    page.goto(f"{app_url}/velocity_plans?lang=en&scene=analitika-2.1")  # another scene
+    wait_idle(page)
+    page.wait_for_selector(".mehanizmi-crank input", timeout=30_000)
+    page.locator(".mehanizmi-crank input").first.dispatch_event("pointerdown")
+    page.wait_for_function(loaded, timeout=30_000)
+    scrub(page, 0, release=False)
+    motion = solve(load_preset("analitika-2.1"), 0.0)
+    assert abs(crank_letters(page)["C"] - motion.points["C"].z[0]) < 1e-4
