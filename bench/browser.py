@@ -83,6 +83,50 @@ def measure(page, url: str, label: str, expander: str | None) -> tuple[float, fl
     return statistics.median(first), statistics.median(last)
 
 
+# φ₂ scrubbed in the browser (ui/crank.py): from the slider's input event to the frame that
+# paints the first chart redrawn (the one on screen), and to the one after the last chart
+SCRUB = """([k, charts]) => new Promise((resolve) => {
+  const react = window.Plotly.react;
+  const start = performance.now();
+  let drawn = 0, first = null;
+  window.Plotly.react = function (...args) {
+    const out = react.apply(this, args);
+    drawn += 1;
+    if (drawn === 1) requestAnimationFrame(() => { first = performance.now() - start; });
+    if (drawn === charts) requestAnimationFrame(() => requestAnimationFrame(() => {
+      window.Plotly.react = react;
+      resolve([first, performance.now() - start]);
+    }));
+    return out;
+  };
+  const range = document.querySelector('.mehanizmi-crank input');
+  range.value = String(k);
+  range.dispatchEvent(new Event('input'));
+})"""
+LOADED = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
+          ".every(g => g.__crank && g.__crank.spec.turn)")
+FRAME_BYTES = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
+               ".reduce((n, g) => n + JSON.stringify(g.__crank.spec.turn).length, 0)")
+SCRUBBED = ["velocity_plans"]  # the pages whose charts carry φ₂ frames
+
+
+def scrub(page, url: str) -> tuple[float, float, float, float]:
+    """Medians (ms) of a φ₂ step redrawn in the browser, to the first chart painted and to
+    all; the ms from the first touch of the control to the frames there (one rerun); and the
+    frames' size in kB."""
+    page.goto(url)
+    page.wait_for_selector(".mehanizmi-crank input", timeout=60_000)
+    page.wait_for_timeout(1500)
+    start = page.evaluate("() => performance.now()")
+    page.locator(".mehanizmi-crank input").first.dispatch_event("pointerdown")
+    page.wait_for_function(LOADED, timeout=60_000, polling="raf")
+    first = page.evaluate("() => performance.now()") - start
+    charts = page.locator(".mehanizmi-crank").count()
+    times = [page.evaluate(SCRUB, [k % 72, charts]) for k in range(1, CHANGES + 1)]
+    return (statistics.median(t[0] for t in times), statistics.median(t[1] for t in times), first,
+            page.evaluate(FRAME_BYTES) / 1e3)
+
+
 def table() -> str:
     port = free_port()
     server = start_server(port)
@@ -99,6 +143,12 @@ def table() -> str:
             for name, label, expander in PAGES:
                 first, last = measure(page, f"http://127.0.0.1:{port}/{name}?lang=en", label, expander)
                 rows.append(f"| {name} | {first:.0f} | {last:.0f} |")
+            rows += ["", f"| page | φ₂ scrubbed in the browser → first chart painted, ms (median "
+                     f"of {CHANGES}) | → all its charts, ms | first touch → frames there (one "
+                     "rerun), ms | frames, kB |", "|---|---:|---:|---:|---:|"]
+            for name in SCRUBBED:
+                first, every, touch, size = scrub(page, f"http://127.0.0.1:{port}/{name}?lang=en")
+                rows.append(f"| {name} | {first:.0f} | {every:.0f} | {touch:.0f} | {size:.0f} |")
             context.close()
     finally:
         server.terminate()

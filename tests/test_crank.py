@@ -25,7 +25,8 @@ def rebuilt(turn_json: dict, k: int) -> dict | None:
     if patch is None:
         return None
     base = turn_json["base"]
-    data = patch.get("all") or [patch.get("data", {}).get(str(i), tr) for i, tr in enumerate(base["data"])]
+    data = patch.get("all") or [{**tr, **patch.get("data", {}).get(str(i), {})}
+                                for i, tr in enumerate(base["data"])]
     return {"data": data, "layout": {**base["layout"], **patch.get("layout", {})}}
 
 
@@ -40,6 +41,7 @@ def test_every_patch_rebuilds_its_frame_and_sends_only_what_moves():
         assert frame["data"][1]["x"][0] == float(f"{math.cos(math.radians(v)):.5g}")
         assert frame["layout"]["title"]["text"] == f"{v:.0f}°"
     assert all("0" not in p.get("data", {}) for p in sent["frames"] if p)  # the still line: once
+    assert all(set(p["data"]["1"]) == {"x", "y"} for p in sent["frames"][1:] if p)  # what moved
     assert all("showlegend" not in p.get("layout", {}) for p in sent["frames"] if p)
 
 

@@ -80,14 +80,15 @@ def _rounded(value):
 
 
 def _patch(base: dict, spec: dict, varying: set[str]) -> dict:
-    """What turns ``base`` into ``spec``: the changed traces by index (or all of them when
-    their number differs), and every layout key that changes anywhere in the turn (the chart
+    """What turns ``base`` into ``spec``: the changed properties of each changed trace, by
+    index (all traces whole when their number differs), and every layout key that changes anywhere in the turn (the chart
     lays them over the figure it showed first, drawn at another angle)."""
     patch: dict = {}
     if len(spec["data"]) != len(base["data"]):
         patch["all"] = spec["data"]
     else:
-        changed = {str(i): tr for i, (tr, old) in enumerate(zip(spec["data"], base["data"])) if tr != old}
+        changed = {str(i): {k: v for k, v in tr.items() if old.get(k) != v}
+                   for i, (tr, old) in enumerate(zip(spec["data"], base["data"])) if tr != old}
         if changed:
             patch["data"] = changed
     layout = {k: spec["layout"][k] for k in varying if k in spec["layout"]}

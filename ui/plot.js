@@ -126,7 +126,7 @@ function frameFigure(gd, k) {
   const turn = gd.__crank.spec.turn;
   const patch = turn && turn.frames[k];
   if (!patch) return null;  // no frames yet, or the mechanism cannot be drawn there
-  const data = patch.all || (patch.data ? turn.base.data.map((tr, i) => patch.data[i] || tr)
+  const data = patch.all || (patch.data ? turn.base.data.map((tr, i) => (patch.data[i] ? { ...tr, ...patch.data[i] } : tr))
                                         : turn.base.data);
   return { data, layout: patch.layout ? { ...gd.__layout, ...patch.layout } : gd.__layout };
 }
@@ -139,7 +139,7 @@ function showFrame(gd, k) {
   const fig = frameFigure(gd, k);
   const reachable = !spec.turn || spec.turn.frames[k];
   crank.label.textContent = `${spec.label} = ${spec.values[k]}°${reachable ? "" : " ✕"}`;
-  if (fig && window.Plotly) window.Plotly.react(gd, { ...fig, config: gd.__config });
+  if (fig && window.Plotly) schedule(gd, () => window.Plotly.react(gd, { ...fig, config: gd.__config }));
 }
 
 function moveCrank(gd, k, release) {
