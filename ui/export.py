@@ -24,10 +24,11 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
     Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE).
     ``editable``: its shapes drag and its paper clicks (ui.plot.plot), read from the result.
     ``crank``: its own φ₂ control (ui.crank); letting go of it sets the page's φ₂ (``at``)."""
-    return plot(fig, key, filename, {"svg": t("export.save_svg"), "png": t("export.save_png"),
-                                     "fullscreen": t("export.fullscreen"), "play": t("fig.play"),
-                                     "pause": t("fig.pause"), "crank": "φ₂"},
-                editable, crank, None if crank is None else _turned)
+    labels = {"svg": t("export.save_svg"), "png": t("export.save_png"),
+              "fullscreen": t("export.fullscreen")}
+    if crank is not None:
+        labels.update(play=t("fig.play"), pause=t("fig.pause"), crank="φ₂")
+    return plot(fig, key, filename, labels, editable, crank, None if crank is None else _turned)
 
 
 def _turned(degrees: float | None) -> None:
