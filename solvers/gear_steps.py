@@ -11,8 +11,9 @@ equation can reach (a closed loop of stages) ends with a step that solves the re
 from __future__ import annotations
 
 from dataclasses import dataclass
+
 from mechanisms.gears import GearTrain
-from solvers.gears import TrainSolution, stages, willis_table
+from solvers.gears import TrainSolution, settled, speed_scale, stages, willis_table
 
 
 @dataclass(frozen=True)
@@ -52,11 +53,11 @@ def _relations(solution: TrainSolution) -> list[Relation]:
     return fixed + staged + planets
 
 
-def _solve_relation(rel: Relation, known: dict[int, float],
-                    shafts: tuple[tuple[int, ...], ...]) -> tuple[int, float, str] | None:
+def _solve_relation(rel: Relation, known: dict[int, float], shafts: tuple[tuple[int, ...], ...],
+                    scale: float) -> tuple[int, float, str] | None:
     """The one unknown of a relation with the other two known, and its equation; or both
     ends of a stage whose ends share a shaft (a differential driving straight), which then
-    turn with the carrier."""
+    turn with the carrier. A result of round-off size against ``scale`` is written as 0."""
     a, b, c, i, _ = rel
     members = (a, b) if c is None else (a, b, c)
     unknown = [m for m in members if m not in known]
@@ -75,24 +76,24 @@ def _solve_relation(rel: Relation, known: dict[int, float],
     x = unknown[0]
     if c is None:
         if x == b:
-            value = known[a] / i
+            value = settled(known[a] / i, scale)
             return x, value, _lines(equation, f"{_w(b)} = \\frac{{{_w(a)}}}{{{name}}}",
                                     f"\\frac{{{_n(known[a])}}}{{{_n(i)}}} = {value:.5g}")
-        value = i * known[b]
+        value = settled(i * known[b], scale)
         return x, value, _lines(equation, f"{_w(a)} = {name}\\,{_w(b)}",
                                 f"{_n(i)}\\cdot{_n(known[b])} = {value:.5g}")
     wc = known.get(c)
     if x == b:
-        value = wc + (known[a] - wc) / i
+        value = settled(wc + (known[a] - wc) / i, scale)
         return x, value, _lines(equation, f"{_w(b)} = {_w(c)} + \\frac{{{_w(a)} - {_w(c)}}}{{{name}}}",
                                 f"{_n(wc)} + \\frac{{{_n(known[a])} - {_n(wc)}}}{{{_n(i)}}} = {value:.5g}")
     if x == a:
-        value = wc + i * (known[b] - wc)
+        value = settled(wc + i * (known[b] - wc), scale)
         return x, value, _lines(equation, f"{_w(a)} = {_w(c)} + {name}\\,({_w(b)} - {_w(c)})",
                                 f"{_n(wc)} + {_n(i)}\\cdot({_n(known[b])} - {_n(wc)}) = {value:.5g}")
     if abs(1.0 - i) < 1e-12:
         return None  # i = 1: the carrier's speed does not follow from this stage
-    value = (known[a] - i * known[b]) / (1.0 - i)
+    value = settled((known[a] - i * known[b]) / (1.0 - i), scale)
     return x, value, _lines(equation, f"{_w(c)} = \\frac{{{_w(a)} - {name}\\,{_w(b)}}}{{1 - {name}}}",
                             f"\\frac{{{_n(known[a])} - {_n(i)}\\cdot{_n(known[b])}}}{{1 - {_n(i)}}}"
                             f" = {value:.5g}")
@@ -113,11 +114,9 @@ def speed_steps(solution: TrainSolution) -> list[SpeedStep]:
     known: dict[int, float] = {}
     out: list[SpeedStep] = []
 
-    scale = max((abs(i.omega) for i in train.inputs), default=1.0) or 1.0
+    scale = speed_scale(solution.omega)
 
     def found(member: int, omega: float, kind: str, latex: str, carrier: int | None = None) -> None:
-        if abs(omega) <= 1e-12 * scale:  # at rest, not at 1e-15 rad/s
-            omega, latex = 0.0, latex.rsplit("=", 1)[0] + "= 0"
         known[member] = omega
         out.append(SpeedStep(member, omega, kind, latex, carrier))
 
@@ -128,17 +127,16 @@ def speed_steps(solution: TrainSolution) -> list[SpeedStep]:
     for m in train.fixed:
         found(m, 0.0, "fixed", f"{_w(m)} = 0")
     relations = _relations(solution)
-    while (step := _first(train, relations, known)) is not None:
+    while (step := _first(train, relations, known, scale)) is not None:
         found(*step)
-    rest = [m for m in train.members if m not in known]
-    if rest:  # no single equation reaches them: the stages close a loop, solved together
-        for m in rest:
-            found(m, solution.omega[m], "system", f"{_w(m)} = {solution.omega[m]:.5g}")
+    # what no single equation reaches (stages that need each other) comes from the system
+    for m in [m for m in train.members if m not in known]:
+        found(m, solution.omega[m], "system", f"{_w(m)} = {solution.omega[m]:.5g}")
     return out
 
 
-def _first(train: GearTrain, relations: list[Relation],
-           known: dict[int, float]) -> tuple[int, float, str, str, int | None] | None:
+def _first(train: GearTrain, relations: list[Relation], known: dict[int, float],
+           scale: float) -> tuple[int, float, str, str, int | None] | None:
     """The first equation with one unknown: a shaft before any mesh, so a speed found is
     passed along its shaft at once, as the book does."""
     for shaft in train.shafts:
@@ -147,7 +145,7 @@ def _first(train: GearTrain, relations: list[Relation],
         if source is not None and target is not None:
             return target, known[source], "shaft", f"{_w(target)} = {_w(source)} = {known[source]:.5g}", None
     for rel in relations:
-        solved = _solve_relation(rel, known, train.shafts)
+        solved = _solve_relation(rel, known, train.shafts, scale)
         if solved is not None:
             member, value, latex = solved
             return member, value, rel[4], latex, rel[2]

@@ -51,6 +51,17 @@ class TrainSolution:
         return self.omega[member] * radius + (carrier - self.omega[member]) * m.axis
 
 
+def speed_scale(omega: dict[int, float]) -> float:
+    """The train's largest speed (1 when all stand still): what round-off is measured against."""
+    return max((abs(w) for w in omega.values()), default=1.0) or 1.0
+
+
+def settled(value: float, scale: float) -> float:
+    """A speed of round-off size against ``scale`` is a member at rest (relative to its
+    carrier, for a relative speed): exactly 0, not 1e-15 rad/s."""
+    return 0.0 if abs(value) <= 1e-12 * scale else value
+
+
 def mesh_carrier(train: GearTrain, a: int, b: int) -> int | None:
     """The carrier holding both axes of a mesh (None: both axes fixed in the frame)."""
     carriers = {train.members[m].carrier for m in (a, b)} - {None}
@@ -73,8 +84,7 @@ class Willis:
         """The same ratio from the solved speeds (NaN when the member is at the carrier's speed)."""
         c = 0.0 if self.carrier is None else omega[self.carrier]
         below = omega[self.b] - c
-        scale = max(abs(w) for w in omega.values()) or 1.0
-        return (omega[self.a] - c) / below if abs(below) > 1e-9 * scale else math.nan
+        return (omega[self.a] - c) / below if abs(below) > 1e-9 * speed_scale(omega) else math.nan
 
 
 def willis_table(train: GearTrain) -> list[Willis]:
@@ -217,6 +227,7 @@ def stages(solution: TrainSolution) -> list[Stage]:
     planetary stage turns between (sun and ring), or a fixed-axes chain's first and last."""
     train, omega = solution.train, solution.omega
     table = willis_table(train)
+    scale = speed_scale(omega)
     out = []
     for carrier in dict.fromkeys(w.carrier for w in table):
         own = [w for w in table if w.carrier == carrier]
@@ -225,17 +236,11 @@ def stages(solution: TrainSolution) -> list[Stage]:
         central = [m for m in members if train.members[m].carrier is None]
         ends = _ends(edges, central if carrier is not None and len(central) >= 2 else members)
         c = 0.0 if carrier is None else omega.get(carrier, math.nan)
-        scale = max((abs(w) for w in omega.values()), default=1.0) or 1.0
-        relative = {m: _rest(omega.get(m, math.nan) - c, scale) for m in members}
+        relative = {m: settled(omega.get(m, math.nan) - c, scale) for m in members}
         below = relative[ends[1]]
         solved = relative[ends[0]] / below if abs(below) > 1e-9 * scale else math.nan
         out.append(Stage(carrier, members, relative, ends, _path_ratio(edges, *ends), solved))
     return out
-
-
-def _rest(value: float, scale: float) -> float:
-    """A relative speed of round-off size is a gear at the carrier's speed: exactly 0."""
-    return 0.0 if abs(value) <= 1e-12 * scale else value
 
 
 def _stage_edges(train: GearTrain, carrier: int | None, meshes: list[Willis],

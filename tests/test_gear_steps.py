@@ -20,6 +20,14 @@ def test_the_hand_order_reaches_every_member_with_the_systems_speeds(pid):
     assert not [s for s in steps if s.kind == "system"]
     for s in steps:
         assert s.omega == pytest.approx(solution.omega[s.member], rel=1e-12, abs=1e-12)
+        assert s.latex.count(r"\begin{gathered}") == s.latex.count(r"\end{gathered}")
+
+
+def test_a_member_at_rest_reads_zero_in_its_equation():
+    """Task 6.4: seen from carrier 4, gear 3 comes out at round-off size; it is written as
+    0 inside the equation, which stays whole."""
+    by = {s.member: s for s in speed_steps(solve_train(load_preset("zbirka-6.4")))}
+    assert by[3].omega == 0.0 and by[3].latex.endswith(r"= 0\end{gathered}")
 
 
 def test_task_6_1_follows_the_books_order():
