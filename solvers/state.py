@@ -69,12 +69,16 @@ class Body:
         return self.z if self._at_ref(local) else self.z + self.arm(local)
 
     def velocity(self, local: complex):
-        return self.v if self._at_ref(local) else self.v + 1j * self.omega * self.arm(local)
+        return self.v if self._at_ref(local) else self._velocity(self.arm(local))
 
     def acceleration(self, local: complex):
-        if self._at_ref(local):
-            return self.a
-        return self.a + (1j * self.epsilon - self.omega * self.omega) * self.arm(local)
+        return self.a if self._at_ref(local) else self._acceleration(self.arm(local))
+
+    def _velocity(self, arm):
+        return self.v + 1j * self.omega * arm
+
+    def _acceleration(self, arm):
+        return self.a + (1j * self.epsilon - self.omega * self.omega) * arm
 
     def point(self, local: complex, order: int) -> tuple:
         """Position, velocity and acceleration of point ``local`` up to ``order`` (None
@@ -82,6 +86,5 @@ class Body:
         if self._at_ref(local):
             return self.z, self.v if order >= 1 else None, self.a if order >= 2 else None
         arm = self.arm(local)
-        v = self.v + 1j * self.omega * arm if order >= 1 else None
-        a = self.a + (1j * self.epsilon - self.omega * self.omega) * arm if order >= 2 else None
-        return self.z + arm, v, a
+        return (self.z + arm, self._velocity(arm) if order >= 1 else None,
+                self._acceleration(arm) if order >= 2 else None)
