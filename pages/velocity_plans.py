@@ -82,6 +82,7 @@ def scale_inputs() -> dict[str, float]:
 
 
 controls, main = st.columns([1, 3], gap="large")
+asked = live()  # a chart's φ₂ control was touched: this run sends the frames
 
 with controls:
     base = scene_picker()
@@ -146,6 +147,16 @@ def turn_frames(scene: Scene, scales: dict[str, float], index: int, language: st
     return crank_frames(draw, turn())
 
 
+def cranks(scene: Scene, scales: dict[str, float], index: int, asked: bool) -> dict[str, Crank]:
+    """Each chart's own φ₂ control (a crank only), with its frames when the student asked."""
+    if scene.driver.kind != "rotating":
+        return {}
+    values = turn()
+    sent = turn_frames(scene.with_(at=0.0), scales, index, current(), look()) if asked else {}
+    shown = nearest(values, st.session_state["at"])
+    return {k: Crank(values, shown, "plans", sent.get(k)) for k in ("v", "a", "mech")}
+
+
 def step_table(index: int) -> pd.DataFrame:
     """The vectors of one step in both plans: name, kind, direction, plan length, value."""
     rows = []
@@ -169,10 +180,7 @@ if tab_plans.open:
         if any(g.cls == 3 for g in instant(scene).structure.groups):
             method_doc("triad-plans")
         figures = plan_figures(scene, plans, scales, index)
-        values = turn() if scene.driver.kind == "rotating" else ()
-        sent = turn_frames(scene.with_(at=0.0), scales, index, current(), look()) if values and live() else {}
-        frames = {k: Crank(values, nearest(values, st.session_state["at"]), "plans", sent.get(k))
-                  for k in ("v", "a", "mech")} if values else {}
+        frames = cranks(scene, scales, index, asked)
         left, right = st.columns(2)
         for column, plan, key in ((left, plans.velocity, "v"), (right, plans.acceleration, "a")):
             with column:

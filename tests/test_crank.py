@@ -52,6 +52,7 @@ def test_the_slider_starts_at_the_frame_nearest_the_page_s_angle_around_the_turn
 
 
 def test_the_control_travels_without_frames_until_asked():
-    control = json.loads(Crank(turn(), 3, "plans").json("φ₂"))
+    control = json.loads(Crank(turn(), 3, "plans").json())
     assert control["turn"] is None and control["index"] == 3 and control["group"] == "plans"
-    assert json.loads(Crank(turn(), 0, "plans", '{"base": 1}').json("φ₂"))["turn"] == {"base": 1}
+    assert control["label"] == "φ₂"
+    assert json.loads(Crank(turn(), 0, "plans", '{"base": 1}').json())["turn"] == {"base": 1}

@@ -33,10 +33,11 @@ class Crank:
     index: int
     group: str
     frames: str | None = None  # {"base", "frames"} from crank_frames
+    label: str = "φ₂"
 
-    def json(self, label: str) -> str:
+    def json(self) -> str:
         return (f'{{"values": {json.dumps(list(self.values))}, "index": {self.index}, '
-                f'"group": {json.dumps(self.group)}, "label": {json.dumps(label)}, '
+                f'"group": {json.dumps(self.group)}, "label": {json.dumps(self.label)}, '
                 f'"turn": {self.frames or "null"}}}')
 
 
@@ -81,8 +82,9 @@ def _rounded(value):
 
 def _patch(base: dict, spec: dict, varying: set[str]) -> dict:
     """What turns ``base`` into ``spec``: the changed properties of each changed trace, by
-    index (all traces whole when their number differs), and every layout key that changes anywhere in the turn (the chart
-    lays them over the figure it showed first, drawn at another angle)."""
+    index (all traces whole when their number differs), and every layout key that changes
+    anywhere in the turn (the chart lays them over the figure it showed first, drawn at
+    another angle)."""
     patch: dict = {}
     if len(spec["data"]) != len(base["data"]):
         patch["all"] = spec["data"]

@@ -126,19 +126,23 @@ function frameFigure(gd, k) {
   const turn = gd.__crank.spec.turn;
   const patch = turn && turn.frames[k];
   if (!patch) return null;  // no frames yet, or the mechanism cannot be drawn there
-  const data = patch.all || (patch.data ? turn.base.data.map((tr, i) => (patch.data[i] ? { ...tr, ...patch.data[i] } : tr))
-                                        : turn.base.data);
+  const moved = patch.data || {};
+  const data = patch.all || turn.base.data.map((tr, i) => (moved[i] ? { ...tr, ...moved[i] } : tr));
   return { data, layout: patch.layout ? { ...gd.__layout, ...patch.layout } : gd.__layout };
 }
 
-function showFrame(gd, k) {
-  const crank = gd.__crank;
+// the control's slider and words at frame k (✕ where the mechanism cannot be drawn)
+function showIndex(crank, k) {
   const { spec } = crank;
   crank.index = k;
   crank.range.value = String(k);
-  const fig = frameFigure(gd, k);
   const reachable = !spec.turn || spec.turn.frames[k];
   crank.label.textContent = `${spec.label} = ${spec.values[k]}°${reachable ? "" : " ✕"}`;
+}
+
+function showFrame(gd, k) {
+  showIndex(gd.__crank, k);
+  const fig = frameFigure(gd, k);
   if (fig && window.Plotly) schedule(gd, () => window.Plotly.react(gd, { ...fig, config: gd.__config }));
 }
 
@@ -235,11 +239,9 @@ function updateCrank(gd, spec) {
   crank.asked = false;
   crankControls(gd, spec.labels);
   crank.range.max = String(spec.crank.values.length - 1);
-  if (!crank.box.contains(document.activeElement) || !spec.crank.turn) {
-    crank.index = spec.crank.index;  // the server's φ₂, unless the student is on the control
-  }
-  crank.range.value = String(crank.index);
-  crank.label.textContent = `${spec.crank.label} = ${spec.crank.values[crank.index]}°`;
+  // the server's φ₂, unless the student is on the control
+  const onIt = crank.box.contains(document.activeElement) && spec.crank.turn;
+  showIndex(crank, onIt ? crank.index : spec.crank.index);
   if (crank.playing && spec.crank.turn) crank.start();
 }
 

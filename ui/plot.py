@@ -55,11 +55,10 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     follows reads the result's ``drag`` ({point, x, y}: a shape named after a point, moved
     to x, y) or ``click`` ({x, y}), each set for that one rerun.
 
-    ``crank``: the chart's own φ₂ control (ui/crank.py), labelled ``labels["crank"]``.
-    ``on_crank`` is called before the rerun the control starts: with the angle in degrees
+    ``crank``: the chart's own φ₂ control (ui/crank.py). ``on_crank`` is called before the rerun the control starts: with the angle in degrees
     when the student lets go of it, with None when they first touch it (to ask for the
     frames)."""
-    control = "null" if crank is None else crank.json(labels.get("crank", "φ₂"))
+    control = "null" if crank is None else crank.json()
     body = (f'{{"src": {json.dumps(URL)}, "filename": {json.dumps(filename)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
             f'"crank": {control}, "figure": {pio.to_json(fig, validate=False)}}}')
