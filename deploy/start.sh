@@ -13,6 +13,7 @@ if ! command -v nginx >/dev/null; then
   sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
   $sudo apt-get update -q && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q nginx-light
 fi
+[ -d node_modules ] || bash scripts/bundles.sh
 if [ ! -x .venv/bin/streamlit ]; then
   python3 -m venv .venv
   .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt

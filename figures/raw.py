@@ -39,6 +39,11 @@ class RawFigure(go.Figure):
         return [str(tr["name"]) for tr in self._raw_data
                 if tr.get("showlegend", True) and tr.get("name") is not None]
 
+    def trace_types(self) -> set[str]:
+        """The kinds of trace drawn (Plotly's "type"): they decide the plotly.js bundle."""
+        return ({str(tr.get("type", "scatter")) for tr in self._raw_data}
+                | {str(tr.type) for tr in self.data})
+
     def add_raw(self, traces: list[dict]) -> list[int]:
         """Append traces; returns their indices (for animation frames)."""
         start = len(self._raw_data)

@@ -8,6 +8,8 @@ import pandas as pd
 import streamlit as st
 
 from figures.assur import structure_figure
+from figures.raw import RawFigure
+from figures.style import Look
 from mechanisms.schema import Scene
 from solvers.diagnostics import (TOLERANCES, Unsolvable, format_range, newton_accuracy,
                                  newton_iterations, sweep_values)
@@ -16,8 +18,10 @@ from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
+from ui.crank import crank_frames, cranks, live, turn
 from ui.docs import method_doc
 from ui.export import chart, show_table
+from ui.i18n import current as current_language
 from ui.i18n import num, t, title_of
 from ui.present import look
 from ui.progress import measured
@@ -33,6 +37,23 @@ CYCLE = 360
 def cycle(scene: Scene, tol: float) -> Motion:
     """A survey of the driver (``CYCLE`` positions)."""
     return solve(scene, sweep_values(scene, CYCLE), tol=tol)
+
+
+@st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
+def turn_frames(scene: Scene, tol: float, upto: int, language: str, look_: Look) -> dict[str, str]:
+    """The structure drawing every 5° of φ₂ (ui.crank), from one solution of the turn, over
+    the page's own survey (``cycle``: the scene comes at its preset instant, as there)."""
+    values = turn()
+    motion = solve(scene, np.radians(values), tol=tol)
+    survey = cycle(scene, tol)
+
+    def draw(i: int, _: float) -> dict[str, RawFigure] | None:
+        if not motion.feasible[i]:
+            return None
+        return {"structure": structure_figure(motion, i, upto, t("assur.fig_title"), t, look(),
+                                              survey)}
+
+    return crank_frames(draw, values)
 
 
 def counts(scene: Scene) -> None:
@@ -93,6 +114,7 @@ def newton_table(scene: Scene, tol: float) -> None:
 
 
 controls, main = st.columns([1, 3], gap="large")
+asked = live()  # a chart's φ₂ control was touched: this run sends the frames
 with controls:
     base = scene_picker(default="zbirka-4.1")
     seed({"at": driver_start(base), "tol": 1e-10, "upto": 99, "back": 5.0},
@@ -122,9 +144,12 @@ with main:
     except (Unsolvable, StructureError) as exc:
         st.error(t("plans.unsolvable", reason=str(exc)))
         st.stop()
-    survey = cycle(scene.with_(at=base.driver.at), tol)  # per geometry: φ₂ does not survey again
+    surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
+    survey = cycle(surveyed, tol)
+    frames = cranks(scene, ("structure",), "structure", lambda: turn_frames(
+        surveyed, tol, upto, current_language(), look()), asked)
     chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
-          f"{scene.id}-structure", key="structure")
+          f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
     for issue in survey.issues:
         ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
         key = "assur.open" if issue.problem == "open" else "assur.near_singular"

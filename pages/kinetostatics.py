@@ -11,7 +11,8 @@ import streamlit as st
 
 from figures.kinetostatics import cycle_figure, forces_figure, html, lever_figure
 from figures.polygon import polygon_figure, polygon_svg
-from figures.style import nice_scale
+from figures.raw import RawFigure
+from figures.style import Look, nice_scale
 from mechanisms.schema import Scene
 from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_resolution
 from solvers.force_steps import equation
@@ -25,9 +26,10 @@ from ui.benchmarks import speed_panel
 from ui.book import book_section
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
+from ui.crank import crank_frames, cranks, live, turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
-from ui.i18n import num, scaled_title, t, title_of
+from ui.i18n import current, num, scaled_title, t, title_of
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
@@ -196,7 +198,52 @@ def book_lever(k: Kinetostatics, now: int) -> None:
                      groups=num(float(k.driving[now]), 5), unit="N"))
 
 
+def loads_figure(k: Kinetostatics, i: int, at_label: str) -> RawFigure:
+    """The mechanism at position ``i`` with every load and inertia force."""
+    loads = [(ld.name, complex(ld.point[i]), complex(ld.force[i])) for ld in k.loads]
+    return forces_figure(k, i, loads, t("forces.loads_title", at=at_label), t, look())
+
+
+def auto_scale(actions: list) -> float:
+    """U_F [N/mm] that draws the biggest force of a polygon about 8 units long."""
+    return nice_scale(max((abs(a.force) for a in actions), default=1.0) / 8)
+
+
+def polygon_figures(k: Kinetostatics, i: int, members: tuple[int, ...],
+                    uf: float) -> dict[str, RawFigure]:
+    """A group's free body and its force polygon at position ``i`` (``uf`` 0: auto scale)."""
+    actions = free_body(k, members, i)
+    uf = uf or auto_scale(actions)
+    known = [(html(a.name), a.force) for a in actions if a.known]
+    closing = [(html(a.name), a.force) for a in actions if not a.known]
+    return {"free_body": forces_figure(k, i, [(a.name, a.point, a.force) for a in actions],
+                                       t("forces.free_body_title"), t, look(), members=members),
+            "polygon": polygon_figure(known, closing, uf,
+                                      scaled_title(t("forces.polygon_title"), uf, "N"),
+                                      (t("forces.legend_known"), t("forces.legend_closing")),
+                                      look())}
+
+
+@st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
+def turn_frames(scene: Scene, inertia: bool, members: tuple[int, ...] | None, uf: float,
+                language: str, look_: Look) -> dict[str, str]:
+    """The loads (``members`` None) or a group's free body and polygon every 5° of φ₂
+    (ui.crank), from one analysis of the turn; the scene comes at φ₂ = 0."""
+    values = turn()
+    k = analyse(scene, np.radians(values), inertia=inertia)
+
+    def draw(i: int, _: float) -> dict[str, RawFigure] | None:
+        if not (k.motion.feasible[i] and np.isfinite(k.driving[i])):
+            return None
+        if members is None:
+            return {"loads": loads_figure(k, i, f"{num(values[i], 4)}°")}
+        return polygon_figures(k, i, members, uf)
+
+    return crank_frames(draw, values)
+
+
 controls, main = st.columns([1, 3], gap="large")
+asked = live()  # a chart's φ₂ control was touched: this run sends the frames
 with controls:
     base = scene_picker(default="predavanja-kinetostatika")
     seed(defaults(base), st.session_state["scene"])
@@ -226,9 +273,10 @@ rotating = scene.driver.kind == "rotating"
 at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
 if tabs[0].open:
     with tabs[0]:
-        loads = [(ld.name, complex(ld.point[now]), complex(ld.force[now])) for ld in k.loads]
-        chart(forces_figure(k, now, loads, t("forces.loads_title", at=at_label), t, look()),
-              f"{scene.id}-loads", key="fig_loads")
+        frames = cranks(scene, ("loads",), "forces", lambda: turn_frames(
+            scene.with_(at=0.0), st.session_state["inertia"], None, 0.0, current(), look()), asked)
+        chart(loads_figure(k, now, at_label), f"{scene.id}-loads", key="fig_loads",
+              crank=frames.get("loads"))
         table = reactions_table(k, now)
         st.subheader(t("forces.reactions"))
         st.caption(t("forces.reactions_hint"))
@@ -247,18 +295,18 @@ if tabs[1].open:
         choice = st.selectbox(t("forces.group"), names, key="group",
                               format_func=lambda n: t("forces.driver") if n == "driver"
                               else t("forces.group_label", members=n))
+        asked_uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
+                                   bind="query-params")  # 0: a scale that fits each position
         actions = free_body(k, groups[choice], now)
-        biggest = max((abs(a.force) for a in actions), default=1.0)
-        uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
-                             bind="query-params") or nice_scale(biggest / 8)
-        chart(forces_figure(k, now, [(a.name, a.point, a.force) for a in actions],
-                            t("forces.free_body_title"), t, look(), members=groups[choice]),
-              f"{scene.id}-free-body-{choice}", key="fig_free_body")
-        known = [(html(a.name), a.force) for a in actions if a.known]
-        closing = [(html(a.name), a.force) for a in actions if not a.known]
-        chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
-                             (t("forces.legend_known"), t("forces.legend_closing")), look()),
-              f"{scene.id}-polygon-{choice}", key="fig_polygon")
+        uf = asked_uf or auto_scale(actions)
+        figures = polygon_figures(k, now, groups[choice], asked_uf)
+        frames = cranks(scene, ("free_body", "polygon"), "forces", lambda: turn_frames(
+            scene.with_(at=0.0), st.session_state["inertia"], groups[choice], asked_uf,
+            current(), look()), asked)
+        chart(figures["free_body"], f"{scene.id}-free-body-{choice}", key="fig_free_body",
+              crank=frames.get("free_body"))
+        chart(figures["polygon"], f"{scene.id}-polygon-{choice}", key="fig_polygon",
+              crank=frames.get("polygon"))
         print_button(polygon_svg([(a.name, a.force) for a in actions if a.known],
                                  [(a.name, a.force) for a in actions if not a.known], uf,
                                  t("forces.svg_caption", scene=scene.id, group=choice,

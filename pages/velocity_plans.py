@@ -22,7 +22,7 @@ from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.book import book_section
 from ui.chapters import page_title
-from ui.crank import Crank, crank_frames, live, nearest, turn
+from ui.crank import crank_frames, cranks, live, turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.i18n import current, num, t, title_of
@@ -136,7 +136,7 @@ def turn_frames(scene: Scene, scales: dict[str, float], index: int, language: st
                 look_: Look) -> dict[str, str]:
     """The three figures every 5° of φ₂ (ui.crank), once per geometry, scales and step: the
     scene comes at φ₂ = 0, so the angle the page shows is not part of the key."""
-    def draw(angle: float) -> dict[str, RawFigure] | None:
+    def draw(_: int, angle: float) -> dict[str, RawFigure] | None:
         at = scene.with_(at=angle)
         try:
             motion = solve_instant(at, None)
@@ -145,16 +145,6 @@ def turn_frames(scene: Scene, scales: dict[str, float], index: int, language: st
             return None
 
     return crank_frames(draw, turn())
-
-
-def cranks(scene: Scene, scales: dict[str, float], index: int, asked: bool) -> dict[str, Crank]:
-    """Each chart's own φ₂ control (a crank only), with its frames when the student asked."""
-    if scene.driver.kind != "rotating":
-        return {}
-    values = turn()
-    sent = turn_frames(scene.with_(at=0.0), scales, index, current(), look()) if asked else {}
-    shown = nearest(values, st.session_state["at"])
-    return {k: Crank(values, shown, "plans", sent.get(k)) for k in ("v", "a", "mech")}
 
 
 def step_table(index: int) -> pd.DataFrame:
@@ -180,7 +170,8 @@ if tab_plans.open:
         if any(g.cls == 3 for g in instant(scene).structure.groups):
             method_doc("triad-plans")
         figures = plan_figures(scene, plans, scales, index)
-        frames = cranks(scene, scales, index, asked)
+        frames = cranks(scene, ("v", "a", "mech"), "plans", lambda: turn_frames(
+            scene.with_(at=0.0), scales, index, current(), look()), asked)
         left, right = st.columns(2)
         for column, plan, key in ((left, plans.velocity, "v"), (right, plans.acceleration, "a")):
             with column:

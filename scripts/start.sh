@@ -2,6 +2,7 @@
 # Install what the app needs (a local .venv) and start it on http://localhost:8501.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/bundles.sh
 python3 -m venv .venv
 .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
 exec .venv/bin/python scripts/serve.py app.py --server.port 8501 --browser.gatherUsageStats false "$@"

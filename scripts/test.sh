@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
 # Install everything the tests need and run the whole suite (this is what CI runs).
-# Debian's chromium serves the browser tests; Playwright never downloads a browser.
+# Debian's chromium serves the browser tests; Playwright never downloads a browser. npm
+# installs Plotly's partial bundles (scripts/bundles.sh), which the tests check are served.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ ! -x /usr/bin/chromium ]; then
+if [ ! -x /usr/bin/chromium ] || ! command -v npm >/dev/null; then
   sudo=""
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
   if command -v apt-get >/dev/null; then
     $sudo apt-get update -q
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q chromium chromium-driver fonts-dejavu-core
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q chromium chromium-driver fonts-dejavu-core npm
   else
-    echo "warning: no apt-get here; browser tests need /usr/bin/chromium" >&2
+    echo "warning: no apt-get here; browser tests need /usr/bin/chromium, and npm" >&2
   fi
 fi
+bash scripts/bundles.sh
 python3 -m venv .venv
 .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements-dev.txt
 exec .venv/bin/python -m pytest "$@"

@@ -147,6 +147,14 @@ def test_the_rotor_page_draws_both_polygons(app_url, browser, tmp_path):
     shot = tmp_path / "rotor-u-polygon.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
+    # the flat charts came with Plotly's basic bundle; the 3D view needs, and loads, gl3d
+    bundles = "() => Object.keys(window.__mehanizmiPlotly).map(u => u.split('/').pop().split('-')[1])"
+    assert page.evaluate(bundles) == ["basic"]
+    page.get_by_role("tab", name="Rotor in 3D").click()
+    page.wait_for_function("() => [...document.querySelectorAll('.js-plotly-plot')]"
+                           ".some(g => g.offsetParent && g._fullLayout && g._fullLayout.scene"
+                           " && g.querySelector('canvas'))", timeout=30_000)
+    assert page.evaluate(bundles) == ["basic", "gl3d"]
 
 
 def test_the_gear_page_draws_the_train_and_its_velocity_diagram(app_url, browser, tmp_path):

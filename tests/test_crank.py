@@ -1,13 +1,17 @@
-"""The crank frames the browser scrubs (ui/crank.py): each patch rebuilds its frame."""
+"""The crank frames the browser scrubs (ui/crank.py): each patch rebuilds its frame, and on
+every page with them the frame at the page's angle is the figure the page draws there."""
 
 import json
 import math
 
+import pytest
+
 from figures.raw import RawFigure
-from ui.crank import Crank, crank_frames, nearest, turn
+from tests.test_pages import charts, decode, page
+from ui.crank import LIVE, Crank, crank_frames, nearest, turn
 
 
-def drawing(angle: float) -> dict[str, RawFigure] | None:
+def drawing(_: int, angle: float) -> dict[str, RawFigure] | None:
     """A pin on a unit circle, a still frame line and a title with the angle; nothing drawn
     between 90° and 180° (as where a mechanism cannot be assembled)."""
     if math.radians(90) < angle < math.radians(180):
@@ -56,3 +60,69 @@ def test_the_control_travels_without_frames_until_asked():
     assert control["turn"] is None and control["index"] == 3 and control["group"] == "plans"
     assert control["label"] == "φ₂"
     assert json.loads(Crank(turn(), 0, "plans", '{"base": 1}').json())["turn"] == {"base": 1}
+
+
+# --- the pages' frames (AppTest): the frame at the page's angle is what the page draws there
+
+PAGES = [("pages/velocity_plans.py", {}, ("fig_v", "fig_a", "fig_mech")),
+         ("pages/kinetostatics.py", {}, ("fig_loads",)),
+         ("pages/kinetostatics.py", {"tab": "Force polygons"}, ("fig_free_body", "fig_polygon")),
+         ("pages/assur_groups.py", {"scene": "triad-full-turn"}, ("structure",))]
+
+
+def numbers(trace: dict) -> list[float | None]:
+    """A trace's x and y as plain numbers, a gap (null or NaN) as None, as Plotly reads them."""
+    out = []
+    for axis in ("x", "y"):
+        values = decode(trace.get(axis, []))
+        out += [None if v is None or not math.isfinite(float(v)) else float(v) for v in values]
+    return out
+
+
+def same_drawing(frame: dict, figure: dict) -> None:
+    assert len(frame["data"]) == len(figure["data"])
+    for sent, drawn in zip(frame["data"], figure["data"]):
+        got, want = numbers(sent), numbers(drawn)
+        assert len(got) == len(want)
+        for g, w in zip(got, want):
+            assert (g is None) == (w is None)
+            if g is not None:
+                assert g == pytest.approx(w, rel=1e-4, abs=1e-4 * max(1.0, abs(w)))
+    assert frame["layout"].get("title") == figure["layout"].get("title")
+
+
+@pytest.mark.parametrize("path, state, keys", PAGES)
+def test_the_frames_drawn_at_the_page_s_angle_are_the_page_s_figures(path, state, keys):
+    at = page(path, lang="en", at=40.0, **state)
+    assert not at.exception
+    assert all(charts(at)[key]["crank"]["turn"] is None for key in keys)  # not asked: none sent
+    at.session_state[LIVE] = True  # what touching a chart's φ₂ control sets (ui.export)
+    at.run()
+    sent = charts(at)
+    for key in keys:
+        control = sent[key]["crank"]
+        assert control["index"] == 8 and len(control["turn"]["frames"]) == 72
+        same_drawing(rebuilt(control["turn"], 8), sent[key]["figure"])
+    at.session_state["at"] = 200.0  # the page follows the control's release: no stale frame
+    at.session_state[LIVE] = True
+    at.run()
+    moved = charts(at)
+    for key in keys:
+        control = moved[key]["crank"]
+        assert control["index"] == 40
+        same_drawing(rebuilt(control["turn"], 40), moved[key]["figure"])
+        assert rebuilt(control["turn"], 8) == rebuilt(sent[key]["crank"]["turn"], 8)
+
+
+def test_a_new_scene_brings_its_own_frames():
+    at = page("pages/kinetostatics.py", lang="en", at=40.0)
+    at.session_state[LIVE] = True
+    at.run()
+    before = charts(at)["fig_loads"]["crank"]["turn"]
+    at.session_state["scene"] = "zbirka-5.1"
+    at.session_state[LIVE] = True
+    at.run()
+    after = charts(at)["fig_loads"]
+    assert after["crank"]["turn"] != before
+    k = after["crank"]["index"]
+    same_drawing(rebuilt(after["crank"]["turn"], k), after["figure"])

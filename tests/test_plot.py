@@ -1,4 +1,5 @@
-"""ui.plot: plotly.js is served from the installed package, copied once."""
+"""ui.plot: plotly.js is served from Plotly's own bundles, copied once, the smallest that
+draws a chart's traces chosen per chart."""
 
 from __future__ import annotations
 
@@ -6,14 +7,42 @@ from pathlib import Path
 
 import plotly
 
-from ui.plot import PLOTLY_JS, publish_plotly_js
+from figures.raw import RawFigure
+from ui.plot import PLOTLY_JS_VERSION, bundle_url, publish_plotly_js
+
+ROOT = Path(__file__).resolve().parents[1]
 
 
-def test_plotly_js_is_copied_once_from_the_installed_package(tmp_path):
-    shipped = Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
-    target = publish_plotly_js(tmp_path / "static")
-    assert target.read_bytes() == shipped.read_bytes()
-    assert [p.name for p in (tmp_path / "static").iterdir()] == [PLOTLY_JS]  # no partial left
-    target.write_text("kept")
-    publish_plotly_js(tmp_path / "static")
-    assert target.read_text() == "kept"  # an existing copy is not written again
+def test_the_bundles_are_copied_once_smallest_first_the_full_one_last(tmp_path):
+    static = tmp_path / "static"
+    urls = [url for _, url in publish_plotly_js(static)]
+    # scripts/test.sh runs npm ci: the partial bundles are there, at plotly.py's version
+    assert urls == [f"app/static/plotly-basic-{PLOTLY_JS_VERSION}.min.js",
+                    f"app/static/plotly-gl3d-{PLOTLY_JS_VERSION}.min.js",
+                    f"app/static/plotly-{PLOTLY_JS_VERSION}.min.js"]
+    files = {p.name: p for p in static.iterdir()}
+    assert sorted(files) == sorted(u.rsplit("/", 1)[1] for u in urls)  # no partial left
+    full = files[f"plotly-{PLOTLY_JS_VERSION}.min.js"]
+    assert full.read_bytes() == (Path(plotly.__file__).parent / "package_data" / "plotly.min.js").read_bytes()
+    basic = files[f"plotly-basic-{PLOTLY_JS_VERSION}.min.js"]
+    assert f"(basic - minified) v{PLOTLY_JS_VERSION}" in basic.read_text(encoding="utf-8")[:200]
+    assert basic.stat().st_size < full.stat().st_size / 3
+    full.write_text("kept")
+    publish_plotly_js(static)
+    assert full.read_text() == "kept"  # an existing copy is not written again
+
+
+def test_without_npm_bundles_the_full_bundle_draws_everything(tmp_path, monkeypatch):
+    monkeypatch.setattr("ui.plot.ROOT", tmp_path)  # no node_modules there
+    assert [drawn for drawn, _ in publish_plotly_js(tmp_path / "static")] == [None]
+
+
+def test_a_chart_gets_the_smallest_bundle_that_draws_its_traces():
+    flat, solid = RawFigure(), RawFigure()
+    flat.add_raw([{"type": "scatter", "x": [0, 1], "y": [0, 1]}, {"x": [1], "y": [2]}])
+    solid.add_raw([{"type": "scatter", "x": [0], "y": [0]},
+                   {"type": "scatter3d", "x": [0], "y": [0], "z": [0]}])
+    assert "plotly-basic-" in bundle_url(flat)
+    assert "plotly-gl3d-" in bundle_url(solid)
+    solid.add_raw([{"type": "sankey"}])  # in neither partial bundle
+    assert bundle_url(solid).endswith(f"/plotly-{PLOTLY_JS_VERSION}.min.js")

@@ -18,6 +18,7 @@ import streamlit as st
 from plotly.io.json import to_json_plotly
 
 from figures.raw import RawFigure
+from mechanisms.schema import Scene
 
 STEP_DEG = 5.0  # 72 frames a turn: smooth to scrub, small enough to send
 LIVE = "crank_live"  # session key: the student asked for the frames (see live())
@@ -51,12 +52,12 @@ def nearest(values: tuple[float, ...], degrees: float) -> int:
     return min(range(len(values)), key=lambda k: abs((values[k] - degrees + 180.0) % 360.0 - 180.0))
 
 
-def crank_frames(draw: Callable[[float], dict[str, RawFigure] | None],
+def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
                  values: tuple[float, ...]) -> dict[str, str]:
-    """``draw(φ₂ in rad)`` gives a page's figures at one angle, by name (None where the
+    """``draw(k, φ₂ in rad)`` gives a page's figures at frame k, by name (None where the
     mechanism cannot be drawn); per name, the JSON of its frames, each a patch on the first.
     Numbers are rounded to 5 significant digits (a tenth of a millimetre on a drawing)."""
-    drawn = [draw(math.radians(v)) for v in values]
+    drawn = [draw(k, math.radians(v)) for k, v in enumerate(values)]
     names = next((list(d) for d in drawn if d), [])
     out = {}
     for name in names:
@@ -68,6 +69,19 @@ def crank_frames(draw: Callable[[float], dict[str, RawFigure] | None],
         frames = [None if s is None else _patch(base, s, varying) for s in specs]
         out[name] = json.dumps({"base": base, "frames": frames}, separators=(",", ":"))
     return out
+
+
+def cranks(scene: Scene, names: tuple[str, ...], group: str,
+           frames: Callable[[], dict[str, str]], asked: bool) -> dict[str, Crank]:
+    """The named charts' own φ₂ controls, moving together as ``group``, on the angle the page
+    shows; with their frames (``frames()``, a page's cached crank_frames) when the student
+    asked. None for a linear driver, whose stroke is no turn."""
+    if scene.driver.kind != "rotating":
+        return {}
+    values = turn()
+    sent = frames() if asked else {}
+    shown = nearest(values, st.session_state["at"])
+    return {name: Crank(values, shown, group, sent.get(name)) for name in names}
 
 
 def _rounded(value):

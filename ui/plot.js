@@ -2,18 +2,24 @@
 // same div with Plotly.react, which changes only what changed. (st.plotly_chart names its
 // element after the figure, so every change unmounted the chart and drew it from scratch.)
 
+// plotly.js from the app's static files (ui/plot.py puts them there): each chart names the
+// smallest of Plotly's bundles that draws it, and each bundle is loaded once per page. The
+// bundles load one after another, so the window.Plotly each script sets is read before the
+// next replaces it; a chart keeps the instance that drew it (gd.__Plotly).
 function plotly(src) {
-  // plotly.js is loaded once per page, from the app's static files (ui/plot.py puts it there)
-  if (!window.__mehanizmiPlotly) {
-    window.__mehanizmiPlotly = new Promise((resolve, reject) => {
+  const bundles = (window.__mehanizmiPlotly = window.__mehanizmiPlotly || {});
+  if (!bundles[src]) {
+    const previous = window.__mehanizmiLoading || Promise.resolve();
+    bundles[src] = previous.catch(() => {}).then(() => new Promise((resolve, reject) => {
       const script = document.createElement("script");
       script.src = src;
       script.onload = () => resolve(window.Plotly);
       script.onerror = () => reject(new Error(`plotly.js could not be loaded from ${src}`));
       document.head.appendChild(script);
-    });
+    }));
+    window.__mehanizmiLoading = bundles[src];
   }
-  return window.__mehanizmiPlotly;
+  return bundles[src];
 }
 
 // four corners, drawn as is (no ascent: Plotly flips only icons that give one)
@@ -28,7 +34,7 @@ function toggleFullscreen(gd) {
 
 // Saved under the name the page gives the chart now (a button outlives the rerun that made it)
 function save(format) {
-  return (gd) => window.Plotly.downloadImage(gd, { format, filename: gd.__filename, scale: 2 });
+  return (gd) => gd.__Plotly.downloadImage(gd, { format, filename: gd.__filename, scale: 2 });
 }
 
 // Button objects made once per label and kept: Plotly.react compares the new config with the
@@ -143,7 +149,7 @@ function showIndex(crank, k) {
 function showFrame(gd, k) {
   showIndex(gd.__crank, k);
   const fig = frameFigure(gd, k);
-  if (fig && window.Plotly) schedule(gd, () => window.Plotly.react(gd, { ...fig, config: gd.__config }));
+  if (fig && gd.__Plotly) schedule(gd, () => gd.__Plotly.react(gd, { ...fig, config: gd.__config }));
 }
 
 function moveCrank(gd, k, release) {
@@ -256,6 +262,7 @@ function dropCrank(gd) {
 
 export default function (component) {
   const { data, parentElement, setTriggerValue } = component;
+  const text = new TextDecoder().decode(data);
   let gd = parentElement.querySelector(".mehanizmi-plot");
   if (!gd) {
     gd = document.createElement("div");
@@ -263,7 +270,6 @@ export default function (component) {
     gd.style.background = "white";
     parentElement.appendChild(gd);
   }
-  const text = new TextDecoder().decode(data);
   if (gd.__drawn === text) return;
   gd.__drawn = text;
   const spec = JSON.parse(text);
@@ -281,6 +287,8 @@ export default function (component) {
                      ...(spec.editable ? EDITABLE : {}) };
     gd.__config = config;  // the frames of φ₂ are drawn with the same config (see BUTTONS)
     gd.__layout = spec.figure.layout;  // and over the same layout
+    if (gd.__Plotly && gd.__Plotly !== Plotly) gd.__Plotly.purge(gd);  // drawn by another bundle
+    gd.__Plotly = Plotly;
     Plotly.react(gd, { ...spec.figure, config })
       .then(() => { if (spec.editable) listen(gd, gd.__send); })
       .catch((error) => { gd.textContent = String(error); });
@@ -289,6 +297,6 @@ export default function (component) {
   return () => {
     waiting.delete(gd);
     dropCrank(gd);
-    if (window.Plotly) window.Plotly.purge(gd);
+    if (gd.__Plotly) gd.__Plotly.purge(gd);
   };
 }

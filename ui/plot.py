@@ -5,8 +5,12 @@ per chart and updates it with ``Plotly.react`` (ui/plot.js).
 every slider step unmounted each chart and drew it from scratch, twice. Measured with
 bench/browser.py: slider → figure on the plans page went from ~510 to ~350 ms.
 
-plotly.js comes from the installed ``plotly`` package, copied once into ``static/`` and served
-by Streamlit's static file serving (``.streamlit/config.toml``): no network needed.
+plotly.js is served by Streamlit's static file serving (``.streamlit/config.toml``) from
+``static/``, where it is copied once: no network needed. A chart loads the smallest of
+Plotly's own bundles that draws its traces (npm, pinned in package.json at the version the
+``plotly`` package ships): the 1.2 MB "basic" bundle runs in 0.3 s in chromium here where
+the full 4.8 MB one took 1.2 s, most of a page's first paint (bench/browser.py). Without
+``npm ci`` the full bundle from the ``plotly`` package serves every chart.
 """
 
 from __future__ import annotations
@@ -24,24 +28,57 @@ from figures.raw import RawFigure
 from ui.crank import Crank
 
 ROOT = Path(__file__).resolve().parents[1]
-PLOTLY_JS = f"plotly-{plotly.__version__}.min.js"  # named after the package that ships it
-URL = f"app/static/{PLOTLY_JS}"  # relative to a page's URL: a page is one level deep
+STATIC = ROOT / "static"
+PLOTLY_JS_VERSION = plotly.offline.get_plotlyjs_version()
+# Plotly's partial bundles, smallest first, with the trace types each draws
+BUNDLES = {"basic": {"scatter", "bar", "pie"},
+           "gl3d": {"scatter", "scatter3d", "surface", "mesh3d", "isosurface", "volume", "cone",
+                    "streamtube"}}
 
 _render = st.components.v2.component(
     "mehanizmi_plot", js=Path(__file__).with_suffix(".js").read_text(encoding="utf-8"),
     isolate_styles=False)  # plotly.js styles the chart from the page's own stylesheet
 
 
-def publish_plotly_js(static: Path = ROOT / "static") -> Path:
-    """Copy plotly.js from the installed package where Streamlit serves static files."""
-    target = static / PLOTLY_JS
+def _bundle_source(name: str) -> Path | None:
+    """The npm bundle ``name`` if it is installed at the Python package's plotly.js version
+    (a figure is JSON for that version), else None."""
+    package = ROOT / "node_modules" / f"plotly.js-{name}-dist-min"
+    try:
+        version = json.loads((package / "package.json").read_text(encoding="utf-8"))["version"]
+    except (OSError, ValueError, KeyError):
+        return None
+    return package / f"plotly-{name}.min.js" if version == PLOTLY_JS_VERSION else None
+
+
+def _publish(source: Path, name: str, static: Path) -> str:
+    """Copy ``source`` into ``static`` as ``name`` (once); its URL relative to a page."""
+    target = static / name
     if not target.exists():
         static.mkdir(exist_ok=True)
-        source = Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
         partial = target.with_suffix(f".{os.getpid()}.partial")  # one per process (deploy/)
         partial.write_bytes(source.read_bytes())
         partial.replace(target)  # atomic: a server never serves half a file
-    return target
+    return f"app/static/{name}"  # a page is one level deep
+
+
+def publish_plotly_js(static: Path = STATIC) -> list[tuple[set[str] | None, str]]:
+    """Put the bundles where Streamlit serves static files: (trace types it draws, or None
+    for all; URL), smallest first, the full bundle of the ``plotly`` package last."""
+    bundles = []
+    for name, types in BUNDLES.items():
+        source = _bundle_source(name)
+        if source is not None:
+            bundles.append((types, _publish(source, f"plotly-{name}-{PLOTLY_JS_VERSION}.min.js",
+                                            static)))
+    full = Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
+    return bundles + [(None, _publish(full, f"plotly-{PLOTLY_JS_VERSION}.min.js", static))]
+
+
+def bundle_url(fig: RawFigure) -> str:
+    """The URL of the smallest published bundle that draws every trace of ``fig``."""
+    types = fig.trace_types()
+    return next(url for drawn, url in _URLS if drawn is None or types <= drawn)
 
 
 def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
@@ -59,7 +96,7 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     when the student lets go of it, with None when they first touch it (to ask for the
     frames)."""
     control = "null" if crank is None else crank.json()
-    body = (f'{{"src": {json.dumps(URL)}, "filename": {json.dumps(filename)}, '
+    body = (f'{{"src": {json.dumps(bundle_url(fig))}, "filename": {json.dumps(filename)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
             f'"crank": {control}, "figure": {pio.to_json(fig, validate=False)}}}')
     events = {"on_drag_change": _ignore, "on_click_change": _ignore} if editable else {}
@@ -73,4 +110,4 @@ def _ignore() -> None:
     """The trigger's value is read from the result in the rerun it starts."""
 
 
-publish_plotly_js()
+_URLS = publish_plotly_js()
