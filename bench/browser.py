@@ -109,7 +109,8 @@ LOADED = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
           ".every(g => g.__crank && g.__crank.spec.turn)")
 FRAME_BYTES = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
                ".reduce((n, g) => n + JSON.stringify(g.__crank.spec.turn).length, 0)")
-SCRUBBED = ["velocity_plans"]  # the pages whose charts carry φ₂ frames
+# the pages whose charts carry φ₂ frames, on a scene that turns all the way round
+SCRUBBED = ["velocity_plans", "assur_groups?scene=triad-full-turn", "kinetostatics"]
 
 
 def scrub(page, url: str) -> tuple[float, float, float, float]:
@@ -132,18 +133,18 @@ def scrub(page, url: str) -> tuple[float, float, float, float]:
 # Navigation → first chart painted, in a fresh browser context each time (nothing cached):
 # polled every frame from the page's own start (performance.now() counts from navigation)
 VISITS = 5
-FIRST_PAINT = """() => {
+FIRST_PAINT = """(() => {
   const poll = () => {
     const gd = document.querySelector('.js-plotly-plot');
     if (gd && gd._fullLayout && gd.data && gd.data.length) window.__firstChart = performance.now();
     else requestAnimationFrame(poll);
   };
   requestAnimationFrame(poll);
-}"""
+})();"""
 BYTES = ("() => [...performance.getEntriesByType('navigation'), "
          "...performance.getEntriesByType('resource')].reduce((n, r) => n + r.transferSize, 0)")
 OPENED = ["trajectories", "velocity_plans", "assur_groups", "kinetostatics", "planetary_gears",
-          "rotor_balancing", "builder", "variants"]
+          "rotor_balancing", "builder"]  # the pages that open with a chart
 
 
 def first_paint(browser, url: str) -> tuple[float, float]:
@@ -182,7 +183,8 @@ def table() -> str:
                      f"of {CHANGES}) | → all its charts, ms | first touch → frames there (one "
                      "rerun), ms | frames, kB |", "|---|---:|---:|---:|---:|"]
             for name in SCRUBBED:
-                first, every, touch, size = scrub(page, f"http://127.0.0.1:{port}/{name}?lang=en")
+                url = f"http://127.0.0.1:{port}/{name}{'&' if '?' in name else '?'}lang=en"
+                first, every, touch, size = scrub(page, url)
                 rows.append(f"| {name} | {first:.0f} | {every:.0f} | {touch:.0f} | {size:.0f} |")
             context.close()
             browser = p.chromium.launch(executable_path="/usr/bin/chromium", headless=True,

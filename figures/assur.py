@@ -64,7 +64,7 @@ def special_traces(motion: Motion, name: str, group: Group, pair: tuple[int, int
                    t: Text, look: Look, survey: Motion) -> list[dict]:
     """The path of special point ``name`` over ``survey``, its construction lines (from each
     binary member's joint along the member's line to S) and S itself at ``index``."""
-    centre, reach = _extent(motion, index)
+    centre, reach = _extent(survey)
     path = survey.special[name].z
     with np.errstate(invalid="ignore"):
         path = np.where(np.abs(path - centre) < reach, path, np.nan)
@@ -91,11 +91,15 @@ def special_traces(motion: Motion, name: str, group: Group, pair: tuple[int, int
     return traces
 
 
-def _extent(motion: Motion, index: int) -> tuple[complex, float]:
-    """The middle of the mechanism's points at ``index``, and three mechanism sizes about it:
-    how far S and its path are drawn. Near parallel lines S runs off toward infinity, and
-    drawing that would shrink the mechanism to a dot."""
-    points = np.array([complex(p.z[index]) for p in motion.points.values()])
+def _extent(survey: Motion) -> tuple[complex, float]:
+    """The middle of the mechanism's points over ``survey``, and three mechanism sizes about
+    it: how far S and its path are drawn. Near parallel lines S runs off toward infinity, and
+    drawing that would shrink the mechanism to a dot. Taken over the whole survey, the
+    clipped path is the same at every φ₂ (the browser's φ₂ frames send it once)."""
+    points = np.concatenate([p.z for p in survey.points.values()])
+    points = points[np.isfinite(points)]
+    if not points.size:  # nothing assembles: nothing to draw S beside
+        return 0j, 0.0
     centre = complex(points.mean())
     return centre, 3 * max(float(np.abs(points - centre).max()), 1e-9)
 

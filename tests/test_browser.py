@@ -390,3 +390,32 @@ def test_scrubbing_phi2_redraws_the_plans_locally_and_letting_go_updates_the_tab
     page.wait_for_function(f"() => {LAST_TITLE}.includes('= 30°')", timeout=5_000)
     motion = solve(load_preset("analitika-2.1"), math.radians(30.0))
     assert abs(crank_letters(page)["C"] - motion.points["C"].z[0]) < 1e-4
+    scrub(page, 28, release=False)  # 140°: this four-bar cannot be assembled there
+    label = page.locator(".mehanizmi-crank span").first
+    assert label.inner_text().endswith("✕")
+    assert label.get_attribute("title").startswith("The mechanism cannot be assembled")
+
+
+def test_scrubbing_phi2_moves_the_loads_and_the_force_polygon_in_the_browser(app_url, browser,
+                                                                            tmp_path):
+    """The kinetostatics page's charts carry φ₂ frames too: the free body and its polygon
+    move together, each title unchanged, and the link follows."""
+    page = open_page(browser, f"{app_url}/kinetostatics?lang=en")
+    page.get_by_role("tab", name="Force polygons").click()
+    page.wait_for_function("() => document.querySelectorAll('.mehanizmi-crank').length === 2"
+                           " && document.querySelectorAll('.js-plotly-plot').length === 2",
+                           timeout=30_000)  # the free body and the polygon
+    before = [plot_x(page, 0), plot_x(page, 1)]
+    page.locator(".mehanizmi-crank input").first.dispatch_event("pointerdown")
+    page.wait_for_function("() => [...document.querySelectorAll('.mehanizmi-plot')]"
+                           ".every(g => g.__crank && g.__crank.spec.turn)", timeout=30_000)
+    wait_idle(page)
+    scrub(page, 10, release=False)  # 50°, the other chart follows its group
+    page.wait_for_function("b => JSON.stringify([0, 1].map(i => document.querySelectorAll("
+                           "'.js-plotly-plot')[i].data.map(t => Array.from(t.x || [])))) !== b",
+                           arg=json.dumps(before), timeout=5_000)
+    assert all(lbl.startswith("φ₂ = 50°") for lbl in page.locator(".mehanizmi-crank span").all_inner_texts())
+    assert "at=50" in page.url
+    shot = tmp_path / "forces-scrubbed.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)

@@ -29,8 +29,10 @@ def rebuilt(turn_json: dict, k: int) -> dict | None:
     if patch is None:
         return None
     base = turn_json["base"]
-    data = patch.get("all") or [{**tr, **patch.get("data", {}).get(str(i), {})}
-                                for i, tr in enumerate(base["data"])]
+    if "all" in patch:
+        data = [base["data"][tr] if isinstance(tr, int) else tr for tr in patch["all"]]
+    else:
+        data = [{**tr, **patch.get("data", {}).get(str(i), {})} for i, tr in enumerate(base["data"])]
     return {"data": data, "layout": {**base["layout"], **patch.get("layout", {})}}
 
 

@@ -96,12 +96,14 @@ def _rounded(value):
 
 def _patch(base: dict, spec: dict, varying: set[str]) -> dict:
     """What turns ``base`` into ``spec``: the changed properties of each changed trace, by
-    index (all traces whole when their number differs), and every layout key that changes
-    anywhere in the turn (the chart lays them over the figure it showed first, drawn at
-    another angle)."""
+    index; when the number of traces differs (S gone to infinity, say), every trace, each
+    one the first frame also has as its index there (the Assur page's path of S, 4 kB, was
+    sent whole in every such frame); and every layout key that changes anywhere in the turn
+    (the chart lays them over the figure it showed first, drawn at another angle)."""
     patch: dict = {}
     if len(spec["data"]) != len(base["data"]):
-        patch["all"] = spec["data"]
+        patch["all"] = [next((j for j, old in enumerate(base["data"]) if old == tr), tr)
+                        for tr in spec["data"]]
     else:
         changed = {str(i): {k: v for k, v in tr.items() if old.get(k) != v}
                    for i, (tr, old) in enumerate(zip(spec["data"], base["data"])) if tr != old}

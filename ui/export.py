@@ -27,7 +27,7 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
     labels = {"svg": t("export.save_svg"), "png": t("export.save_png"),
               "fullscreen": t("export.fullscreen")}
     if crank is not None:
-        labels.update(play=t("fig.play"), pause=t("fig.pause"))
+        labels.update(play=t("fig.play"), pause=t("fig.pause"), unreachable=t("fig.unreachable"))
     return plot(fig, key, filename, labels, editable, crank, None if crank is None else _turned)
 
 

@@ -133,7 +133,9 @@ function frameFigure(gd, k) {
   const patch = turn && turn.frames[k];
   if (!patch) return null;  // no frames yet, or the mechanism cannot be drawn there
   const moved = patch.data || {};
-  const data = patch.all || turn.base.data.map((tr, i) => (moved[i] ? { ...tr, ...moved[i] } : tr));
+  const data = patch.all  // every trace: a number is the first frame's trace of that index
+    ? patch.all.map((tr) => (typeof tr === "number" ? turn.base.data[tr] : tr))
+    : turn.base.data.map((tr, i) => (moved[i] ? { ...tr, ...moved[i] } : tr));
   return { data, layout: patch.layout ? { ...gd.__layout, ...patch.layout } : gd.__layout };
 }
 
@@ -144,6 +146,7 @@ function showIndex(crank, k) {
   crank.range.value = String(k);
   const reachable = !spec.turn || spec.turn.frames[k];
   crank.label.textContent = `${spec.label} = ${spec.values[k]}°${reachable ? "" : " ✕"}`;
+  crank.label.title = reachable ? "" : crank.unreachable;  // why the chart does not move
 }
 
 function showFrame(gd, k) {
@@ -242,6 +245,7 @@ function updateCrank(gd, spec) {
   }
   const crank = gd.__crank = gd.__crank || {};
   crank.spec = spec.crank;
+  crank.unreachable = spec.labels.unreachable;
   crank.asked = false;
   crankControls(gd, spec.labels);
   crank.range.max = String(spec.crank.values.length - 1);
