@@ -4,6 +4,7 @@ over the cycle, with force polygons and Zhukovsky's lever."""
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 import numpy as np
 import pandas as pd
@@ -17,7 +18,7 @@ from mechanisms.schema import Scene
 from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_resolution
 from solvers.force_steps import equation
 from solvers.force_steps import steps as force_steps
-from solvers.kinetostatics import Kinetostatics, analyse, free_body
+from solvers.kinetostatics import Action, Kinetostatics, analyse, free_body
 from solvers.lever_steps import construction as lever_construction
 from solvers.lever_steps import latex as lever_latex
 from solvers.report import has_loads
@@ -164,8 +165,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
     if step.kind == "polygon":
         known = [(html(term.name), term.force) for term in step.terms]
         closing = [(html(name), force) for name, force in step.closing]
-        biggest = max((abs(f) for _, f in known + closing), default=1.0)
-        uf = st.session_state.get("UF") or nice_scale(biggest / 8)
+        uf = st.session_state.get("UF") or auto_scale(f for _, f in known + closing)
         chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
                              (t("forces.legend_known"), t("forces.legend_closing")), look()),
               f"{k.motion.scene.id}-step-{number}", key="fig_step")
@@ -204,16 +204,15 @@ def loads_figure(k: Kinetostatics, i: int, at_label: str) -> RawFigure:
     return forces_figure(k, i, loads, t("forces.loads_title", at=at_label), t, look())
 
 
-def auto_scale(actions: list) -> float:
-    """U_F [N/mm] that draws the biggest force of a polygon about 8 units long."""
-    return nice_scale(max((abs(a.force) for a in actions), default=1.0) / 8)
+def auto_scale(forces: Iterable[complex]) -> float:
+    """U_F [N/cm] that draws the biggest of a polygon's forces about 8 cm long."""
+    return nice_scale(max((abs(f) for f in forces), default=1.0) / 8)
 
 
-def polygon_figures(k: Kinetostatics, i: int, members: tuple[int, ...],
+def polygon_figures(k: Kinetostatics, i: int, members: tuple[int, ...], actions: list[Action],
                     uf: float) -> dict[str, RawFigure]:
-    """A group's free body and its force polygon at position ``i`` (``uf`` 0: auto scale)."""
-    actions = free_body(k, members, i)
-    uf = uf or auto_scale(actions)
+    """A group's free body (its ``actions`` at position ``i``) and its force polygon to the
+    scale ``uf``."""
     known = [(html(a.name), a.force) for a in actions if a.known]
     closing = [(html(a.name), a.force) for a in actions if not a.known]
     return {"free_body": forces_figure(k, i, [(a.name, a.point, a.force) for a in actions],
@@ -227,8 +226,9 @@ def polygon_figures(k: Kinetostatics, i: int, members: tuple[int, ...],
 @st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
 def turn_frames(scene: Scene, inertia: bool, members: tuple[int, ...] | None, uf: float,
                 language: str, look_: Look) -> dict[str, str]:
-    """The loads (``members`` None) or a group's free body and polygon every 5° of φ₂
-    (ui.crank), from one analysis of the turn; the scene comes at φ₂ = 0."""
+    """The loads (``members`` None) or a group's free body and polygon (to ``uf``, or a scale
+    that fits each position when 0) every 5° of φ₂ (ui.crank), from one analysis of the
+    turn; the scene comes at φ₂ = 0."""
     values = turn()
     k = analyse(scene, np.radians(values), inertia=inertia)
 
@@ -237,7 +237,8 @@ def turn_frames(scene: Scene, inertia: bool, members: tuple[int, ...] | None, uf
             return None
         if members is None:
             return {"loads": loads_figure(k, i, f"{num(values[i], 4)}°")}
-        return polygon_figures(k, i, members, uf)
+        actions = free_body(k, members, i)
+        return polygon_figures(k, i, members, actions, uf or auto_scale(a.force for a in actions))
 
     return crank_frames(draw, values)
 
@@ -298,8 +299,8 @@ if tabs[1].open:
         asked_uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
                                    bind="query-params")  # 0: a scale that fits each position
         actions = free_body(k, groups[choice], now)
-        uf = asked_uf or auto_scale(actions)
-        figures = polygon_figures(k, now, groups[choice], asked_uf)
+        uf = asked_uf or auto_scale(a.force for a in actions)
+        figures = polygon_figures(k, now, groups[choice], actions, uf)
         frames = cranks(scene, ("free_body", "polygon"), "forces", lambda: turn_frames(
             scene.with_(at=0.0), st.session_state["inertia"], groups[choice], asked_uf,
             current(), look()), asked)

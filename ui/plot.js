@@ -266,7 +266,6 @@ function dropCrank(gd) {
 
 export default function (component) {
   const { data, parentElement, setTriggerValue } = component;
-  const text = new TextDecoder().decode(data);
   let gd = parentElement.querySelector(".mehanizmi-plot");
   if (!gd) {
     gd = document.createElement("div");
@@ -274,6 +273,7 @@ export default function (component) {
     gd.style.background = "white";
     parentElement.appendChild(gd);
   }
+  const text = new TextDecoder().decode(data);
   if (gd.__drawn === text) return;
   gd.__drawn = text;
   const spec = JSON.parse(text);

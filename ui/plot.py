@@ -92,9 +92,9 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     follows reads the result's ``drag`` ({point, x, y}: a shape named after a point, moved
     to x, y) or ``click`` ({x, y}), each set for that one rerun.
 
-    ``crank``: the chart's own φ₂ control (ui/crank.py). ``on_crank`` is called before the rerun the control starts: with the angle in degrees
-    when the student lets go of it, with None when they first touch it (to ask for the
-    frames)."""
+    ``crank``: the chart's own φ₂ control (ui/crank.py). ``on_crank`` is called before the
+    rerun the control starts: with the angle in degrees when the student lets go of it, with
+    None when they first touch it (to ask for the frames)."""
     control = "null" if crank is None else crank.json()
     body = (f'{{"src": {json.dumps(bundle_url(fig))}, "filename": {json.dumps(filename)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
