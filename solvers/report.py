@@ -14,6 +14,7 @@ from .balancing import Balance, balance
 from .diagnostics import Unsolvable, solve_instant
 from .gear_steps import speed_steps
 from .gears import TrainSolution, solve_train, stages
+from .force_steps import steps
 from .kinematics import Motion
 from .kinetostatics import Kinetostatics, analyse
 from .plans import Plans, is_construction
@@ -199,7 +200,10 @@ def exact_values(scene) -> dict[str, float]:
     values = flatten(motion_json(motion))
     values.update(_distances(scene, motion))
     if has_loads(scene):
-        values.update(flatten(forces_json(analyse(scene, motion=motion))))
+        k = analyse(scene, motion=motion)
+        values.update(flatten(forces_json(k)))
+        values.update(_arms(scene, k))
+        values.update(_parts(scene, k))
     return values
 
 
@@ -212,4 +216,41 @@ def _distances(scene, motion: Motion) -> dict[str, float]:
         a, _, b = pair.partition("-")
         if head == "distances" and a in motion.points and b in motion.points:
             out[key] = float(abs(motion.points[a].z[0] - motion.points[b].z[0]))
+    return out
+
+
+def _arms(scene, k: Kinetostatics) -> dict[str, float]:
+    """A printed lever arm ("arms.G_5.F", m): how far the line of an action — a load by its
+    name, or a reaction "p-q" — passes from a point, at the drawn instant. Chapter 5's
+    solutions print these arms (h_5, h_54) beside the forces, read off the figure."""
+    actions = {ld.name: (ld.force[0], ld.point[0], 0.0) for ld in k.loads}
+    actions.update({f"{p}-{q}": (r.force[0], r.point[0], r.couple[0])
+                    for (p, q), r in k.reactions.items()})
+    points = k.motion.points
+    out = {}
+    for key in scene.book:
+        head, _, rest = key.partition(".")
+        name, _, letter = rest.rpartition(".")
+        if head == "arms" and name in actions and letter in points:
+            force, at, couple = actions[name]
+            moment = ((at - points[letter].z[0]).conjugate() * force).imag + couple
+            out[key] = float(abs(moment) / abs(force)) if abs(force) > 0 else math.nan
+    return out
+
+
+def _parts(scene, k: Kinetostatics) -> dict[str, float]:
+    """A reaction's normal and tangential parts as the graphical construction splits them
+    ("reactions.4-5.normal", N: along member 5 towards its other joint in the group, and
+    across it), as magnitudes: the book prints F_45^n and F_45^t for its own assumed sense."""
+    wanted = [key for key in scene.book if key.endswith((".normal", ".tangential"))]
+    if not wanted:
+        return {}
+    found = {name: float(value) for step in steps(k).steps
+             for name, (value, _unit) in step.found.items()}
+    out = {}
+    for key in wanted:
+        p, _, q = key.split(".")[1].partition("-")
+        name = f"F_{p}{q}^" + ("n" if key.endswith("normal") else "t")
+        if name in found:
+            out[key] = abs(found[name])
     return out

@@ -234,14 +234,14 @@ def _named(scene, task_scene, name: str):
 
 UNITS = {"omega": "s⁻¹", "epsilon": "s⁻²", "v": "m/s", "a": "m/s²", "s": "m", "x": "m", "y": "m",
          "mass": "kg", "radius": "m", "angle_deg": "°", "magnitude": "N", "torque": "N·m",
-         "force": "N", "power": "W", "moment": "N·m"}
+         "force": "N", "power": "W", "moment": "N·m", "normal": "N", "tangential": "N"}
 
 
 def unit_of(key: str) -> str:
     """The unit of a result key (members.4.omega → s⁻¹; ratios are pure numbers)."""
     if key.startswith("ratios."):
         return "–"
-    if key.startswith("distances."):  # a length of the figure at the drawn instant
+    if key.startswith(("distances.", "arms.")):  # a length of the figure at the drawn instant
         return "m"
     last = key.rsplit(".", 1)[-1]
     return UNITS.get(last.removesuffix("_zhukovsky").removesuffix("_power_balance"), "")
@@ -379,7 +379,7 @@ SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 def symbol(key: str) -> str:
     """A result key as the course writes the quantity: points.E.v → v_E, members.3.omega →
     ω₃, reactions.1-2.magnitude → F₁₂, corrections.I.mass → m_I, ratios.2-7 → i₂₇,
-    distances.B-C → BC."""
+    distances.B-C → BC, arms.G_5.F → h(G_5, F) (the lever arm of G_5 about F)."""
     parts = key.split(".")
     head, last = parts[0], parts[-1]
     if head == "points":
@@ -389,13 +389,19 @@ def symbol(key: str) -> str:
     if head == "sliders":
         return f"{last}_rel({parts[1]})"
     if head == "reactions":
-        return "F" + parts[1].replace("-", "").translate(SUBSCRIPT)
+        part = {"normal": "ⁿ", "tangential": "ᵗ"}.get(last, "")
+        return "F" + parts[1].replace("-", "").translate(SUBSCRIPT) + part
     if head == "ratios":
         return "i" + parts[1].replace("-", "").translate(SUBSCRIPT)
     if head == "corrections":
         return ("φ" if last == "angle_deg" else last[0]) + "_" + parts[1]
     if head == "distances":
         return parts[1].replace("-", "")
+    if head == "arms":  # arms.G_5.F → h(G_5, F); arms.5-4.C → h(F₅₄, C)
+        action = ".".join(parts[1:-1])
+        if "-" in action:
+            action = "F" + action.replace("-", "").translate(SUBSCRIPT)
+        return f"h({action}, {last})"
     if head == "driving":
         return {"torque": "M_p", "force": "F_p", "power": "P"}.get(last, last)
     return key
