@@ -14,7 +14,6 @@ from .balancing import Balance, balance
 from .diagnostics import Unsolvable, solve_instant
 from .gear_steps import speed_steps
 from .gears import TrainSolution, solve_train, stages
-from .force_steps import steps
 from .kinematics import Motion
 from .kinetostatics import Kinetostatics, analyse
 from .plans import Plans, is_construction
@@ -239,18 +238,22 @@ def _arms(scene, k: Kinetostatics) -> dict[str, float]:
 
 
 def _parts(scene, k: Kinetostatics) -> dict[str, float]:
-    """A reaction's normal and tangential parts as the graphical construction splits them
-    ("reactions.4-5.normal", N: along member 5 towards its other joint in the group, and
-    across it), as magnitudes: the book prints F_45^n and F_45^t for its own assumed sense."""
-    wanted = [key for key in scene.book if key.endswith((".normal", ".tangential"))]
-    if not wanted:
-        return {}
-    found = {name: float(value) for step in steps(k).steps
-             for name, (value, _unit) in step.found.items()}
+    """A reaction's normal and tangential parts as the book splits them ("reactions.4-5.normal",
+    N): along member 5's line (from the joint to the member's other defining point, e.g. D to
+    F for DF) and across it, as magnitudes: the book prints F_45^n and F_45^t for a sense it
+    assumes."""
+    points = k.motion.points
     out = {}
-    for key in wanted:
-        p, _, q = key.split(".")[1].partition("-")
-        name = f"F_{p}{q}^" + ("n" if key.endswith("normal") else "t")
-        if name in found:
-            out[key] = abs(found[name])
+    for key in scene.book:
+        head, _, rest = key.partition(".")
+        pair, _, part = rest.partition(".")
+        p, _, q = pair.partition("-")
+        r = k.reactions.get((int(p), int(q))) if head == "reactions" and p.isdigit() and q.isdigit() else None
+        if r is None or part not in ("normal", "tangential"):
+            continue
+        line = [points[name].z[0] for name in scene.members[int(q)].axis if name != r.pair.point]
+        if line and abs(line[0] - r.point[0]) > 0:
+            n = (line[0] - r.point[0]) / abs(line[0] - r.point[0])
+            along = (n.conjugate() * r.force[0])
+            out[key] = float(abs(along.real if part == "normal" else along.imag))
     return out

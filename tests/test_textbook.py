@@ -81,3 +81,27 @@ def test_a_slip_must_name_a_printed_value():
         parse_document(text.replace('"members.4.epsilon" = "-points.D.a', '"members.9.epsilon" = "-points.D.a'))
     with pytest.raises(SceneError, match="book_slips"):
         parse_document(text.replace('"-points.D.a / 0.91"', '"open(1)"'))
+
+
+def test_chapter_5s_lever_arms_and_reaction_parts_are_read_off_the_solved_figure():
+    """arms.G_5.F: G_5 acts straight down at S5, so its arm about F is their horizontal
+    distance; reactions.4-5.normal/tangential split F_45 along D→F and across it."""
+    from solvers.diagnostics import solve_instant
+    from solvers.kinetostatics import analyse
+    from solvers.report import exact_values
+
+    scene = load_preset("zbirka-5.1")
+    exact = exact_values(scene)
+    motion = solve_instant(scene, None)
+    z = {name: p.z[0] for name, p in motion.points.items()}
+    assert exact["arms.G_5.F"] == pytest.approx(abs((z["S5"] - z["F"]).real), rel=1e-12)
+    f45 = analyse(scene, motion=motion).reactions[(4, 5)].force[0]
+    along = (z["F"] - z["D"]) / abs(z["F"] - z["D"])
+    normal = abs(f45.real * along.real + f45.imag * along.imag)
+    assert exact["reactions.4-5.normal"] == pytest.approx(normal, rel=1e-12)
+    assert math.hypot(exact["reactions.4-5.normal"], exact["reactions.4-5.tangential"]) \
+        == pytest.approx(abs(f45), rel=1e-12)
+    # the reaction F_54's arm about C times its size is its moment about C
+    d, c = z["D"], z["C"]
+    moment = (d - c).real * (-f45).imag - (d - c).imag * (-f45).real
+    assert exact["arms.5-4.C"] * abs(f45) == pytest.approx(abs(moment), rel=1e-12)
