@@ -203,6 +203,7 @@ def exact_values(scene) -> dict[str, float]:
         values.update(flatten(forces_json(k)))
         values.update(_arms(scene, k))
         values.update(_parts(scene, k))
+        values.update(_turned(scene, k))
     return values
 
 
@@ -234,6 +235,27 @@ def _arms(scene, k: Kinetostatics) -> dict[str, float]:
             force, at, couple = actions[name]
             moment = ((at - points[letter].z[0]).conjugate() * force).imag + couple
             out[key] = float(abs(moment) / abs(force)) if abs(force) > 0 else math.nan
+    return out
+
+
+def _turned(scene, k: Kinetostatics) -> dict[str, float]:
+    """A load's lever arm about the pole of the velocity plan turned by 90° ("turned.F_3", read
+    at U_v as a speed, m/s): Zhukovsky's lever takes each force's moment there, which is its
+    power over its size, |F·v|/|F|. An inertia force acts at Huygens' point K, so its power
+    includes the member's inertia couple (F_i·v_S + M_i·ω). Tasks 5.3–5.4 print these arms."""
+    bodies, members = k.motion.bodies, k.motion.members
+    couples = {c.member: c.value[0] for c in k.couples if c.inertial}
+    out = {}
+    for key in scene.book:
+        head, _, name = key.partition(".")
+        load = next((ld for ld in k.loads if ld.name == name), None) if head == "turned" else None
+        if load is None or abs(load.force[0]) == 0:
+            continue
+        v = complex(np.asarray(bodies[load.member].velocity(load.local)).ravel()[0])
+        power = (load.force[0].conjugate() * v).real
+        if load.inertial:
+            power += couples.get(load.member, 0.0) * members[load.member].omega[0]
+        out[key] = float(abs(power) / abs(load.force[0]))
     return out
 
 

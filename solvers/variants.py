@@ -241,6 +241,8 @@ def unit_of(key: str) -> str:
     """The unit of a result key (members.4.omega → s⁻¹; ratios are pure numbers)."""
     if key.startswith("ratios."):
         return "–"
+    if key.startswith("turned."):  # an arm on the turned velocity plan, read at U_v
+        return "m/s"
     if key.startswith(("distances.", "arms.")):  # a length of the figure at the drawn instant
         return "m"
     last = key.rsplit(".", 1)[-1]
@@ -397,6 +399,8 @@ def symbol(key: str) -> str:
         return ("φ" if last == "angle_deg" else last[0]) + "_" + parts[1]
     if head == "distances":
         return parts[1].replace("-", "")
+    if head == "turned":  # turned.F_3 → h⁰(F_3), the arm on the turned velocity plan
+        return f"h⁰({parts[1]})"
     if head == "arms":  # arms.G_5.F → h(G_5, F); arms.5-4.C → h(F₅₄, C)
         action = ".".join(parts[1:-1])
         if "-" in action:

@@ -15,7 +15,8 @@ FITTED = [pid for pid in preset_ids("linkage") if load_preset(pid).fit]
 
 
 def test_there_are_fitted_presets():
-    assert {"zbirka-2.3", "zbirka-2.4", "zbirka-2.6", "zbirka-2.8", "zbirka-2.9", "zbirka-3.2", "zbirka-3.3", "zbirka-3.4"} <= set(FITTED)
+    assert {"zbirka-2.3", "zbirka-2.4", "zbirka-2.6", "zbirka-2.8", "zbirka-2.9", "zbirka-3.2", "zbirka-3.3", "zbirka-3.4",
+            "zbirka-5.1", "zbirka-5.2"} <= set(FITTED)
 
 
 def test_most_predictions_of_the_reconstructions_agree_or_are_close():
