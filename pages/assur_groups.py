@@ -40,10 +40,10 @@ def cycle(scene: Scene, tol: float) -> Motion:
 
 
 @st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
-def turn_frames(scene: Scene, tol: float, upto: int, language: str, look_: Look) -> dict[str, str]:
-    """The structure drawing every 5° of φ₂ (ui.crank), from one solution of the turn, over
-    the page's own survey (``cycle``: the scene comes at its preset instant, as there)."""
-    values = turn()
+def turn_frames(scene: Scene, values: tuple[float, ...], tol: float, upto: int, language: str,
+                look_: Look) -> dict[str, str]:
+    """The structure drawing at the angles ``values`` (ui.crank.turn: every 5° of φ₂ and the
+    task's instant), from one solution of the turn, over the page's own survey (``cycle``: the scene comes at its preset instant, as there)."""
     motion = solve(scene, np.radians(values), tol=tol)
     survey = cycle(scene, tol)
 
@@ -146,8 +146,9 @@ with main:
         st.stop()
     surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
     survey = cycle(surveyed, tol)
-    frames = cranks(scene, ("structure",), "structure", lambda: turn_frames(
-        surveyed, tol, upto, current_language(), look()), asked)
+    values = turn(driver_start(base))
+    frames = cranks(scene, ("structure",), "structure", values, lambda: turn_frames(
+        surveyed, values, tol, upto, current_language(), look()), asked)
     chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
           f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
     for issue in survey.issues:

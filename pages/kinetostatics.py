@@ -224,12 +224,12 @@ def polygon_figures(k: Kinetostatics, i: int, members: tuple[int, ...], actions:
 
 
 @st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
-def turn_frames(scene: Scene, inertia: bool, members: tuple[int, ...] | None, uf: float,
-                language: str, look_: Look) -> dict[str, str]:
+def turn_frames(scene: Scene, values: tuple[float, ...], inertia: bool,
+                members: tuple[int, ...] | None, uf: float, language: str,
+                look_: Look) -> dict[str, str]:
     """The loads (``members`` None) or a group's free body and polygon (to ``uf``, or a scale
-    that fits each position when 0) every 5° of φ₂ (ui.crank), from one analysis of the
-    turn; the scene comes at φ₂ = 0."""
-    values = turn()
+    that fits each position when 0) at the angles ``values`` (ui.crank.turn: every 5° of φ₂
+    and the task's instant), from one analysis of the turn; the scene comes at φ₂ = 0."""
     k = analyse(scene, np.radians(values), inertia=inertia)
 
     def draw(i: int, _: float) -> dict[str, RawFigure] | None:
@@ -271,11 +271,13 @@ with main:
                     t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
 
 rotating = scene.driver.kind == "rotating"
+values = turn(driver_start(base))  # the φ₂ frames' angles, the task's instant among them
 at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
 if tabs[0].open:
     with tabs[0]:
-        frames = cranks(scene, ("loads",), "forces", lambda: turn_frames(
-            scene.with_(at=0.0), st.session_state["inertia"], None, 0.0, current(), look()), asked)
+        frames = cranks(scene, ("loads",), "forces", values, lambda: turn_frames(
+            scene.with_(at=0.0), values, st.session_state["inertia"], None, 0.0, current(),
+            look()), asked)
         chart(loads_figure(k, now, at_label), f"{scene.id}-loads", key="fig_loads",
               crank=frames.get("loads"))
         table = reactions_table(k, now)
@@ -301,8 +303,8 @@ if tabs[1].open:
         actions = free_body(k, groups[choice], now)
         uf = asked_uf or auto_scale(a.force for a in actions)
         figures = polygon_figures(k, now, groups[choice], actions, uf)
-        frames = cranks(scene, ("free_body", "polygon"), "forces", lambda: turn_frames(
-            scene.with_(at=0.0), st.session_state["inertia"], groups[choice], asked_uf,
+        frames = cranks(scene, ("free_body", "polygon"), "forces", values, lambda: turn_frames(
+            scene.with_(at=0.0), values, st.session_state["inertia"], groups[choice], asked_uf,
             current(), look()), asked)
         chart(figures["free_body"], f"{scene.id}-free-body-{choice}", key="fig_free_body",
               crank=frames.get("free_body"))

@@ -132,10 +132,10 @@ def plan_figures(scene: Scene, plans: Plans, scales: dict[str, float], index: in
 
 
 @st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
-def turn_frames(scene: Scene, scales: dict[str, float], index: int, language: str,
-                look_: Look) -> dict[str, str]:
-    """The three figures every 5° of φ₂ (ui.crank), once per geometry, scales and step: the
-    scene comes at φ₂ = 0, so the angle the page shows is not part of the key."""
+def turn_frames(scene: Scene, values: tuple[float, ...], scales: dict[str, float], index: int,
+                language: str, look_: Look) -> dict[str, str]:
+    """The three figures at the angles ``values`` (ui.crank.turn: every 5° of φ₂ and the
+    task's instant), once per geometry, scales and step: the scene comes at φ₂ = 0, so the angle the page shows is not part of the key."""
     def draw(_: int, angle: float) -> dict[str, RawFigure] | None:
         at = scene.with_(at=angle)
         try:
@@ -144,7 +144,7 @@ def turn_frames(scene: Scene, scales: dict[str, float], index: int, language: st
         except (Unsolvable, StructureError):
             return None
 
-    return crank_frames(draw, turn())
+    return crank_frames(draw, values)
 
 
 def step_table(index: int) -> pd.DataFrame:
@@ -170,8 +170,9 @@ if tab_plans.open:
         if any(g.cls == 3 for g in instant(scene).structure.groups):
             method_doc("triad-plans")
         figures = plan_figures(scene, plans, scales, index)
-        frames = cranks(scene, ("v", "a", "mech"), "plans", lambda: turn_frames(
-            scene.with_(at=0.0), scales, index, current(), look()), asked)
+        values = turn(driver_start(base))
+        frames = cranks(scene, ("v", "a", "mech"), "plans", values, lambda: turn_frames(
+            scene.with_(at=0.0), values, scales, index, current(), look()), asked)
         left, right = st.columns(2)
         for column, plan, key in ((left, plans.velocity, "v"), (right, plans.acceleration, "a")):
             with column:

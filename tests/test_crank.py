@@ -57,6 +57,13 @@ def test_the_slider_starts_at_the_frame_nearest_the_page_s_angle_around_the_turn
     assert nearest(values, 358.0) == 0 and nearest(values, 12.4) == 2 and nearest(values, 181.0) == 36
 
 
+def test_the_task_s_own_instant_is_one_of_the_frames():
+    values = turn(50.2857)  # task 5.1's φ₂: off the 5° grid, so a frame of its own
+    assert len(values) == 73 and values[nearest(values, 50.2857)] == 50.2857
+    assert list(values) == sorted(values)
+    assert turn(60.0) == turn() and turn(-10.0) == turn()  # on the grid: nothing added
+
+
 def test_the_control_travels_without_frames_until_asked():
     control = json.loads(Crank(turn(), 3, "plans").json())
     assert control["turn"] is None and control["index"] == 3 and control["group"] == "plans"
@@ -102,18 +109,20 @@ def test_the_frames_drawn_at_the_page_s_angle_are_the_page_s_figures(path, state
     at.run()
     sent = charts(at)
     for key in keys:
-        control = sent[key]["crank"]
-        assert control["index"] == 8 and len(control["turn"]["frames"]) == 72
-        same_drawing(rebuilt(control["turn"], 8), sent[key]["figure"])
+        control = sent[key]["crank"]  # every 5°, and the task's own instant where off that grid
+        k40 = control["values"].index(40.0)
+        assert control["index"] == k40 and len(control["turn"]["frames"]) == len(control["values"])
+        same_drawing(rebuilt(control["turn"], k40), sent[key]["figure"])
     at.session_state["at"] = 200.0  # the page follows the control's release: no stale frame
     at.session_state[LIVE] = True
     at.run()
     moved = charts(at)
     for key in keys:
         control = moved[key]["crank"]
-        assert control["index"] == 40
-        same_drawing(rebuilt(control["turn"], 40), moved[key]["figure"])
-        assert rebuilt(control["turn"], 8) == rebuilt(sent[key]["crank"]["turn"], 8)
+        k200, k40 = control["values"].index(200.0), control["values"].index(40.0)
+        assert control["index"] == k200
+        same_drawing(rebuilt(control["turn"], k200), moved[key]["figure"])
+        assert rebuilt(control["turn"], k40) == rebuilt(sent[key]["crank"]["turn"], k40)
 
 
 def test_a_new_scene_brings_its_own_frames():
@@ -126,5 +135,6 @@ def test_a_new_scene_brings_its_own_frames():
     at.run()
     after = charts(at)["fig_loads"]
     assert after["crank"]["turn"] != before
-    k = after["crank"]["index"]
+    k = after["crank"]["index"]  # the task's own φ₂ = 50.29°, a frame of its own
+    assert after["crank"]["values"][k] == pytest.approx(50.2857)
     same_drawing(rebuilt(after["crank"]["turn"], k), after["figure"])

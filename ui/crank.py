@@ -42,9 +42,13 @@ class Crank:
                 f'"turn": {self.frames or "null"}}}')
 
 
-def turn(step_deg: float = STEP_DEG) -> tuple[float, ...]:
-    """The frame angles of a whole turn, in degrees."""
-    return tuple(k * step_deg for k in range(int(round(360.0 / step_deg))))
+def turn(task: float | None = None, step_deg: float = STEP_DEG) -> tuple[float, ...]:
+    """The frame angles of a whole turn, in degrees, with the task's own instant among them
+    (task 5.1 is drawn at φ₂ = 50.29°): scrubbing comes back to the figure the book solved."""
+    grid = [k * step_deg for k in range(int(round(360.0 / step_deg)))]
+    if task is not None and min(abs((g - task + 180.0) % 360.0 - 180.0) for g in grid) > 1e-6:
+        grid = sorted(grid + [task % 360.0])
+    return tuple(grid)
 
 
 def nearest(values: tuple[float, ...], degrees: float) -> int:
@@ -71,14 +75,14 @@ def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
     return out
 
 
-def cranks(scene: Scene, names: tuple[str, ...], group: str,
+def cranks(scene: Scene, names: tuple[str, ...], group: str, values: tuple[float, ...],
            frames: Callable[[], dict[str, str]], asked: bool) -> dict[str, Crank]:
-    """The named charts' own φ₂ controls, moving together as ``group``, on the angle the page
-    shows; with their frames (``frames()``, a page's cached crank_frames) when the student
-    asked. None for a linear driver, whose stroke is no turn."""
+    """The named charts' own φ₂ controls at the frame angles ``values`` (turn()), moving
+    together as ``group``, on the angle the page shows; with their frames (``frames()``, a
+    page's cached crank_frames over the same angles) when the student asked. None for a
+    linear driver, whose stroke is no turn."""
     if scene.driver.kind != "rotating":
         return {}
-    values = turn()
     sent = frames() if asked else {}
     shown = nearest(values, st.session_state["at"])
     return {name: Crank(values, shown, group, sent.get(name)) for name in names}
