@@ -25,7 +25,7 @@ import numpy as np
 
 from mechanisms.schema import Pair, Scene
 
-from .state import Body, cplx
+from .state import Body
 from .structure import Group, StructureError
 
 
@@ -303,13 +303,11 @@ def _close(loop: DyadLoop, coef: dict, slide_dir: dict, d) -> tuple[dict, dict, 
     if len(loop.free) == 2:  # RRR: |A₁|, |A₂| and the distance |D| make a triangle
         (m1, a1), (m2, a2) = coef.items()
         r1, r2 = abs(a1), abs(a2)
-        dx, dy = d.real, d.imag
-        dist2 = dx * dx + dy * dy
-        inv = 1.0 / np.sqrt(dist2)
-        x = (r1 * r1 - r2 * r2 + dist2) * (0.5 * inv)
-        h = _root(r1 * r1 - x * x, r1 * r1) * sign
-        ex, ey = dx * inv, dy * inv
-        u1 = cplx(ex * x - ey * h, ey * x + ex * h)  # d/|d|·(x + i·h)
+        dist = np.abs(d)
+        inv = 1.0 / dist
+        x = (dist * dist + (r1 * r1 - r2 * r2)) * (0.5 * inv)
+        h = _root(r1 * r1 - x * x, r1 * r1)
+        u1 = (d * inv) * (x + (1j * sign) * h)  # d/|d|·(x ± i·h): few whole-array steps
         return {m1: u1 * (1 / a1), m2: (d - u1) * (1 / a2)}, {}, np.isfinite(h)
     if len(loop.free) == 1:
         (m, a), = coef.items()
