@@ -162,7 +162,9 @@ def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = N
     else:
         wanted = {m for m, mem in scene.members.items() if set(points) & set(mem.points)}
         groups = structure.groups_for(wanted)
-    with np.errstate(invalid="ignore", divide="ignore"):  # open positions are NaN, and masked
+    # open positions are NaN, and masked; at a position where the loop's ends meet (|d| → 0)
+    # the closure's intermediate values overflow to inf on the way to the same NaN
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         solved = _Solved(scene, groups, at, order, tol)
         motion = _collect(scene, structure, at, order, solved.bodies, solved.feasible,
                           solved.transmission, solved.issues, points)

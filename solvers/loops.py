@@ -185,7 +185,8 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
     """Positions (and velocities, accelerations up to ``order``) of one dyad over the cycle.
 
     Where the loop cannot close the results are NaN and ``closed`` is False; call under
-    ``np.errstate(invalid="ignore", divide="ignore")`` as ``kinematics.solve`` does.
+    ``np.errstate(invalid="ignore", divide="ignore", over="ignore")`` as ``kinematics.solve``
+    does.
     """
     b_start, c_start = known[loop.start[0]], loop.start[1]
     b_end, c_end = known[loop.end[0]], loop.end[1]
