@@ -18,7 +18,7 @@ from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
-from ui.crank import crank_frames, cranks, live, turn
+from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.i18n import current as current_language
@@ -42,8 +42,9 @@ def cycle(scene: Scene, tol: float) -> Motion:
 @st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
 def turn_frames(scene: Scene, values: tuple[float, ...], tol: float, upto: int, language: str,
                 look_: Look) -> dict[str, str]:
-    """The structure drawing at the angles ``values`` (ui.crank.turn: every 5° of φ₂ and the
-    task's instant), from one solution of the turn, over the page's own survey (``cycle``: the scene comes at its preset instant, as there)."""
+    """The structure drawing at the angles ``values`` (ui.crank.task_turn: every 5° of φ₂
+    and the task's instant), from one solution of the turn, over the page's own survey
+    (``cycle``: the scene comes at its preset instant, as there)."""
     motion = solve(scene, np.radians(values), tol=tol)
     survey = cycle(scene, tol)
 
@@ -146,7 +147,7 @@ with main:
         st.stop()
     surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
     survey = cycle(surveyed, tol)
-    values = turn(driver_start(base))
+    values = task_turn(base)
     frames = cranks(scene, ("structure",), "structure", values, lambda: turn_frames(
         surveyed, values, tol, upto, current_language(), look()), asked)
     chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),

@@ -27,7 +27,7 @@ from ui.benchmarks import speed_panel
 from ui.book import book_section
 from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
-from ui.crank import crank_frames, cranks, live, turn
+from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.i18n import current, num, scaled_title, t, title_of
@@ -228,8 +228,9 @@ def turn_frames(scene: Scene, values: tuple[float, ...], inertia: bool,
                 members: tuple[int, ...] | None, uf: float, language: str,
                 look_: Look) -> dict[str, str]:
     """The loads (``members`` None) or a group's free body and polygon (to ``uf``, or a scale
-    that fits each position when 0) at the angles ``values`` (ui.crank.turn: every 5° of φ₂
-    and the task's instant), from one analysis of the turn; the scene comes at φ₂ = 0."""
+    that fits each position when 0) at the angles ``values`` (ui.crank.task_turn: every 5°
+    of φ₂ and the task's instant), from one analysis of the turn; the scene comes at
+    φ₂ = 0."""
     k = analyse(scene, np.radians(values), inertia=inertia)
 
     def draw(i: int, _: float) -> dict[str, RawFigure] | None:
@@ -271,7 +272,7 @@ with main:
                     t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
 
 rotating = scene.driver.kind == "rotating"
-values = turn(driver_start(base))  # the φ₂ frames' angles, the task's instant among them
+values = task_turn(base)  # the φ₂ frames' angles, the task's instant among them
 at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
 if tabs[0].open:
     with tabs[0]:

@@ -22,7 +22,7 @@ from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant
 from ui.book import book_section
 from ui.chapters import page_title
-from ui.crank import crank_frames, cranks, live, turn
+from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.i18n import current, num, t, title_of
@@ -134,8 +134,9 @@ def plan_figures(scene: Scene, plans: Plans, scales: dict[str, float], index: in
 @st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
 def turn_frames(scene: Scene, values: tuple[float, ...], scales: dict[str, float], index: int,
                 language: str, look_: Look) -> dict[str, str]:
-    """The three figures at the angles ``values`` (ui.crank.turn: every 5° of φ₂ and the
-    task's instant), once per geometry, scales and step: the scene comes at φ₂ = 0, so the angle the page shows is not part of the key."""
+    """The three figures at the angles ``values`` (ui.crank.task_turn: every 5° of φ₂ and
+    the task's instant), once per geometry, scales and step: the scene comes at φ₂ = 0,
+    so the angle the page shows is not part of the key."""
     def draw(_: int, angle: float) -> dict[str, RawFigure] | None:
         at = scene.with_(at=angle)
         try:
@@ -170,7 +171,7 @@ if tab_plans.open:
         if any(g.cls == 3 for g in instant(scene).structure.groups):
             method_doc("triad-plans")
         figures = plan_figures(scene, plans, scales, index)
-        values = turn(driver_start(base))
+        values = task_turn(base)
         frames = cranks(scene, ("v", "a", "mech"), "plans", values, lambda: turn_frames(
             scene.with_(at=0.0), values, scales, index, current(), look()), asked)
         left, right = st.columns(2)

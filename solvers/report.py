@@ -17,6 +17,7 @@ from .gears import TrainSolution, solve_train, stages
 from .kinematics import Motion
 from .kinetostatics import Kinetostatics, analyse
 from .plans import Plans, is_construction
+from .state import value_at
 
 
 def motion_json(motion: Motion) -> dict:
@@ -251,7 +252,7 @@ def _turned(scene, k: Kinetostatics) -> dict[str, float]:
         load = next((ld for ld in k.loads if ld.name == name), None) if head == "turned" else None
         if load is None or abs(load.force[0]) == 0:
             continue
-        v = complex(np.asarray(bodies[load.member].velocity(load.local)).ravel()[0])
+        v = value_at(bodies[load.member].velocity(load.local), 0)
         power = (load.force[0].conjugate() * v).real
         if load.inertial:
             power += couples.get(load.member, 0.0) * members[load.member].omega[0]
@@ -270,12 +271,13 @@ def _parts(scene, k: Kinetostatics) -> dict[str, float]:
         head, _, rest = key.partition(".")
         pair, _, part = rest.partition(".")
         p, _, q = pair.partition("-")
-        r = k.reactions.get((int(p), int(q))) if head == "reactions" and p.isdigit() and q.isdigit() else None
-        if r is None or part not in ("normal", "tangential"):
+        wanted = head == "reactions" and part in ("normal", "tangential")
+        r = k.reactions.get((int(p), int(q))) if wanted and p.isdigit() and q.isdigit() else None
+        if r is None:
             continue
         line = [points[name].z[0] for name in scene.members[int(q)].axis if name != r.pair.point]
         if line and abs(line[0] - r.point[0]) > 0:
             n = (line[0] - r.point[0]) / abs(line[0] - r.point[0])
-            along = (n.conjugate() * r.force[0])
+            along = n.conjugate() * r.force[0]
             out[key] = float(abs(along.real if part == "normal" else along.imag))
     return out

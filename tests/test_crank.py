@@ -8,7 +8,8 @@ import pytest
 
 from figures.raw import RawFigure
 from tests.test_pages import charts, decode, page
-from ui.crank import LIVE, Crank, crank_frames, nearest, turn
+from mechanisms import load_preset
+from ui.crank import LIVE, Crank, crank_frames, nearest, task_turn, turn
 
 
 def drawing(_: int, angle: float) -> dict[str, RawFigure] | None:
@@ -62,6 +63,8 @@ def test_the_task_s_own_instant_is_one_of_the_frames():
     assert len(values) == 73 and values[nearest(values, 50.2857)] == 50.2857
     assert list(values) == sorted(values)
     assert turn(60.0) == turn() and turn(-10.0) == turn()  # on the grid: nothing added
+    assert task_turn(load_preset("zbirka-5.1")) == values  # from radians, shown as written
+    assert task_turn(load_preset("analitika-2.2")) == turn()  # a slider's s is no angle
 
 
 def test_the_control_travels_without_frames_until_asked():

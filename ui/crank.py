@@ -47,8 +47,14 @@ def turn(task: float | None = None, step_deg: float = STEP_DEG) -> tuple[float, 
     (task 5.1 is drawn at φ₂ = 50.29°): scrubbing comes back to the figure the book solved."""
     grid = [k * step_deg for k in range(int(round(360.0 / step_deg)))]
     if task is not None and min(abs((g - task + 180.0) % 360.0 - 180.0) for g in grid) > 1e-6:
-        grid = sorted(grid + [task % 360.0])
+        grid = sorted(grid + [round(task % 360.0, 6)])  # 50.2857°, not 50.285700000000006°
     return tuple(grid)
+
+
+def task_turn(base: Scene) -> tuple[float, ...]:
+    """The frame angles for a page on the task ``base``: its own instant among them when its
+    driver turns (a linear driver's stroke gets no frames: see cranks)."""
+    return turn(math.degrees(base.driver.at) if base.driver.kind == "rotating" else None)
 
 
 def nearest(values: tuple[float, ...], degrees: float) -> int:
@@ -77,7 +83,7 @@ def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
 
 def cranks(scene: Scene, names: tuple[str, ...], group: str, values: tuple[float, ...],
            frames: Callable[[], dict[str, str]], asked: bool) -> dict[str, Crank]:
-    """The named charts' own φ₂ controls at the frame angles ``values`` (turn()), moving
+    """The named charts' own φ₂ controls at the frame angles ``values`` (task_turn), moving
     together as ``group``, on the angle the page shows; with their frames (``frames()``, a
     page's cached crank_frames over the same angles) when the student asked. None for a
     linear driver, whose stroke is no turn."""
