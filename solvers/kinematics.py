@@ -180,6 +180,7 @@ class _Solved:
     def __init__(self, scene: Scene, groups, at: np.ndarray, order: int, tol: float):
         self.bodies: dict[int, Body] = {FRAME: Body.frame(), DRIVER: driver_body(scene, at)}
         self.feasible = np.ones(at.shape, dtype=bool)
+        self.somewhere_open = False
         self.transmission: dict[str, np.ndarray] = {}
         self.issues: list[GroupIssue] = []
         self.newton: dict[str, NewtonReport] = {}
@@ -224,14 +225,18 @@ class _Solved:
 
     def _add(self, group: Group, solution, at: np.ndarray) -> None:
         self.bodies.update(solution.bodies)
-        opened = ~solution.closed & self.feasible
-        if opened.any():
-            self.issues.append(GroupIssue(group.name, group.kind, "open", _ranges(at, opened)))
-        self.feasible &= solution.closed
+        if not solution.closed.all():  # (most scenes close over the whole turn)
+            opened = ~solution.closed & self.feasible
+            if opened.any():
+                self.issues.append(GroupIssue(group.name, group.kind, "open", _ranges(at, opened)))
+            self.feasible &= solution.closed
+            self.somewhere_open = True
         if solution.transmission is not None:
-            t = np.where(self.feasible, solution.transmission, np.nan)
+            t = solution.transmission
+            if self.somewhere_open or np.shape(t) != at.shape:  # (or a constant: no column turns)
+                t = np.where(self.feasible, t, np.nan)
             self.transmission[group.name] = t
-            weak = self.feasible & (t < NEAR_SINGULAR)
+            weak = t < NEAR_SINGULAR  # (False where NaN)
             if weak.any():
                 self.issues.append(GroupIssue(group.name, group.kind, "near-singular",
                                               _ranges(at, weak), float(1.0 / np.nanmin(t))))
@@ -312,7 +317,9 @@ def special_pairs(scene: Scene, groups) -> dict[str, tuple[Group, int, int]]:
 def _special_points(scene: Scene, groups, bodies: dict[int, Body], order: int) -> dict:
     """The special points S as points of their group's ternary member."""
     out = {}
-    for name, (group, b1, b2) in special_pairs(scene, groups).items():
+    pairs = _planned(scene, ("special", *(g.name for g in groups)),
+                     lambda: special_pairs(scene, groups))
+    for name, (group, b1, b2) in pairs.items():
         z = special_point(scene, group, bodies, b1, b2)
         centre = bodies[group.members[0]]
         local = (z - centre.z) / centre.rot + centre.ref
@@ -352,25 +359,27 @@ def special_point(scene: Scene, group: Group, bodies: dict[int, Body], b1: int, 
 
 def _collect(scene, structure, at, order, bodies, feasible, transmission, issues, wanted) -> Motion:
     shape = at.shape
+    filled = _planned(scene, ("constants", shape), dict)
 
     def n(value):  # constants (the frame, a constant ω₂) as read-only arrays over the cycle
-        if isinstance(value, np.ndarray) and value.shape == shape:
-            return value
-        out = np.full(shape, value)  # (np.broadcast_to costs more than filling 3600 values)
-        out.flags.writeable = False
+        if isinstance(value, np.ndarray):
+            if value.shape == shape:
+                return value
+            value = value.item()  # a constant kept as a 0-d array
+        key = (type(value), value)  # (0.0 == 0j, but they fill different arrays)
+        out = filled.get(key)
+        if out is None:  # filled once per live scene and shape (np.broadcast_to costs more)
+            out = filled[key] = np.full(shape, value)
+            out.flags.writeable = False
         return out
 
     point_motion: dict[str, PointMotion] = {}
-    for number in [FRAME, *scene.members]:
-        if number not in bodies:
-            continue
-        b = bodies[number]
-        for name, local in scene.points_of(number).items():
-            if name in point_motion or (wanted is not None and name not in wanted):
-                continue
-            z, v, a = b.point(local, order)
-            point_motion[name] = PointMotion(n(z), None if v is None else n(v),
-                                             None if a is None else n(a))
+    readers = _planned(scene, ("readers", tuple(bodies), wanted and tuple(wanted)),
+                       lambda: _readers(scene, bodies, wanted))
+    for name, member, local in readers:
+        z, v, a = bodies[member].point(local, order)
+        point_motion[name] = PointMotion(n(z), None if v is None else n(v),
+                                         None if a is None else n(a))
     member_motion = {
         m: MemberMotion(n(b.rot), n(b.omega) if order >= 1 else None,
                         n(b.epsilon) if order >= 2 else None)
@@ -381,6 +390,24 @@ def _collect(scene, structure, at, order, bodies, feasible, transmission, issues
                and p.members[0] in bodies and p.members[1] in bodies}
     return Motion(scene, structure, at, order, point_motion, member_motion, sliders, feasible,
                   transmission, issues)
+
+
+def _readers(scene: Scene, bodies: dict[int, Body], wanted) -> list[tuple[str, int, complex]]:
+    """Where each point is read: (name, member, point in its frame), the frame first, and a
+    member's reference point (whose motion the solve left in the body) before a point that
+    would have to be computed from it. Which point is a member's reference depends only on
+    the scene and the groups solved, so this is worked out once per both."""
+    chosen: dict[str, tuple[int, complex]] = {}
+    for number in [FRAME, *scene.members]:
+        if number not in bodies:
+            continue
+        for name, local in scene.points_of(number).items():
+            if wanted is not None and name not in wanted:
+                continue
+            if name not in chosen or (local == bodies[number].ref
+                                      and chosen[name][1] != bodies[chosen[name][0]].ref):
+                chosen[name] = (number, local)
+    return [(name, number, local) for name, (number, local) in chosen.items()]
 
 
 def _slider(scene: Scene, pair, bodies: dict[int, Body], order: int, n) -> SliderMotion:

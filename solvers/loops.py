@@ -19,13 +19,14 @@ vectorised over the cycle; no Python loop runs over positions.
 from __future__ import annotations
 
 import cmath
+import functools
 from dataclasses import dataclass
 
 import numpy as np
 
 from mechanisms.schema import Pair, Scene
 
-from .state import Body
+from .state import Body, cplx
 from .structure import Group, StructureError
 
 
@@ -66,9 +67,32 @@ class DyadLoop:
     def unknowns(self) -> tuple:
         return self.free + self.slides
 
-    @property
-    def legs(self) -> list[Leg]:
-        return [st for st in self.steps if isinstance(st, Leg)]
+    # What every solve of the loop reads, worked out once per loop (solves at 360 positions
+    # take tens of microseconds, so walking the steps each time was a fair part of them)
+    @functools.cached_property
+    def legs(self) -> tuple[Leg, ...]:
+        return tuple(st for st in self.steps if isinstance(st, Leg))
+
+    @functools.cached_property
+    def free_sums(self) -> dict[int, complex]:
+        """Each free member's fixed legs added up: its A in Σ A_m·e^{iθ_m} + … = D."""
+        sums = dict.fromkeys(self.free, 0j)
+        for leg in self.legs:
+            if leg.ref in sums and not leg.slide:
+                sums[leg.ref] += leg.local
+        return sums
+
+    @functools.cached_property
+    def visits(self) -> tuple[tuple[int, complex, int], ...]:
+        """(member, point, legs walked before it) where the loop first reaches each member."""
+        out, walked, seen = [], 0, set()
+        for st in self.steps:
+            if isinstance(st, Leg):
+                walked += 1
+            elif st.member not in seen:
+                seen.add(st.member)
+                out.append((st.member, st.local, walked))
+        return tuple(out)
 
 
 def build_loop(scene: Scene, group: Group, branch: int | None = None) -> DyadLoop:
@@ -193,25 +217,24 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
     legs = loop.legs
 
     # positions: Σ_free A_m·e^{iθ_m} + Σ s·(direction) = D
-    d = b_end.position(c_end) - b_start.position(c_start)
-    coef = dict.fromkeys(loop.free, 0j)
+    start = b_start.position(c_start)
+    d = b_end.position(c_end) - start
     slide_dir: dict[str, tuple[int | None, object]] = {}
     for leg in legs:
-        free = leg.ref in coef
+        free = leg.ref in loop.free_sums
         if leg.slide:
             slide_dir[leg.slide] = (leg.ref, leg.local) if free else (None, leg.local * known[leg.ref].rot)
-        elif free:
-            coef[leg.ref] += leg.local
-        else:
+        elif not free:
             d = d - leg.local * known[leg.ref].rot
-    rots, s, closed = _close(loop, coef, slide_dir, d)
+    rots, s, closed = _close(loop, slide_dir, d)
 
     refs = {m: Body(rot=r) for m, r in rots.items()}
     ref_of = {**known, **refs}
     units = [leg.local * ref_of[leg.ref].rot for leg in legs]
     values = [u * s[leg.slide] if leg.slide else u for leg, u in zip(legs, units)]
-    bodies = {m: _follow(ref_of[ref], off) for m, (ref, off) in loop.angle_of.items()}
-    _place(loop, bodies, b_start.position(c_start), values, "z")
+    bodies = {m: refs[m] if ref == m else _follow(ref_of[ref], off)
+              for m, (ref, off) in loop.angle_of.items()}
+    _place(loop, bodies, start, values, "z")
     if order < 1:
         return DyadSolution(bodies, None, closed)
 
@@ -225,7 +248,7 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
     transmission = np.abs(det) / loop.size ** len(loop.free)
     rhs = b_end.velocity(c_end) - b_start.velocity(c_start)
     for leg, v in zip(legs, values):
-        if leg.ref not in coef:
+        if leg.ref not in loop.free_sums:
             rhs = rhs - 1j * known[leg.ref].omega * v
     rate = _solve2(loop, c1, c2, det, rhs)
     for m in loop.free:
@@ -246,7 +269,7 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
         known_part = 1j * w * t  # −ω²·L
         if leg.slide:
             known_part = known_part + 2 * sdot[leg.slide] * (1j * w * u)
-        if leg.ref not in coef:
+        if leg.ref not in loop.free_sums:
             known_part = known_part + 1j * known[leg.ref].epsilon * v
         rhs = rhs - known_part
     acc = _solve2(loop, c1, c2, det, rhs)
@@ -286,32 +309,32 @@ def _follow(ref: Body, offset: float) -> Body:
 def _place(loop: DyadLoop, bodies: dict[int, Body], start, increments: list, field: str) -> None:
     """Walk the loop summing leg values (or their rates); the point where a member is first
     visited becomes its reference point, with that position, velocity or acceleration."""
-    total, k, placed = start, 0, set()
-    for st in loop.steps:
-        if isinstance(st, Leg):
-            total = total + increments[k]
-            k += 1
-        elif st.member not in placed:
-            placed.add(st.member)
-            bodies[st.member].ref = st.local
-            setattr(bodies[st.member], field, total)
+    total, walked = start, 0
+    for member, local, k in loop.visits:
+        for step in increments[walked:k]:
+            total = total + step
+        walked = k
+        bodies[member].ref = local
+        setattr(bodies[member], field, total)
 
 
-def _close(loop: DyadLoop, coef: dict, slide_dir: dict, d) -> tuple[dict, dict, np.ndarray]:
+def _close(loop: DyadLoop, slide_dir: dict, d) -> tuple[dict, dict, np.ndarray]:
     """Closed-form position of the loop: e^{iθ} of the free members, the slides, and
     where the loop closes (elsewhere the values are NaN)."""
     sign = loop.branch
     if len(loop.free) == 2:  # RRR: |A₁|, |A₂| and the distance |D| make a triangle
-        (m1, a1), (m2, a2) = coef.items()
+        (m1, a1), (m2, a2) = loop.free_sums.items()
         r1, r2 = abs(a1), abs(a2)
-        dist = np.abs(d)
-        inv = 1.0 / dist
-        x = (dist * dist + (r1 * r1 - r2 * r2)) * (0.5 * inv)
-        h = _root(r1 * r1 - x * x, r1 * r1)
-        u1 = (d * inv) * (x + (1j * sign) * h)  # d/|d|·(x ± i·h): few whole-array steps
-        return {m1: u1 * (1 / a1), m2: (d - u1) * (1 / a2)}, {}, np.isfinite(h)
+        # A₁·e^{iθ₁} = D·(k ± i·m): k = x/|D| along D and m = h/|D| across it, in real
+        # arithmetic on |D|² (fewer whole-array steps than through |D|)
+        inv = 1.0 / (d * d.conj()).real
+        k = 0.5 + (0.5 * (r1 * r1 - r2 * r2)) * inv
+        reach = r1 * r1 * inv  # (r₁/|D|)²
+        m = _root(reach - k * k, reach)
+        u1 = d * cplx(k, sign * m)
+        return {m1: u1 * (1 / a1), m2: (d - u1) * (1 / a2)}, {}, np.isfinite(m)
     if len(loop.free) == 1:
-        (m, a), = coef.items()
+        (m, a), = loop.free_sums.items()
         (name, (ref, direction)), = slide_dir.items()
         if ref is None:  # RRP: e^{iθ}·A + s·E = D, E known
             p = (d * np.conj(direction)).real
@@ -330,4 +353,6 @@ def _close(loop: DyadLoop, coef: dict, slide_dir: dict, d) -> tuple[dict, dict, 
 
 def _root(disc, scale):
     """√disc, taking a round-off negative at an exact limit position as zero (not open)."""
-    return np.sqrt(np.where((disc < 0) & (disc > -1e-12 * scale), 0.0, disc))
+    if np.asarray(disc).min() < 0:  # NaN (an open position already) compares False
+        disc = np.where((disc < 0) & (disc > -1e-12 * scale), 0.0, disc)
+    return np.sqrt(disc)

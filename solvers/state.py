@@ -36,7 +36,7 @@ def value_at(x, index: int):
     return np.asarray(x).reshape(-1)[index] if np.ndim(x) else x
 
 
-@dataclass
+@dataclass(slots=True)
 class Body:
     rot: np.ndarray | complex
     z: np.ndarray | complex = 0j
