@@ -155,8 +155,10 @@ def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = N
 
     ``tol`` is Newton's stopping residual for class III groups, relative to the group's size.
     """
-    at = np.atleast_1d(np.asarray(scene.driver.at if at is None else at, dtype=float))
-    structure = structure or _planned(scene, "structure", lambda: decompose(scene))
+    if not (isinstance(at, np.ndarray) and at.ndim == 1 and at.dtype == float):
+        at = np.atleast_1d(np.asarray(scene.driver.at if at is None else at, dtype=float))
+    plan = _plan(scene)
+    structure = structure or _kept(plan, "structure", lambda: decompose(scene))
     if points is None:
         groups = structure.groups
     else:
@@ -165,19 +167,16 @@ def solve(scene: Scene, at=None, *, order: int = 2, points: list[str] | None = N
     # open positions are NaN, and masked; at a position where the loop's ends meet (|d| → 0)
     # the closure's intermediate values overflow to inf on the way to the same NaN
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        solved = _Solved(scene, groups, at, order, tol)
-        motion = _collect(scene, structure, at, order, solved.bodies, solved.feasible,
-                          solved.transmission, solved.issues, points)
-        motion.newton = solved.newton
-        motion.bodies = solved.bodies
-        motion.special = _special_points(scene, groups, solved.bodies, order)
-        return motion
+        solved = _Solved(scene, groups, at, order, tol, plan)
+        return _collect(scene, structure, groups, at, order, solved, points, plan)
 
 
 class _Solved:
     """The driver and the groups solved in order, each over the whole array ``at``."""
 
-    def __init__(self, scene: Scene, groups, at: np.ndarray, order: int, tol: float):
+    def __init__(self, scene: Scene, groups, at: np.ndarray, order: int, tol: float,
+                 plan: dict | None = None):
+        plan = _plan(scene) if plan is None else plan
         self.bodies: dict[int, Body] = {FRAME: Body.frame(), DRIVER: driver_body(scene, at)}
         self.feasible = np.ones(at.shape, dtype=bool)
         self.somewhere_open = False
@@ -187,7 +186,7 @@ class _Solved:
         for i, group in enumerate(groups):
             check()
             if group.cls == 2:
-                loop = _planned(scene, (group.name, tol), lambda: build_loop(
+                loop = _kept(plan, (group.name, tol), lambda: build_loop(
                     scene, group, _drawn_branch(scene, group, groups[:i], tol)))
                 solution = solve_dyad(loop, self.bodies, order)
             else:
@@ -242,15 +241,21 @@ class _Solved:
                                               _ranges(at, weak), float(1.0 / np.nanmin(t))))
 
 
-def _planned(scene: Scene, key, make):
-    """``make()`` once per live scene object and ``key`` (see _PLANS)."""
+def _plan(scene: Scene) -> dict:
+    """What is kept for this live scene object (see _PLANS)."""
     plan = _PLANS.get(id(scene))
     if plan is None:
         plan = _PLANS[id(scene)] = {}
         weakref.finalize(scene, _PLANS.pop, id(scene), None)
-    if key not in plan:
-        plan[key] = make()
-    return plan[key]
+    return plan
+
+
+def _kept(plan: dict, key, make):
+    """``plan[key]``, made by ``make()`` the first time."""
+    value = plan.get(key)
+    if value is None:
+        value = plan[key] = make()
+    return value
 
 
 def _drawn_branch(scene: Scene, group: Group, before, tol: float) -> int | None:
@@ -314,11 +319,12 @@ def special_pairs(scene: Scene, groups) -> dict[str, tuple[Group, int, int]]:
     return out
 
 
-def _special_points(scene: Scene, groups, bodies: dict[int, Body], order: int) -> dict:
+def _special_points(scene: Scene, structure: Structure, groups, bodies: dict[int, Body],
+                    order: int, plan: dict) -> dict:
     """The special points S as points of their group's ternary member."""
     out = {}
-    pairs = _planned(scene, ("special", *(g.name for g in groups)),
-                     lambda: special_pairs(scene, groups))
+    key = "special" if groups is structure.groups else ("special", *(g.name for g in groups))
+    pairs = _kept(plan, key, lambda: special_pairs(scene, groups))
     for name, (group, b1, b2) in pairs.items():
         z = special_point(scene, group, bodies, b1, b2)
         centre = bodies[group.members[0]]
@@ -357,9 +363,9 @@ def special_point(scene: Scene, group: Group, bodies: dict[int, Body], b1: int, 
     return p + cross(q - p, e) / np.where(parallel, np.nan, det) * d
 
 
-def _collect(scene, structure, at, order, bodies, feasible, transmission, issues, wanted) -> Motion:
-    shape = at.shape
-    filled = _planned(scene, ("constants", shape), dict)
+def _collect(scene, structure, groups, at, order, solved: _Solved, wanted, plan) -> Motion:
+    shape, bodies = at.shape, solved.bodies
+    filled = _kept(plan, ("constants", shape), dict)
 
     def n(value):  # constants (the frame, a constant ω₂) as read-only arrays over the cycle
         if isinstance(value, np.ndarray):
@@ -374,29 +380,35 @@ def _collect(scene, structure, at, order, bodies, feasible, transmission, issues
         return out
 
     point_motion: dict[str, PointMotion] = {}
-    readers = _planned(scene, ("readers", tuple(bodies), wanted and tuple(wanted)),
-                       lambda: _readers(scene, bodies, wanted))
-    for name, member, local in readers:
-        z, v, a = bodies[member].point(local, order)
-        point_motion[name] = PointMotion(n(z), None if v is None else n(v),
-                                         None if a is None else n(a))
-    member_motion = {
-        m: MemberMotion(n(b.rot), n(b.omega) if order >= 1 else None,
-                        n(b.epsilon) if order >= 2 else None)
-        for m, b in bodies.items() if m != FRAME}
+    # (the members solved follow from the scene and the points asked for)
+    readers = _kept(plan, ("readers", None if wanted is None else tuple(wanted)),
+                    lambda: _readers(scene, bodies, wanted))
+    if order == 0:  # (positions alone are asked for speed: no rates to look at)
+        for name, member, local in readers:
+            point_motion[name] = PointMotion(n(bodies[member].position(local)))
+        member_motion = {m: MemberMotion(n(b.rot)) for m, b in bodies.items() if m != FRAME}
+    else:
+        for name, member, local in readers:
+            z, v, a = bodies[member].point(local, order)
+            point_motion[name] = PointMotion(n(z), n(v), None if a is None else n(a))
+        member_motion = {m: MemberMotion(n(b.rot), n(b.omega), n(b.epsilon) if order >= 2 else None)
+                         for m, b in bodies.items() if m != FRAME}
     member_motion[DRIVER].angle = n(bodies[DRIVER].theta)  # φ₂ exactly as given
+    sliding = _kept(plan, "sliding", lambda: [p for p in scene.pairs
+                                              if p.kind == "prismatic" or p.on_slot])
     sliders = {p.name: (_arc if p.on_slot else _slider)(scene, p, bodies, order, n)
-               for p in scene.pairs if (p.kind == "prismatic" or p.on_slot)
-               and p.members[0] in bodies and p.members[1] in bodies}
-    return Motion(scene, structure, at, order, point_motion, member_motion, sliders, feasible,
-                  transmission, issues)
+               for p in sliding if p.members[0] in bodies and p.members[1] in bodies}
+    return Motion(scene, structure, at, order, point_motion, member_motion, sliders,
+                  solved.feasible, solved.transmission, solved.issues, solved.newton,
+                  _special_points(scene, structure, groups, bodies, order, plan), bodies)
 
 
 def _readers(scene: Scene, bodies: dict[int, Body], wanted) -> list[tuple[str, int, complex]]:
-    """Where each point is read: (name, member, point in its frame), the frame first, and a
-    member's reference point (whose motion the solve left in the body) before a point that
-    would have to be computed from it. Which point is a member's reference depends only on
-    the scene and the groups solved, so this is worked out once per both."""
+    """Where each point is read: (name, member, point in its frame). A frame point is the
+    frame's, exactly; any other is read at a member whose reference point it is (the solve
+    left its motion in the body) before one it would have to be computed from. Which point
+    is a member's reference depends only on the scene and the groups solved, so this is
+    worked out once per both."""
     chosen: dict[str, tuple[int, complex]] = {}
     for number in [FRAME, *scene.members]:
         if number not in bodies:
@@ -404,7 +416,7 @@ def _readers(scene: Scene, bodies: dict[int, Body], wanted) -> list[tuple[str, i
         for name, local in scene.points_of(number).items():
             if wanted is not None and name not in wanted:
                 continue
-            if name not in chosen or (local == bodies[number].ref
+            if name not in chosen or (local == bodies[number].ref and chosen[name][0] != FRAME
                                       and chosen[name][1] != bodies[chosen[name][0]].ref):
                 chosen[name] = (number, local)
     return [(name, number, local) for name, (number, local) in chosen.items()]

@@ -83,6 +83,17 @@ class DyadLoop:
         return sums
 
     @functools.cached_property
+    def triangle(self) -> tuple[int, int, complex, complex, float, float]:
+        """An RRR loop's free members, their sums A₁, A₂, then |A₁|² and (|A₁|² − |A₂|²)/2."""
+        (m1, a1), (m2, a2) = self.free_sums.items()
+        return m1, m2, a1, a2, abs(a1) ** 2, 0.5 * (abs(a1) ** 2 - abs(a2) ** 2)
+
+    @functools.cached_property
+    def known_legs(self) -> tuple[Leg, ...]:
+        """The fixed legs on members already known: they move D, the loop's closing vector."""
+        return tuple(leg for leg in self.legs if leg.ref not in self.free_sums and not leg.slide)
+
+    @functools.cached_property
     def visits(self) -> tuple[tuple[int, complex, int], ...]:
         """(member, point, legs walked before it) where the loop first reaches each member."""
         out, walked, seen = [], 0, set()
@@ -219,19 +230,19 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
     # positions: Σ_free A_m·e^{iθ_m} + Σ s·(direction) = D
     start = b_start.position(c_start)
     d = b_end.position(c_end) - start
+    for leg in loop.known_legs:
+        d = d - leg.local * known[leg.ref].rot
     slide_dir: dict[str, tuple[int | None, object]] = {}
-    for leg in legs:
-        free = leg.ref in loop.free_sums
+    for leg in legs if loop.slides else ():
         if leg.slide:
-            slide_dir[leg.slide] = (leg.ref, leg.local) if free else (None, leg.local * known[leg.ref].rot)
-        elif not free:
-            d = d - leg.local * known[leg.ref].rot
+            slide_dir[leg.slide] = ((leg.ref, leg.local) if leg.ref in loop.free_sums
+                                    else (None, leg.local * known[leg.ref].rot))
     rots, s, closed = _close(loop, slide_dir, d)
 
     refs = {m: Body(rot=r) for m, r in rots.items()}
     ref_of = {**known, **refs}
     units = [leg.local * ref_of[leg.ref].rot for leg in legs]
-    values = [u * s[leg.slide] if leg.slide else u for leg, u in zip(legs, units)]
+    values = [u * s[leg.slide] if leg.slide else u for leg, u in zip(legs, units)] if s else units
     bodies = {m: refs[m] if ref == m else _follow(ref_of[ref], off)
               for m, (ref, off) in loop.angle_of.items()}
     _place(loop, bodies, start, values, "z")
@@ -323,15 +334,14 @@ def _close(loop: DyadLoop, slide_dir: dict, d) -> tuple[dict, dict, np.ndarray]:
     where the loop closes (elsewhere the values are NaN)."""
     sign = loop.branch
     if len(loop.free) == 2:  # RRR: |A₁|, |A₂| and the distance |D| make a triangle
-        (m1, a1), (m2, a2) = loop.free_sums.items()
-        r1, r2 = abs(a1), abs(a2)
+        m1, m2, a1, a2, r1r1, half = loop.triangle
         # A₁·e^{iθ₁} = D·(k ± i·m): k = x/|D| along D and m = h/|D| across it, in real
         # arithmetic on |D|² (fewer whole-array steps than through |D|)
         inv = 1.0 / (d * d.conj()).real
-        k = 0.5 + (0.5 * (r1 * r1 - r2 * r2)) * inv
-        reach = r1 * r1 * inv  # (r₁/|D|)²
+        k = 0.5 + half * inv
+        reach = r1r1 * inv  # (r₁/|D|)²
         m = _root(reach - k * k, reach)
-        u1 = d * cplx(k, sign * m)
+        u1 = d * cplx(k, m if sign > 0 else -m)
         return {m1: u1 * (1 / a1), m2: (d - u1) * (1 / a2)}, {}, np.isfinite(m)
     if len(loop.free) == 1:
         (m, a), = loop.free_sums.items()
