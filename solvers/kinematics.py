@@ -138,8 +138,7 @@ def driver_body(scene: Scene, at: np.ndarray) -> Body:
     d = scene.driver
     pair = scene.pair(d.pair)
     if d.kind == "rotating":
-        return Body(rot=unit(at), z=scene.frame[pair.point], ref=0j, omega=d.speed, v=0j,
-                    epsilon=d.accel, a=0j, angle=at)
+        return Body(unit(at), scene.frame[pair.point], 0j, d.speed, 0j, d.accel, 0j, at)
     direction = cmath.exp(1j * pair.angle)
     theta = pair.lock
     rot = cmath.exp(1j * theta)

@@ -18,8 +18,11 @@ import numpy as np
 
 
 def unit(angle) -> np.ndarray:
-    """e^{i·angle}, about twice as fast as ``np.exp(1j * angle)`` for real arrays."""
-    return cplx(np.cos(angle), np.sin(angle))
+    """e^{i·angle}, a little faster than ``np.exp(1j * angle)`` for real arrays."""
+    out = np.empty(np.shape(angle), dtype=complex)
+    np.cos(angle, out=out.real)
+    np.sin(angle, out=out.imag)
+    return out
 
 
 def cplx(re, im) -> np.ndarray:
