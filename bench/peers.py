@@ -132,7 +132,7 @@ def table(N: int) -> str:
            f"{omega:g} s⁻¹; Mehanizmi: positions {ours_pos_ms:.3f} ms, positions + velocities + "
            f"accelerations {ours_ms:.3f} ms (median of 200). Errors against Mehanizmi's exact "
            f"solution (its loop closes to 1e-16 m).", "",
-           "| peer, call | peer, ms | Mehanizmi, same work, ms (in turn) | peer ÷ Mehanizmi "
+           "| peer, call | peer, ms | Mehanizmi, same work, ms | peer ÷ Mehanizmi "
            "| max position error of B, mm | max velocity error of B (rel.) |",
            "|---|---:|---:|---:|---:|---:|"]
     for name, ms, ours_same, err, rate_err in rows:
