@@ -34,9 +34,10 @@ PREPARED_MAX = 32
 # A dyad's branch taken from the drawn positions, per geometry and group (see _drawn_branch)
 _BRANCHES: OrderedDict[tuple, int] = OrderedDict()
 # What a scene's solve needs before any position (its structure, each dyad's loop on its
-# drawn branch), kept per scene object for as long as the object lives: a page or a
-# benchmark solving one scene again and again pays this Python work once (issue 21: it was
-# about a third of a 360-position solve). Scenes are frozen; a changed one is a new object.
+# drawn branch, where each point is read, the constants spread over a cycle), kept per scene
+# object for as long as the object lives: a page or a benchmark solving one scene again and
+# again pays this Python work once (issue 21: it was over half of a 360-position solve).
+# Scenes are frozen; a changed one is a new object.
 _PLANS: dict[int, dict] = {}
 NEAR_SINGULAR = 1e-3  # |sin| of the angle between a group's unknown directions
 SINGULAR = 1e-9
@@ -378,20 +379,18 @@ def _collect(scene, structure, groups, at, order, solved: _Solved, wanted, plan)
             out.flags.writeable = False
         return out
 
+    def asked(value, level: int):  # a rate only when the order asks for it
+        return n(value) if order >= level else None
+
     point_motion: dict[str, PointMotion] = {}
     # (the members solved follow from the scene and the points asked for)
     readers = _kept(plan, ("readers", None if wanted is None else tuple(wanted)),
                     lambda: _readers(scene, bodies, wanted))
-    if order == 0:  # (positions alone are asked for speed: no rates to look at)
-        for name, member, local in readers:
-            point_motion[name] = PointMotion(n(bodies[member].position(local)))
-        member_motion = {m: MemberMotion(n(b.rot)) for m, b in bodies.items() if m != FRAME}
-    else:
-        for name, member, local in readers:
-            z, v, a = bodies[member].point(local, order)
-            point_motion[name] = PointMotion(n(z), n(v), None if a is None else n(a))
-        member_motion = {m: MemberMotion(n(b.rot), n(b.omega), n(b.epsilon) if order >= 2 else None)
-                         for m, b in bodies.items() if m != FRAME}
+    for name, member, local in readers:
+        z, v, a = bodies[member].point(local, order)
+        point_motion[name] = PointMotion(n(z), asked(v, 1), asked(a, 2))
+    member_motion = {m: MemberMotion(n(b.rot), asked(b.omega, 1), asked(b.epsilon, 2))
+                     for m, b in bodies.items() if m != FRAME}
     member_motion[DRIVER].angle = n(bodies[DRIVER].theta)  # φ₂ exactly as given
     sliding = _kept(plan, "sliding", lambda: [p for p in scene.pairs
                                               if p.kind == "prismatic" or p.on_slot])
@@ -408,16 +407,17 @@ def _readers(scene: Scene, bodies: dict[int, Body], wanted) -> list[tuple[str, i
     left its motion in the body) before one it would have to be computed from. Which point
     is a member's reference depends only on the scene and the groups solved, so this is
     worked out once per both."""
+    def rank(number: int, local: complex) -> int:  # lower is read first
+        return 0 if number == FRAME else 1 if local == bodies[number].ref else 2
+
     chosen: dict[str, tuple[int, complex]] = {}
     for number in [FRAME, *scene.members]:
         if number not in bodies:
             continue
         for name, local in scene.points_of(number).items():
-            if wanted is not None and name not in wanted:
-                continue
-            if name not in chosen or (local == bodies[number].ref and chosen[name][0] != FRAME
-                                      and chosen[name][1] != bodies[chosen[name][0]].ref):
-                chosen[name] = (number, local)
+            if wanted is None or name in wanted:
+                if name not in chosen or rank(number, local) < rank(*chosen[name]):
+                    chosen[name] = (number, local)
     return [(name, number, local) for name, (number, local) in chosen.items()]
 
 

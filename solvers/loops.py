@@ -94,6 +94,11 @@ class DyadLoop:
         return tuple(leg for leg in self.legs if leg.ref not in self.free_sums and not leg.slide)
 
     @functools.cached_property
+    def slide_legs(self) -> tuple[Leg, ...]:
+        """The legs along a guide, one per prismatic pair: s times a direction."""
+        return tuple(leg for leg in self.legs if leg.slide)
+
+    @functools.cached_property
     def visits(self) -> tuple[tuple[int, complex, int], ...]:
         """(member, point, legs walked before it) where the loop first reaches each member."""
         out, walked, seen = [], 0, set()
@@ -232,11 +237,9 @@ def solve_dyad(loop: DyadLoop, known: dict[int, Body], order: int) -> DyadSoluti
     d = b_end.position(c_end) - start
     for leg in loop.known_legs:
         d = d - leg.local * known[leg.ref].rot
-    slide_dir: dict[str, tuple[int | None, object]] = {}
-    for leg in legs if loop.slides else ():
-        if leg.slide:
-            slide_dir[leg.slide] = ((leg.ref, leg.local) if leg.ref in loop.free_sums
-                                    else (None, leg.local * known[leg.ref].rot))
+    slide_dir: dict[str, tuple[int | None, object]] = {
+        leg.slide: (leg.ref, leg.local) if leg.ref in loop.free_sums
+        else (None, leg.local * known[leg.ref].rot) for leg in loop.slide_legs}
     rots, s, closed = _close(loop, slide_dir, d)
 
     refs = {m: Body(rot=r) for m, r in rots.items()}

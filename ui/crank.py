@@ -46,7 +46,7 @@ def turn(task: float | None = None, step_deg: float = STEP_DEG) -> tuple[float, 
     """The frame angles of a whole turn, in degrees, with the task's own instant among them
     (task 5.1 is drawn at φ₂ = 50.29°): scrubbing comes back to the figure the book solved."""
     grid = [k * step_deg for k in range(int(round(360.0 / step_deg)))]
-    if task is not None and min(abs((g - task + 180.0) % 360.0 - 180.0) for g in grid) > 1e-6:
+    if task is not None and min(_apart(g, task) for g in grid) > 1e-6:
         grid = sorted(grid + [round(task % 360.0, 6)])  # 50.2857°, not 50.285700000000006°
     return tuple(grid)
 
@@ -59,7 +59,12 @@ def task_turn(base: Scene) -> tuple[float, ...]:
 
 def nearest(values: tuple[float, ...], degrees: float) -> int:
     """The frame closest to ``degrees`` around the turn."""
-    return min(range(len(values)), key=lambda k: abs((values[k] - degrees + 180.0) % 360.0 - 180.0))
+    return min(range(len(values)), key=lambda k: _apart(values[k], degrees))
+
+
+def _apart(a: float, b: float) -> float:
+    """How far apart two angles (degrees) are around the turn: 0 … 180."""
+    return abs((a - b + 180.0) % 360.0 - 180.0)
 
 
 def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
