@@ -8,8 +8,11 @@ if [ ! -x /usr/bin/chromium ] || ! command -v npm >/dev/null; then
   sudo=""
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
   if command -v apt-get >/dev/null; then
+    wanted="chromium chromium-driver fonts-dejavu-core"
+    # Debian's npm conflicts with a Node.js installed from elsewhere that brings its own npm.
+    command -v npm >/dev/null || wanted="$wanted npm"
     $sudo apt-get update -q
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q chromium chromium-driver fonts-dejavu-core npm
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q $wanted
   else
     echo "warning: no apt-get here; browser tests need /usr/bin/chromium, and npm" >&2
   fi
