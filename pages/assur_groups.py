@@ -21,6 +21,7 @@ from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, show_table
+from ui.firstpaint import first_run, waiting
 from ui.i18n import current as current_language
 from ui.i18n import num, t, title_of
 from ui.present import look
@@ -114,48 +115,8 @@ def newton_table(scene: Scene, tol: float) -> None:
             st.warning(t("assur.iterations_failed", group=name, count=len(iterates) - 1))
 
 
-controls, main = st.columns([1, 3], gap="large")
-asked = live()  # a chart's φ₂ control was touched: this run sends the frames
-with controls:
-    base = scene_picker(default="zbirka-4.1")
-    seed({"at": driver_start(base), "tol": 1e-10, "upto": 99, "back": 5.0},
-         st.session_state["scene"])
-    scene = driver_position(base)
-    tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
-                           key="tol", format_func=lambda v: f"{v:.0e}", bind="query-params")
-    scene_download(scene)
-
-with main:
-    st.caption(title_of(scene))
-    counts(scene)
-    try:
-        structure = decompose(scene)
-    except StructureError as exc:
-        st.error(t("assur.no_structure", reason=str(exc)))
-        st.stop()
-    st.markdown(t("assur.formula", formula=structure.formula))
-    show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
-    groups = len(structure.groups)
-    upto = groups
-    if groups > 1:
-        st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
-        upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
-    try:
-        current = instant(scene, tol)
-    except (Unsolvable, StructureError) as exc:
-        st.error(t("plans.unsolvable", reason=str(exc)))
-        st.stop()
-    surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
-    survey = cycle(surveyed, tol)
-    values = task_turn(base)
-    frames = cranks(scene, ("structure",), "structure", values, lambda: turn_frames(
-        surveyed, values, tol, upto, current_language(), look()), asked)
-    chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
-          f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
-    for issue in survey.issues:
-        ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
-        key = "assur.open" if issue.problem == "open" else "assur.near_singular"
-        st.warning(t(key, group=issue.group, ranges=ranges))
+def about_the_survey(base: Scene, scene: Scene, current: Motion, survey: Motion, tol: float) -> None:
+    """Under the drawing: the special points' table, Newton's accuracy and iterations."""
     if survey.special:
         st.subheader(t("assur.special"))
         st.caption(t("assur.special_hint"))
@@ -179,7 +140,9 @@ with main:
             newton_table(scene, tol)
         method_doc("complex-number")
 
-with controls:
+
+def self_check(scene: Scene, structure, current: Motion) -> list[Quantity]:
+    """What a student can check: W, the number of groups, each special point at the instant."""
     quantities = [Quantity("W", float(degrees_of_freedom(scene)), ""),
                   Quantity(t("assur.self_groups"), float(len(structure.groups)), "")]
     for name, p in current.special.items():
@@ -187,7 +150,57 @@ with controls:
         if np.isfinite(z):
             quantities += [Quantity(f"x_{name} [m]", z.real, "m"), Quantity(f"y_{name} [m]", z.imag, "m"),
                            Quantity(f"v_{name} [m/s]", float(abs(p.v[0])), "m/s")]
-    answer_box(quantities, key="self")
+    return quantities
+
+controls, main = st.columns([1, 3], gap="large")
+asked = live()  # a chart's φ₂ control was touched: this run sends the frames
+with controls:
+    base = scene_picker(default="zbirka-4.1")
+    seed({"at": driver_start(base), "tol": 1e-10, "upto": 99, "back": 5.0},
+         st.session_state["scene"])
+    scene = driver_position(base)
+    tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
+                           key="tol", format_func=lambda v: f"{v:.0e}", bind="query-params")
+    scene_download(scene)
 
 with main:
-    speed_panel("assur_groups", base.id, ("newton",))
+    st.caption(title_of(scene))
+    counts(scene)
+    try:
+        structure = decompose(scene)
+    except StructureError as exc:
+        st.error(t("assur.no_structure", reason=str(exc)))
+        st.stop()
+    st.markdown(t("assur.formula", formula=structure.formula))
+    if not first_run():  # on a fresh visit, after the chart below (ui/firstpaint.py)
+        show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
+    groups = len(structure.groups)
+    upto = groups
+    if groups > 1:
+        st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
+        upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
+    try:
+        current = instant(scene, tol)
+    except (Unsolvable, StructureError) as exc:
+        st.error(t("plans.unsolvable", reason=str(exc)))
+        st.stop()
+    surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
+    survey = cycle(surveyed, tol)
+    values = task_turn(base)
+    frames = cranks(scene, ("structure",), "structure", values, lambda: turn_frames(
+        surveyed, values, tol, upto, current_language(), look()), asked)
+    chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
+          f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
+    for issue in survey.issues:
+        ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
+        key = "assur.open" if issue.problem == "open" else "assur.near_singular"
+        st.warning(t(key, group=issue.group, ranges=ranges))
+    if not waiting():
+        about_the_survey(base, scene, current, survey, tol)
+
+
+if not waiting():
+    with controls:
+        answer_box(self_check(scene, structure, current), key="self")
+    with main:
+        speed_panel("assur_groups", base.id, ("newton",))

@@ -18,6 +18,7 @@ from ui import builder
 from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
 from ui.export import chart
+from ui.firstpaint import waiting
 from ui.i18n import t, title_of
 from ui.present import look
 from ui.scenes import read_upload, scene_download
@@ -230,7 +231,8 @@ with drawing_col:
     if st.session_state.get("build_drag_error"):
         point, to, why = st.session_state.pop("build_drag_error")
         st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=why))
-    checks(doc, scene, problem, solved)
+    if not waiting():  # on a fresh visit, after the drawing is painted (ui/firstpaint.py)
+        checks(doc, scene, problem, solved)
 
-if scene is not None and problem is None:
+if scene is not None and problem is None and not waiting():
     study(scene)

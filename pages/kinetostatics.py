@@ -30,6 +30,7 @@ from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
+from ui.firstpaint import waiting
 from ui.i18n import current, num, scaled_title, t, title_of
 from ui.present import look
 from ui.progress import measured
@@ -271,6 +272,17 @@ with main:
     tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_steps"),
                     t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
 
+def load_tables(k: Kinetostatics, now: int) -> None:
+    """Under the loads: the joint reactions, and the inertia loads when they count."""
+    st.subheader(t("forces.reactions"))
+    st.caption(t("forces.reactions_hint"))
+    show_table(reactions_table(k, now), f"{scene.id}-reactions.csv", "csv_reactions")
+    if k.inertia:
+        st.subheader(t("forces.inertia_title"))
+        st.caption(t("forces.inertia_hint"))
+        show_table(inertia_table(k, now), f"{scene.id}-inertia.csv", "csv_inertia")
+
+
 rotating = scene.driver.kind == "rotating"
 values = task_turn(base)  # the φ₂ frames' angles, the task's instant among them
 at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
@@ -281,15 +293,9 @@ if tabs[0].open:
             look()), asked)
         chart(loads_figure(k, now, at_label), f"{scene.id}-loads", key="fig_loads",
               crank=frames.get("loads"))
-        table = reactions_table(k, now)
-        st.subheader(t("forces.reactions"))
-        st.caption(t("forces.reactions_hint"))
-        show_table(table, f"{scene.id}-reactions.csv", "csv_reactions")
-        if k.inertia:
-            st.subheader(t("forces.inertia_title"))
-            st.caption(t("forces.inertia_hint"))
-            inertia = inertia_table(k, now)
-            show_table(inertia, f"{scene.id}-inertia.csv", "csv_inertia")
+    if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
+        with tabs[0]:
+            load_tables(k, now)
 
 if tabs[1].open:
     with tabs[1]:
@@ -383,17 +389,16 @@ if tabs[4].open:
                                  for r in table])
             show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
 
-if scene.book:
+if not waiting():
+    if scene.book:
+        with main:
+            book_section(scene, base)
+    with controls:
+        unit = "N·m" if rotating else "N"
+        quantities = [Quantity(f"{'M_p' if rotating else 'F_p'} [{unit}]", float(k.driving[now]), unit),
+                      Quantity("P [W]", float(k.power[now]), "W")]
+        quantities += [Quantity(f"|F_{p}{q}| [N]", float(r.magnitude[now]), "N")
+                       for (p, q), r in sorted(k.reactions.items()) if p < q]
+        answer_box(quantities, key="self")
     with main:
-        book_section(scene, base)
-
-with controls:
-    unit = "N·m" if rotating else "N"
-    quantities = [Quantity(f"{'M_p' if rotating else 'F_p'} [{unit}]", float(k.driving[now]), unit),
-                  Quantity("P [W]", float(k.power[now]), "W")]
-    quantities += [Quantity(f"|F_{p}{q}| [N]", float(r.magnitude[now]), "N")
-                   for (p, q), r in sorted(k.reactions.items()) if p < q]
-    answer_box(quantities, key="self")
-
-with main:
-    speed_panel("kinetostatics", scene.id, ("kinetostatics",))
+        speed_panel("kinetostatics", scene.id, ("kinetostatics",))

@@ -14,6 +14,7 @@ from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.export import chart, show_table
+from ui.firstpaint import waiting
 from ui.i18n import num, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -92,26 +93,21 @@ with main:
         chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
         st.stop()
 
-with controls:
-    scene_download(train)
 
-with main:
-    tab_train, tab_v = st.tabs([t("gears.schematic"), t("gears.velocity_diagram")], key="tab",
-                               on_change="rerun")
-    if tab_train.open:
-        with tab_train:
-            chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
-    if tab_v.open:
-        with tab_v:
-            chart(velocity_figure(solution, pole, t("gears.velocity_diagram"), t, look()),
-                  f"{train.id}-velocities", key="velocities")
-            st.caption(t("gears.pole_note", H=num(h, 3)))
-            u_omega = u_v / (h * u_l)
-            st.markdown(t("gears.u_omega", value=num(u_omega, 4)))
-            show_table(pd.DataFrame([
-                {t("gears.col_member"): m, t("gears.col_intercept"): num(w / u_omega, 4),
-                 "ω = x·U_ω [s⁻¹]": num(w, 5)} for m, w in solution.omega.items()]),
-                f"{train.id}-intercepts.csv", "csv_intercepts")
+def intercepts() -> None:
+    """Under the velocity diagram: its pole distance, U_ω and each member's intercept."""
+    st.caption(t("gears.pole_note", H=num(h, 3)))
+    u_omega = u_v / (h * u_l)
+    st.markdown(t("gears.u_omega", value=num(u_omega, 4)))
+    show_table(pd.DataFrame([
+        {t("gears.col_member"): m, t("gears.col_intercept"): num(w / u_omega, 4),
+         "ω = x·U_ω [s⁻¹]": num(w, 5)} for m, w in solution.omega.items()]),
+        f"{train.id}-intercepts.csv", "csv_intercepts")
+
+
+def results() -> None:
+    """Under the drawing: every ω with the book's, a ratio, the points' speeds, Willis's
+    equations stage by stage, and the answer box."""
     rows = []
     for m, w in solution.omega.items():
         book = train.book.get(f"members.{m}.omega")
@@ -154,5 +150,24 @@ with main:
         method_doc("willis")
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")
 
+
+with controls:
+    scene_download(train)
+
 with main:
-    speed_panel("planetary_gears", train.id)
+    tab_train, tab_v = st.tabs([t("gears.schematic"), t("gears.velocity_diagram")], key="tab",
+                               on_change="rerun")
+    if tab_train.open:
+        with tab_train:
+            chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
+    if tab_v.open:
+        with tab_v:
+            chart(velocity_figure(solution, pole, t("gears.velocity_diagram"), t, look()),
+                  f"{train.id}-velocities", key="velocities")
+            if not waiting():
+                intercepts()
+
+if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
+    with main:
+        results()
+        speed_panel("planetary_gears", train.id)

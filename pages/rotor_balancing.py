@@ -15,6 +15,7 @@ from solvers.balancing import Balance, BalanceError, balance, graphical_error, u
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.export import chart, print_button, show_table
+from ui.firstpaint import waiting
 from ui.i18n import num, scaled_title, t
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -200,6 +201,10 @@ with main:
                                   rotor.planes, t("rotor.tab_3d"), t, look()), f"{rotor.id}-3d",
                   key="3d")
 
+
+def drawing_accuracy() -> None:
+    """Under the polygons: what a drawing to the chosen precision misses, the answer box, and
+    the analytical solution step by step."""
     st.subheader(t("rotor.accuracy_title"))
     rows, answers = [], []
     for plane, f in result.corrections.items():
@@ -238,5 +243,8 @@ with main:
                           Z=num(u.real * MM, 5), tan=num(u.imag / u.real, 5) if u.real else "∞",
                           angle=num(math.degrees(result.corrections[plane].angle), 5)))
 
-with main:
-    speed_panel("rotor_balancing", rotor.id)
+
+if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
+    with main:
+        drawing_accuracy()
+        speed_panel("rotor_balancing", rotor.id)

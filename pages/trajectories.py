@@ -20,6 +20,7 @@ from ui.cache import BY_REPR, cycle
 from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.export import chart, csv_button, show_table
+from ui.firstpaint import waiting
 from ui.i18n import current, num, t, title_of
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -188,7 +189,9 @@ with main:
             st.write(t("traj.loops_yes" if loops else "traj.loops_no", point=point,
                        speed=num(slowest, 3)))
 
-with controls:
+
+def readouts() -> None:
+    """Beside the controls: the answer box, the cycle time, path lengths, strokes, swings."""
     lengths = {p: path_length(fine.points[p].z) for p in points}
     answers = [Quantity(t("traj.time_per_cycle"), cycle_time(scene), "s")]
     answers += [Quantity(t("traj.path_length", point=p), length, "m") for p, length in lengths.items()]
@@ -209,7 +212,9 @@ with controls:
                   f"{num(low, 4)}° … {num(high, 4)}°", delta_color="off", delta_arrow="off",
                   delta_description=t("traj.limits"))
 
-with main:
+
+def resolution_table() -> None:
+    """Under the chart: what each resolution costs and misses, the paths as CSV, the speed panel."""
     st.subheader(t("traj.accuracy_title"))
     rows = [{t("traj.col_positions"): r["positions"], t("traj.col_solve"): num(r["solve_ms"], 3),
              t("traj.col_deviation"): num(r["deviation_m"] * 1e3, 3),
@@ -222,6 +227,11 @@ with main:
         table[f"{name}_x_m"] = fine.points[name].x
         table[f"{name}_y_m"] = fine.points[name].y
     csv_button(table, f"{scene.id}-paths.csv", key="csv")
-
-with main:
     speed_panel("trajectories", scene.id, ("kinematics", "differences", "peers"))
+
+
+if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
+    with controls:
+        readouts()
+    with main:
+        resolution_table()

@@ -25,6 +25,7 @@ from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
+from ui.firstpaint import first_run, waiting
 from ui.i18n import current, num, t, title_of
 from ui.present import look
 from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
@@ -161,15 +162,25 @@ def step_table(index: int) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+def member_table() -> pd.DataFrame:
+    """ω and ε of every member, with its sense of rotation."""
+    return pd.DataFrame([{t("plans.col_member"): n, t("plans.col_omega"): num(w, 5),
+                          t("plans.col_epsilon"): num(e, 5),
+                          t("plans.col_sense"): t("plans.ccw" if w > 0 else "plans.cw" if w < 0 else "plans.still")}
+                         for n, (w, e) in sorted(plans.members.items())])
+
+
 if tab_plans.open:
     with tab_plans:
         index = step - 1
-        st.latex(steps[index].latex)
-        st.latex(plans.acceleration.steps[index].latex)
-        if any(a.kind == "coriolis" for _, side in plans.acceleration.steps[index].sides for a in side):
-            st.caption(t("plans.extension", point=steps[index].target.upper()))
-        if any(g.cls == 3 for g in instant(scene).structure.groups):
-            method_doc("triad-plans")
+        later = first_run()  # on a fresh visit the charts below come first (ui/firstpaint.py)
+        if not later:
+            st.latex(steps[index].latex)
+            st.latex(plans.acceleration.steps[index].latex)
+            if any(a.kind == "coriolis" for _, side in plans.acceleration.steps[index].sides for a in side):
+                st.caption(t("plans.extension", point=steps[index].target.upper()))
+            if any(g.cls == 3 for g in instant(scene).structure.groups):
+                method_doc("triad-plans")
         figures = plan_figures(scene, plans, scales, index)
         values = task_turn(base)
         frames = cranks(scene, ("v", "a", "mech"), "plans", values, lambda: turn_frames(
@@ -179,15 +190,13 @@ if tab_plans.open:
             with column:
                 chart(figures[key], f"{scene.id}-{plan.quantity}-plan", key=f"fig_{key}",
                       crank=frames.get(key))
-                caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
-                print_button(plan_svg(layout_plan(plan, scales[key]), caption),
-                             f"{scene.id}-{plan.quantity}-plan.svg", key=f"svg_{key}")
-        show_table(step_table(index), f"{scene.id}-step-{step}.csv", "csv_step")
-        members = pd.DataFrame([{t("plans.col_member"): n, t("plans.col_omega"): num(w, 5),
-                                 t("plans.col_epsilon"): num(e, 5),
-                                 t("plans.col_sense"): t("plans.ccw" if w > 0 else "plans.cw" if w < 0 else "plans.still")}
-                                for n, (w, e) in sorted(plans.members.items())])
-        show_table(members, f"{scene.id}-members.csv", "csv_members")
+                if not later:
+                    caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
+                    print_button(plan_svg(layout_plan(plan, scales[key]), caption),
+                                 f"{scene.id}-{plan.quantity}-plan.svg", key=f"svg_{key}")
+        if not later:
+            show_table(step_table(index), f"{scene.id}-step-{step}.csv", "csv_step")
+            show_table(member_table(), f"{scene.id}-members.csv", "csv_members")
         chart(figures["mech"], f"{scene.id}-mechanism", key="fig_mech", crank=frames.get("mech"))
 
 if tab_loops.open:
@@ -239,9 +248,9 @@ if tab_accuracy.open:
         if scene.book:
             book_section(scene, base)
 
-with controls:
-    answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty)
-                for r in values], key="self")
-
-with main:
-    speed_panel("velocity_plans", scene.id, ("kinematics", "graphical"))
+if not waiting():
+    with controls:
+        answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty)
+                    for r in values], key="self")
+    with main:
+        speed_panel("velocity_plans", scene.id, ("kinematics", "graphical"))

@@ -26,9 +26,14 @@ if not Path(CHROMIUM).exists():
     pytest.skip(f"{CHROMIUM} not installed (run .ci/run or see README)", allow_module_level=True)
 
 
+# the script is done, and no chart of a session's first run is waiting for the rerun its
+# paint starts (ui/firstpaint.py: that rerun brings the tables and the rest)
+IDLE = """() => document.querySelector("[data-testid='stApp'][data-test-script-state='notRunning']")
+  && ![...document.querySelectorAll('.mehanizmi-plot')].some((g) => g.__first)"""
+
+
 def wait_idle(page) -> None:
-    page.wait_for_selector("[data-testid='stApp'][data-test-script-state='notRunning']",
-                           timeout=30_000)
+    page.wait_for_function(IDLE, timeout=30_000)
 
 
 def plot_x(page, which: int = 0) -> list:
@@ -50,9 +55,15 @@ def open_page(browser, url: str, size=(1400, 900)):
     page = browser.new_page()
     page.set_viewport_size({"width": size[0], "height": size[1]})
     page.goto(url)
-    wait_idle(page)
-    page.wait_for_selector(".js-plotly-plot", timeout=30_000)
+    settle(page)
     return page
+
+
+def settle(page) -> None:
+    """After a page is opened: its chart drawn, and the whole page there (ui/firstpaint.py)."""
+    wait_idle(page)  # (also true before the first run has started)
+    page.wait_for_selector(".js-plotly-plot", timeout=30_000)
+    wait_idle(page)
 
 
 def wait_url(page, pattern: str, timeout: int = 30_000) -> None:
@@ -98,6 +109,37 @@ def test_turning_the_crank_the_other_way_renumbers_the_positions(app_url, browse
     shot = tmp_path / "trajectories-construction.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
+
+
+# when the first chart is painted and when the first table shows, from the page's start
+FIRST_THINGS = """(() => {
+  const poll = () => {
+    const gd = document.querySelector('.js-plotly-plot');
+    if (!window.__chartAt && gd && gd._fullLayout) window.__chartAt = performance.now();
+    if (!window.__tableAt && document.querySelector('[data-testid=stDataFrame]'))
+      window.__tableAt = performance.now();
+    if (!window.__tableAt) requestAnimationFrame(poll);
+  };
+  requestAnimationFrame(poll);
+})();"""
+
+
+@pytest.mark.parametrize("path", ["trajectories", "velocity_plans", "kinetostatics"])
+def test_a_fresh_visit_paints_the_chart_first_and_the_tables_follow_by_themselves(
+        app_url, browser, path):
+    """ui/firstpaint.py: the session's first run leaves the tables out; the chart's first
+    paint brings them with no touch of the student's."""
+    page = browser.new_page()
+    page.add_init_script(FIRST_THINGS)
+    page.goto(f"{app_url}/{path}?lang=en")
+    page.wait_for_function("() => window.__tableAt", timeout=30_000)
+    chart_at, table_at = page.evaluate("() => [window.__chartAt, window.__tableAt]")
+    assert chart_at is not None and chart_at < table_at
+    wait_idle(page)
+    assert page.evaluate("() => [...document.querySelectorAll('.mehanizmi-plot')]"
+                         ".every((g) => g.__first === false)")
+    assert page.locator("[data-testid='stMetric'], [data-testid='stExpander']").count() > 0
+    page.close()
 
 
 def test_the_animation_plays_and_its_frame_slider_advances(app_url, browser, tmp_path):
@@ -382,7 +424,7 @@ def test_scrubbing_phi2_redraws_the_plans_locally_and_letting_go_updates_the_tab
     assert "150.00" in page.locator("[data-testid='stSlider']").first.inner_text()
 
     page.goto(f"{app_url}/velocity_plans?lang=en&scene=analitika-2.1")  # another scene
-    wait_idle(page)
+    settle(page)
     page.wait_for_selector(".mehanizmi-crank input", timeout=30_000)
     page.locator(".mehanizmi-crank input").first.dispatch_event("pointerdown")
     page.wait_for_function(loaded, timeout=30_000)

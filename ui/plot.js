@@ -264,6 +264,16 @@ function dropCrank(gd) {
   gd.__crank = null;
 }
 
+// A session's first run leaves out what can wait until its first chart is on the screen
+// (ui/firstpaint.py); the first chart drawn says so once, after the frame that paints it,
+// and the rerun that starts brings the rest. (A chart of that first run keeps gd.__first
+// until the rerun's figure replaces it: the browser tests wait for that.)
+function reportFirstPaint(gd) {
+  if (window.__mehanizmiPainted) return;
+  window.__mehanizmiPainted = true;
+  requestAnimationFrame(() => setTimeout(() => gd.__send.current("painted", true)));
+}
+
 export default function (component) {
   const { data, parentElement, setTriggerValue } = component;
   let gd = parentElement.querySelector(".mehanizmi-plot");
@@ -277,6 +287,8 @@ export default function (component) {
   if (gd.__drawn === text) return;
   gd.__drawn = text;
   const spec = JSON.parse(text);
+  gd.__first = spec.first;
+  if (!spec.first) window.__mehanizmiPainted = false;  // a whole run: a new session may report
   gd.__filename = spec.filename;
   gd.__send = gd.__send || { current: null };
   gd.__send.current = setTriggerValue;  // the newest mount's, as Streamlit hands it over
@@ -294,7 +306,10 @@ export default function (component) {
     if (gd.__Plotly && gd.__Plotly !== Plotly) gd.__Plotly.purge(gd);  // drawn by another bundle
     gd.__Plotly = Plotly;
     Plotly.react(gd, { ...spec.figure, config })
-      .then(() => { if (spec.editable) listen(gd, gd.__send); })
+      .then(() => {
+        if (spec.editable) listen(gd, gd.__send);
+        if (spec.first) reportFirstPaint(gd);
+      })
       .catch((error) => { gd.textContent = String(error); });
   })).catch((error) => { gd.textContent = String(error); });
   // called when the chart leaves the page (not between reruns): free Plotly's listeners

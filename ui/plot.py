@@ -26,6 +26,7 @@ import streamlit as st
 
 from figures.raw import RawFigure
 from ui.crank import Crank
+from ui.firstpaint import chart_sent
 
 ROOT = Path(__file__).resolve().parents[1]
 STATIC = ROOT / "static"
@@ -94,12 +95,19 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
 
     ``crank``: the chart's own φ₂ control (ui/crank.py). ``on_crank`` is called before the
     rerun the control starts: with the angle in degrees when the student lets go of it, with
-    None when they first touch it (to ask for the frames)."""
+    None when they first touch it (to ask for the frames).
+
+    In a session's first run the chart reports its first paint (trigger "painted"), and
+    the rerun that follows sends what the page left out until then (ui/firstpaint.py)."""
     control = "null" if crank is None else crank.json()
+    first = chart_sent()
     body = (f'{{"src": {json.dumps(bundle_url(fig))}, "filename": {json.dumps(filename)}, '
+            f'"first": {json.dumps(first)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
             f'"crank": {control}, "figure": {pio.to_json(fig, validate=False)}}}')
     events = {"on_drag_change": _ignore, "on_click_change": _ignore} if editable else {}
+    if first:
+        events["on_painted_change"] = _ignore  # the rerun it starts is what it is for
     if on_crank is not None:
         events["on_at_change"] = lambda: on_crank(float(st.session_state[key]["at"]))
         events["on_frames_change"] = lambda: on_crank(None)
