@@ -68,3 +68,18 @@ def test_points_asked_for_alone_are_the_same_as_in_the_whole_solve():
         assert np.array_equal(alone.z, whole.points[name].z, equal_nan=True)
         assert np.array_equal(alone.a, whole.points[name].a, equal_nan=True)
     assert FRAME in whole.bodies
+
+
+def test_the_crank_s_turn_is_kept_by_the_angles_values_not_by_the_array():
+    """solvers.kinematics._TURNS: the same angles again reuse e^{iφ₂} (read-only); the same
+    array changed in place is new angles, and is solved as such."""
+    scene = load_preset("four-bar-crank-rocker")
+    at = np.linspace(0.0, 2 * math.pi, 360, endpoint=False)
+    first = solve(scene, at, order=0).members[2].rot
+    again = solve(scene, at.copy(), order=0).members[2].rot
+    assert again is first and not first.flags.writeable
+    assert np.allclose(first, np.exp(1j * at), atol=1e-15, rtol=0)
+    at += 0.25  # in place: the same object, other angles
+    moved = solve(scene, at, order=0)
+    assert np.allclose(moved.members[2].rot, np.exp(1j * at), atol=1e-15, rtol=0)
+    assert np.allclose(moved.points["B"].z, solve(scene, at.copy(), order=0).points["B"].z)
