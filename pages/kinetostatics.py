@@ -272,6 +272,7 @@ with main:
     tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_steps"),
                     t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
 
+
 def load_tables(k: Kinetostatics, now: int) -> None:
     """Under the loads: the joint reactions, and the inertia loads when they count."""
     st.subheader(t("forces.reactions"))
