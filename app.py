@@ -3,7 +3,7 @@
 import streamlit as st
 
 from ui.chapters import BUILDER, CHAPTERS, VARIANTS
-from ui.firstpaint import end_run
+from ui.firstpaint import begin_run, end_run
 from ui.i18n import language_picker, t
 from ui.present import projector_switch
 
@@ -23,7 +23,9 @@ projector_switch()
 pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
 pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER, VARIANTS)]
 pages.append(st.Page("pages/textbook_check.py", title=t("check.title"), icon=":material/fact_check:"))
+page = st.navigation(pages)
+begin_run(page.url_path)
 try:
-    st.navigation(pages).run()
+    page.run()
 finally:  # (st.stop() and a rerun leave run() by an exception)
     end_run()

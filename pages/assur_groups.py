@@ -172,17 +172,19 @@ with main:
         st.error(t("assur.no_structure", reason=str(exc)))
         st.stop()
     st.markdown(t("assur.formula", formula=structure.formula))
-    if not first_run():  # on a fresh visit, after the chart below (ui/firstpaint.py)
+    try:
+        current, problem = instant(scene, tol), None
+    except (Unsolvable, StructureError) as exc:
+        current, problem = None, exc
+    if problem or not first_run():  # on a fresh visit, after the drawing (ui/firstpaint.py)
         show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
     groups = len(structure.groups)
     upto = groups
     if groups > 1:
         st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
         upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
-    try:
-        current = instant(scene, tol)
-    except (Unsolvable, StructureError) as exc:
-        st.error(t("plans.unsolvable", reason=str(exc)))
+    if problem:
+        st.error(t("plans.unsolvable", reason=str(problem)))
         st.stop()
     surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
     survey = cycle(surveyed, tol)

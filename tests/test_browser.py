@@ -124,14 +124,19 @@ FIRST_THINGS = """(() => {
 })();"""
 
 
-@pytest.mark.parametrize("path", ["trajectories", "velocity_plans", "kinetostatics"])
+@pytest.mark.parametrize("path", ["trajectories", "velocity_plans", "kinetostatics", "home"])
 def test_a_fresh_visit_paints_the_chart_first_and_the_tables_follow_by_themselves(
         app_url, browser, path):
-    """ui/firstpaint.py: the session's first run leaves the tables out; the chart's first
-    paint brings them with no touch of the student's."""
+    """ui/firstpaint.py: a page's first run leaves the tables out; the chart's first paint
+    brings them with no touch of the student's. Also when the student comes from the home
+    page (the same session, another page)."""
     page = browser.new_page()
     page.add_init_script(FIRST_THINGS)
-    page.goto(f"{app_url}/{path}?lang=en")
+    if path == "home":
+        page.goto(f"{app_url}/?lang=en")
+        page.get_by_role("link", name="Trajectories").first.click()
+    else:
+        page.goto(f"{app_url}/{path}?lang=en")
     page.wait_for_function("() => window.__tableAt", timeout=30_000)
     chart_at, table_at = page.evaluate("() => [window.__chartAt, window.__tableAt]")
     assert chart_at is not None and chart_at < table_at

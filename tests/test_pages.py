@@ -9,7 +9,6 @@ import pytest
 from streamlit.testing.v1 import AppTest
 
 from ui.chapters import CHAPTERS
-from ui.firstpaint import RAN
 from ui.i18n import LANGUAGES, t
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -98,7 +97,6 @@ def test_every_preset_that_quotes_the_book_is_on_the_textbook_check_page():
 def linked(path: str, **params) -> AppTest:
     """Open a page from a shared link: ``params`` are the link's query parameters."""
     at = AppTest.from_file(str(ROOT / path), default_timeout=60)
-    at.session_state[RAN] = True  # the whole page (app.py, not run here, marks a first run done)
     at.query_params.update({k: str(v) for k, v in params.items()})
     at.run()
     return at

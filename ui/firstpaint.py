@@ -5,36 +5,48 @@ every element the first run sent, and each kind of element loads its own script 
 time it is shown (a table's grid alone is 1.4 MB): measured in chromium here, a page's
 tables, metrics and panels held its first chart back by about 0.4 s (docs/performance.md).
 
-So the session's first run sends the widgets and the charts, and leaves out what waits
-(``if not waiting(): …`` after a chart, ``first_run`` before one): tables, metrics, equations, downloads, the answer and speed
-panels. Widgets are never left out (Streamlit forgets a widget a run does not draw). The
-first chart drawn in the browser reports its paint (``ui/plot.js``, trigger "painted"),
-and the rerun that starts sends the whole page. Any later run is whole anyway, so a client
-that draws no charts (a test, the load test) gets the whole page from its second run on.
+So a page's first run in a session (a fresh visit, a link opened, or the first time a
+student turns to that page) sends the widgets and the charts, and leaves out what waits
+(``if not waiting(): …`` after a chart, ``if not first_run(): …`` before one): tables,
+metrics, equations, downloads, the answer and speed panels. Widgets are never left out
+(Streamlit forgets a widget a run does not draw). The first chart drawn in the browser
+reports its paint (``ui/plot.js``, trigger "painted"), and the rerun that starts sends the
+whole page. Any later run of the page is whole anyway, so a client that draws no charts
+(a test, the load test) gets the whole page from its second run on.
 """
 
 from __future__ import annotations
 
 import streamlit as st
 
-RAN = "first_paint_ran"  # a run of this session has finished
-CHARTED = "first_paint_charted"  # the session's first run has sent a chart
+PAGE = "first_paint_page"  # the page this run draws (its URL path)
+SEEN = "first_paint_seen"  # the pages that have finished a run in this session
+CHARTED = "first_paint_charted"  # this run has sent a chart
+
+
+def begin_run(page: str) -> None:
+    """Called by app.py before page ``page`` (its URL path) runs."""
+    st.session_state[PAGE] = page
+    st.session_state[CHARTED] = False
 
 
 def end_run() -> None:
     """Called by app.py after the page ran (or stopped)."""
-    st.session_state[RAN] = True
+    st.session_state[SEEN] = st.session_state.get(SEEN, frozenset()) | {st.session_state[PAGE]}
 
 
 def first_run() -> bool:
-    """True in the session's first run. Ask it only on a path that goes on to draw a chart
-    (that chart's paint is what brings the rest); after a chart, ask ``waiting``."""
-    return not st.session_state.get(RAN, False)
+    """True in the first run of this page in the session. Leave something out with it only
+    where a chart surely follows in the same run (its paint brings the rest; a run stopped
+    by an error first would strand it). After a chart, ask ``waiting``. A page run without
+    app.py (a test of the page alone) is never a first run."""
+    state = st.session_state
+    return PAGE in state and state[PAGE] not in state.get(SEEN, frozenset())
 
 
 def chart_sent() -> bool:
-    """Called for every chart sent: whether it is one of the session's first run, which
-    report their paint."""
+    """Called for every chart sent: whether it is one of a page's first run, which report
+    their paint."""
     if not first_run():
         return False
     st.session_state[CHARTED] = True
@@ -42,5 +54,5 @@ def chart_sent() -> bool:
 
 
 def waiting() -> bool:
-    """True in the session's first run once a chart is on its way: leave out what can wait."""
+    """True in a page's first run once a chart is on its way: leave out what can wait."""
     return first_run() and st.session_state.get(CHARTED, False)

@@ -17,7 +17,6 @@ from mechanisms.writer import to_text
 from solvers.variants import VariantError, from_code
 from ui.cache import preset
 from ui.chapters import page_for
-from ui.firstpaint import first_run
 from ui.i18n import current, note_of, source_of, t, title_of
 from ui.url import url_choice
 
@@ -178,11 +177,7 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
 
 
 def scene_download(scene) -> None:
-    """The current scene, with the user's changes, as a TOML file that uploads again. On a
-    fresh visit it follows the page's chart (ui/firstpaint.py): every page that offers it
-    draws one."""
-    if first_run():
-        return
+    """The current scene, with the user's changes, as a TOML file that uploads again."""
     text = to_text(scene)
     st.download_button(t("scene.download"), text.encode("utf-8"), f"{scene.id}.toml",
                        mime="application/toml", on_click="ignore", icon=":material/download:")
