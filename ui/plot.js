@@ -264,9 +264,9 @@ function dropCrank(gd) {
   gd.__crank = null;
 }
 
-// A session's first run leaves out what can wait until its first chart is on the screen
-// (ui/firstpaint.py); the first chart drawn says so once, after the frame that paints it,
-// and the rerun that starts brings the rest. (A chart of that first run keeps gd.__first
+// A page's first run in a session leaves out what can wait until its first chart is on the
+// screen (ui/firstpaint.py); the first chart drawn says so once, after the frame that paints
+// it, and the rerun that starts brings the rest. (A chart of that first run keeps gd.__first
 // until the rerun's figure replaces it: the browser tests wait for that.)
 function reportFirstPaint(gd) {
   if (window.__mehanizmiPainted) return;
@@ -288,7 +288,7 @@ export default function (component) {
   gd.__drawn = text;
   const spec = JSON.parse(text);
   gd.__first = spec.first;
-  if (!spec.first) window.__mehanizmiPainted = false;  // a whole run: a new session may report
+  if (!spec.first) window.__mehanizmiPainted = false;  // a whole run: the next first run reports
   gd.__filename = spec.filename;
   gd.__send = gd.__send || { current: null };
   gd.__send.current = setTriggerValue;  // the newest mount's, as Streamlit hands it over

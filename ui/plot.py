@@ -97,8 +97,9 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     rerun the control starts: with the angle in degrees when the student lets go of it, with
     None when they first touch it (to ask for the frames).
 
-    In a session's first run the chart reports its first paint (trigger "painted"), and
-    the rerun that follows sends what the page left out until then (ui/firstpaint.py)."""
+    In a page's first run in a session the chart reports its first paint (trigger
+    "painted"), and the rerun that follows sends what the page left out until then
+    (ui/firstpaint.py)."""
     control = "null" if crank is None else crank.json()
     first = chart_sent()
     body = (f'{{"src": {json.dumps(bundle_url(fig))}, "filename": {json.dumps(filename)}, '
