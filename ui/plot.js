@@ -308,7 +308,7 @@ export default function (component) {
     Plotly.react(gd, { ...spec.figure, config })
       .then(() => {
         if (spec.editable) listen(gd, gd.__send);
-        if (spec.first) reportFirstPaint(gd);
+        if (spec.first && gd.__first) reportFirstPaint(gd);  // (not if a whole run's figure came since)
       })
       .catch((error) => { gd.textContent = String(error); });
   })).catch((error) => { gd.textContent = String(error); });
