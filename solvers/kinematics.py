@@ -43,7 +43,7 @@ _PLANS: dict[int, dict] = {}
 # (its resolution's angles) again for every length, mass or ω₂ a student tries, and the
 # trigonometry was a sixth of a 360-position solve (bench/peers.py). Keyed by the angles'
 # bytes (1 µs at 360 against 9 µs of cos and sin); the arrays are shared, so read-only.
-_TURNS: OrderedDict[bytes, np.ndarray] = OrderedDict()
+_TURNS: OrderedDict[tuple, np.ndarray] = OrderedDict()
 TURNS_MAX = 16
 NEAR_SINGULAR = 1e-3  # |sin| of the angle between a group's unknown directions
 SINGULAR = 1e-9
@@ -155,15 +155,23 @@ def driver_body(scene: Scene, at: np.ndarray) -> Body:
 
 
 def _turn(at: np.ndarray) -> np.ndarray:
-    """e^{i·at}, kept for the last TURNS_MAX angle arrays (see _TURNS)."""
-    key = at.tobytes()
+    """e^{i·at}, kept for the last TURNS_MAX angle arrays (see _TURNS). The key holds the
+    shape and type with the bytes: the same bytes in another shape are other angles."""
+    key = (at.shape, at.dtype.char, at.tobytes())
     rot = _TURNS.get(key)
     if rot is None:
-        rot = _TURNS[key] = unit(at)
+        rot = unit(at)
         rot.flags.writeable = False
-        if len(_TURNS) > TURNS_MAX:
-            _TURNS.popitem(last=False)
+        _remember(_TURNS, key, rot, TURNS_MAX)
     return rot
+
+
+def _remember(cache: OrderedDict, key, value, most: int) -> None:
+    """``cache[key] = value``; past ``most`` entries the oldest go (pages share this process,
+    so every cache of a solve's work is bounded)."""
+    cache[key] = value
+    while len(cache) > most:
+        cache.pop(next(iter(cache)), None)
 
 
 @bounded
@@ -231,9 +239,7 @@ class _Solved:
                     "own instant: its links do not reach (check the lengths and the [guess] points)")
             start = (a0, *start)
             prepared = start, prepare_march(scene, group, np.array(span), start, known_at, size)
-            _PREPARED[key] = prepared
-            while len(_PREPARED) > PREPARED_MAX:  # the oldest go (pages share this process)
-                _PREPARED.pop(next(iter(_PREPARED)), None)
+            _remember(_PREPARED, key, prepared, PREPARED_MAX)
         start, march = prepared
         solution = solve_triad(scene, group, at, self.bodies, order, start, known_at,
                                tol=tol, size=size, march=march)
@@ -296,9 +302,7 @@ def _drawn_branch(scene: Scene, group: Group, before, tol: float) -> int | None:
         miss[sign] = sum(abs(complex(np.ravel(bodies[m].position(local))[0]) - place) ** 2
                          for m, local, place in drawn)
     best = -1 if miss[-1] < miss[1] else 1  # NaN (cannot close as drawn) keeps +1
-    _BRANCHES[key] = best
-    while len(_BRANCHES) > PREPARED_MAX * 8:
-        _BRANCHES.pop(next(iter(_BRANCHES)), None)
+    _remember(_BRANCHES, key, best, PREPARED_MAX * 8)
     return best
 
 

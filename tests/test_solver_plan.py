@@ -83,3 +83,13 @@ def test_the_crank_s_turn_is_kept_by_the_angles_values_not_by_the_array():
     moved = solve(scene, at, order=0)
     assert np.allclose(moved.members[2].rot, np.exp(1j * at), atol=1e-15, rtol=0)
     assert np.allclose(moved.points["B"].z, solve(scene, at.copy(), order=0).points["B"].z)
+
+
+def test_the_same_bytes_in_another_shape_are_not_the_same_turn():
+    """A kept turn is found by the angles' shape and type as well as their bytes."""
+    from solvers.kinematics import _turn
+
+    at = np.linspace(0.0, 2 * math.pi, 12, endpoint=False)
+    assert _turn(at).shape == (12,)
+    assert _turn(at.reshape(3, 4)).shape == (3, 4)
+    assert _turn(at[:1]).shape == (1,) and _turn(np.float64(at[0]).reshape(())).shape == ()
