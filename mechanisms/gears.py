@@ -16,7 +16,7 @@ import dataclasses
 from dataclasses import dataclass, field
 
 from . import limits
-from .loader import SceneError, _Reader, identity
+from .reader import Reader, SceneError, identity
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "members", "meshes", "shafts",
             "fixed", "inputs", "points", "book", "book_notes"}
@@ -72,13 +72,13 @@ class GearTrain:
         return dataclasses.replace(self, **changes)
 
 
-def _array(r: _Reader, value, where: str, what: str) -> list:
+def _array(r: Reader, value, where: str, what: str) -> list:
     if not isinstance(value, list):
         raise r.fail(where, f"must be an array of {what}, got {value!r}")
     return value
 
 
-def _check_carriers(members: dict[int, GearMember], r: _Reader) -> None:
+def _check_carriers(members: dict[int, GearMember], r: Reader) -> None:
     """A carrier cannot be carried, through any chain, by a member it carries (or by itself):
     following carriers from any member must end at one on a fixed axis."""
     for start in members.values():
@@ -95,7 +95,7 @@ def _check_carriers(members: dict[int, GearMember], r: _Reader) -> None:
 
 
 def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
-    r = _Reader(source)
+    r = Reader(source)
     r.check_keys(raw, TOP_KEYS, "")
     limits.count(raw, limits.GEARS, r.fail)
     table = raw.get("members")

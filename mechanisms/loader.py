@@ -9,7 +9,6 @@ The format is documented in ``docs/scene-format.md``.
 from __future__ import annotations
 
 import dataclasses
-import difflib
 import functools
 import math
 import tomllib
@@ -18,10 +17,10 @@ from typing import Any
 
 from . import limits
 from .formula import formula_keys
+from .reader import Reader, SceneError, identity
 from .schema import DRIVER, FRAME, Driver, Fit, Force, Member, Moment, Pair, Scene, Travel
 
 PRESETS = Path(__file__).parent / "presets"
-LARGEST = 1e9  # beyond this a number is a typo or an attack, and squares of it overflow
 MAX_BYTES = 100_000  # the largest preset is 4 kB; refused before parsing (800 kB took 0.25 s)
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "pairs", "frame",
@@ -36,77 +35,6 @@ PAIR_KEYS = {"type", "members", "point", "name", "guide", "slider", "through", "
 DRIVER_KEYS = {"member", "type", "at", "omega", "epsilon", "velocity", "acceleration"}
 FORCE_KEYS = {"member", "point", "magnitude", "angle", "follows_member", "label"}
 MOMENT_KEYS = {"member", "value"}
-
-
-class SceneError(ValueError):
-    """A scene file breaks a rule; the message names the file, the key and the rule."""
-
-
-class _Reader:
-    """Typed access to the parsed TOML with messages that name the key."""
-
-    def __init__(self, source: str):
-        self.source = source
-
-    def fail(self, key: str, rule: str) -> SceneError:
-        return SceneError(f"{self.source}: {key} {rule}")
-
-    def check_keys(self, table: Any, allowed: set[str], key: str) -> dict:
-        if not isinstance(table, dict):
-            raise self.fail(key, f"must be a table, got {type(table).__name__}")
-        for name in table:
-            if name not in allowed:
-                near = difflib.get_close_matches(name, sorted(allowed), n=1)
-                hint = f" (did you mean {near[0]!r}?)" if near else ""
-                where = f"{key}.{name}" if key else name
-                raise self.fail(where, f"is not a known key{hint}")
-        return table
-
-    def number(self, table: dict, name: str, key: str, default: float | None = None,
-               positive: bool = False, non_negative: bool = False) -> float:
-        where = f"{key}.{name}" if key else name
-        if name not in table:
-            if default is None:
-                raise self.fail(where, "is missing")
-            return default
-        value = table[name]
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise self.fail(where, f"must be a number, got {value!r}")
-        if not math.isfinite(value):
-            raise self.fail(where, f"must be a finite number, got {value!r}")
-        if abs(value) > LARGEST:
-            raise self.fail(where, f"is {value!r}: no mechanism needs a number beyond ±{LARGEST:g} "
-                                   "(SI units: metres, radians per second, kilograms, newtons)")
-        if positive and value <= 0:
-            raise self.fail(where, f"must be > 0, got {value!r}")
-        if non_negative and value < 0:
-            raise self.fail(where, f"must be >= 0, got {value!r}")
-        return float(value)
-
-    def text(self, table: dict, name: str, key: str, default: str | None = None) -> str:
-        where = f"{key}.{name}" if key else name
-        value = table.get(name, default)
-        if value is None:
-            raise self.fail(where, "is missing")
-        if not isinstance(value, str):
-            raise self.fail(where, f"must be a string, got {value!r}")
-        return value
-
-    def integer(self, table: dict, name: str, key: str) -> int:
-        where = f"{key}.{name}" if key else name
-        value = table.get(name)
-        if isinstance(value, bool) or not isinstance(value, int):
-            raise self.fail(where, f"must be a member number (integer), got {value!r}")
-        return value
-
-    def vector(self, value: Any, key: str) -> complex:
-        ok = (isinstance(value, list) and len(value) == 2
-              and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value))
-        if not ok:
-            raise self.fail(key, f"must be a pair of numbers [x, y], got {value!r}")
-        if not all(math.isfinite(v) and abs(v) <= LARGEST for v in value):
-            raise self.fail(key, f"must be finite and within ±{LARGEST:g}, got {value!r}")
-        return complex(value[0], value[1])
 
 
 def load_scene(path: str | Path):
@@ -183,18 +111,18 @@ def build_document(raw: dict, source: str = "<scene>", default_id: str = "scene"
         from .gears import parse_gears
 
         return parse_gears(raw, source, default_id)
-    return _build(raw, _Reader(source), default_id)
+    return _build(raw, Reader(source), default_id)
 
 
 def parse_scene(data: bytes | str, source: str = "<scene>", default_id: str = "scene") -> Scene:
     """Parse and validate a linkage scene (bytes from an upload or a file)."""
-    return _build(_read_toml(data, source), _Reader(source), default_id)
+    return _build(_read_toml(data, source), Reader(source), default_id)
 
 
 def build_scene(raw: dict, source: str = "builder", default_id: str = "my-mechanism") -> Scene:
     """Validate a scene document made elsewhere (the builder's tables): the table a TOML file
     parses to, checked by the same rules with the same messages."""
-    return _build(raw, _Reader(source), default_id)
+    return _build(raw, Reader(source), default_id)
 
 
 def _read_toml(data: bytes | str, source: str) -> dict:
@@ -217,7 +145,7 @@ def _read_toml(data: bytes | str, source: str) -> dict:
     return raw
 
 
-def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
+def _build(raw: dict, r: Reader, default_id: str) -> Scene:
     r.check_keys(raw, TOP_KEYS, "")
     limits.count(raw, limits.LINKAGE, r.fail)
     limits.count_points(raw, r.fail)
@@ -256,7 +184,7 @@ def _build(raw: dict, r: _Reader, default_id: str) -> Scene:
     return scene
 
 
-def _frame(raw: dict, r: _Reader) -> dict[str, complex]:
+def _frame(raw: dict, r: Reader) -> dict[str, complex]:
     table = raw.get("frame")
     if table is None:
         raise r.fail("frame", "is missing (the fixed points of member 1)")
@@ -272,7 +200,7 @@ def _frame(raw: dict, r: _Reader) -> dict[str, complex]:
     return frame
 
 
-def _members(raw: dict, r: _Reader) -> dict[int, Member]:
+def _members(raw: dict, r: Reader) -> dict[int, Member]:
     table = raw.get("members")
     if not isinstance(table, dict) or not table:
         raise r.fail("members", "is missing (the moving members 2, 3, …)")
@@ -288,7 +216,7 @@ def _members(raw: dict, r: _Reader) -> dict[int, Member]:
     return dict(sorted(members.items()))
 
 
-def _member(number: int, spec: dict, r: _Reader, where: str) -> Member:
+def _member(number: int, spec: dict, r: Reader, where: str) -> Member:
     axis = spec.get("points")
     if (not isinstance(axis, list) or not 1 <= len(axis) <= 2
             or not all(isinstance(p, str) and p for p in axis) or len(set(axis)) != len(axis)):
@@ -322,7 +250,7 @@ def _member(number: int, spec: dict, r: _Reader, where: str) -> Member:
     )
 
 
-def _member_ref(value: Any, r: _Reader, where: str, members: dict[int, Member]) -> int:
+def _member_ref(value: Any, r: Reader, where: str, members: dict[int, Member]) -> int:
     if isinstance(value, bool) or not isinstance(value, int):
         raise r.fail(where, f"must be a member number, got {value!r}")
     if value != 1 and value not in members:
@@ -330,7 +258,7 @@ def _member_ref(value: Any, r: _Reader, where: str, members: dict[int, Member]) 
     return value
 
 
-def _point_ref(value: Any, member: int, r: _Reader, where: str, frame: dict,
+def _point_ref(value: Any, member: int, r: Reader, where: str, frame: dict,
                members: dict[int, Member]) -> str:
     own = frame if member == FRAME else members[member].points
     if not isinstance(value, str) or value not in own:
@@ -339,7 +267,7 @@ def _point_ref(value: Any, member: int, r: _Reader, where: str, frame: dict,
     return value
 
 
-def _pairs(raw: dict, r: _Reader, frame: dict, members: dict[int, Member]) -> tuple[Pair, ...]:
+def _pairs(raw: dict, r: Reader, frame: dict, members: dict[int, Member]) -> tuple[Pair, ...]:
     specs = raw.get("pairs")
     if not isinstance(specs, list) or not specs:
         raise r.fail("pairs", "is missing: list the kinematic pairs, e.g. "
@@ -388,7 +316,7 @@ def _pairs(raw: dict, r: _Reader, frame: dict, members: dict[int, Member]) -> tu
     return tuple(pairs)
 
 
-def _circular(spec: dict, r: _Reader, where: str, frame: dict, members: dict[int, Member]) -> Pair:
+def _circular(spec: dict, r: Reader, where: str, frame: dict, members: dict[int, Member]) -> Pair:
     """A block in a circular slot of the guide member: the block carries the slot's centre
     as a point (its distance from the block's point is the radius), shared with the guide."""
     guide = _member_ref(spec.get("guide"), r, f"{where}.guide", members)
@@ -406,7 +334,7 @@ def _circular(spec: dict, r: _Reader, where: str, frame: dict, members: dict[int
                 name=r.text(spec, "name", where, default=f"{guide}-{slider}"))
 
 
-def _driver(raw: dict, r: _Reader, members: dict[int, Member], pairs: tuple[Pair, ...]) -> Driver:
+def _driver(raw: dict, r: Reader, members: dict[int, Member], pairs: tuple[Pair, ...]) -> Driver:
     spec = r.check_keys(raw.get("driver"), DRIVER_KEYS, "driver") if "driver" in raw else None
     if spec is None:
         raise r.fail("driver", "is missing (member 2 rotating with omega, or linear with velocity)")
@@ -437,7 +365,7 @@ def _driver(raw: dict, r: _Reader, members: dict[int, Member], pairs: tuple[Pair
     raise r.fail("driver.type", f"must be 'rotating' or 'linear', got {kind!r}")
 
 
-def _assembly(raw: dict, r: _Reader, members: dict[int, Member]) -> dict[tuple[int, int], int]:
+def _assembly(raw: dict, r: Reader, members: dict[int, Member]) -> dict[tuple[int, int], int]:
     table = raw.get("assembly", {})
     if not isinstance(table, dict):
         raise r.fail("assembly", "must be a table such as { \"3-4\" = 1 }")
@@ -452,7 +380,7 @@ def _assembly(raw: dict, r: _Reader, members: dict[int, Member]) -> dict[tuple[i
     return out
 
 
-def _tables(raw: dict, r: _Reader, name: str, allowed: set[str]):
+def _tables(raw: dict, r: Reader, name: str, allowed: set[str]):
     """(where, spec) for each table of the array ``[[name]]``, keys checked."""
     specs = raw.get(name, [])
     if not isinstance(specs, list):
@@ -462,14 +390,14 @@ def _tables(raw: dict, r: _Reader, name: str, allowed: set[str]):
         yield where, r.check_keys(spec, allowed, where)
 
 
-def _flag(table: dict, r: _Reader, name: str, where: str = "") -> bool:
+def _flag(table: dict, r: Reader, name: str, where: str = "") -> bool:
     value = table.get(name, False)
     if not isinstance(value, bool):
         raise r.fail(f"{where}.{name}" if where else name, f"must be true or false, got {value!r}")
     return value
 
 
-def _forces(raw: dict, r: _Reader, members: dict[int, Member], frame: dict) -> tuple[Force, ...]:
+def _forces(raw: dict, r: Reader, members: dict[int, Member], frame: dict) -> tuple[Force, ...]:
     forces = []
     for where, spec in _tables(raw, r, "forces", FORCE_KEYS):
         member = _member_ref(spec.get("member"), r, f"{where}.member", members)
@@ -481,19 +409,19 @@ def _forces(raw: dict, r: _Reader, members: dict[int, Member], frame: dict) -> t
     return tuple(forces)
 
 
-def _moments(raw: dict, r: _Reader, members: dict[int, Member]) -> tuple[Moment, ...]:
+def _moments(raw: dict, r: Reader, members: dict[int, Member]) -> tuple[Moment, ...]:
     return tuple(Moment(_member_ref(spec.get("member"), r, f"{where}.member", members),
                         r.number(spec, "value", where))
                  for where, spec in _tables(raw, r, "moments", MOMENT_KEYS))
 
 
-def _scales(raw: dict, r: _Reader) -> dict[str, float]:
+def _scales(raw: dict, r: Reader) -> dict[str, float]:
     """The book's drawing scales: how much one centimetre of the drawing stands for."""
     spec = r.check_keys(raw.get("scales", {}), SCALE_KEYS, "scales")
     return {k: r.number(spec, k, "scales", positive=True) for k in spec}
 
 
-def _fit(raw: dict, r: _Reader, book: dict[str, float]) -> Fit:
+def _fit(raw: dict, r: Reader, book: dict[str, float]) -> Fit:
     spec = r.check_keys(raw["fit"], FIT_KEYS, "fit")
     unknowns, start, used = (spec.get(k) for k in ("unknowns", "start", "used"))
     if not (isinstance(unknowns, list) and unknowns and all(isinstance(u, str) for u in unknowns)):
@@ -511,7 +439,7 @@ def _fit(raw: dict, r: _Reader, book: dict[str, float]) -> Fit:
                tuple(used), r.number(spec, "residual", "fit", non_negative=True), tuple(chose))
 
 
-def _slips(raw: dict, r: _Reader, book: dict[str, float]) -> dict[str, str]:
+def _slips(raw: dict, r: Reader, book: dict[str, float]) -> dict[str, str]:
     table = raw["book_slips"]
     if not isinstance(table, dict):
         raise r.fail("book_slips", "must be a table of formulas keyed like [book], e.g. "
@@ -526,14 +454,14 @@ def _slips(raw: dict, r: _Reader, book: dict[str, float]) -> dict[str, str]:
     return dict(table)
 
 
-def _guess(raw: dict, r: _Reader) -> dict[str, complex]:
+def _guess(raw: dict, r: Reader) -> dict[str, complex]:
     table = raw.get("guess", {})
     if not isinstance(table, dict):
         raise r.fail("guess", "must be a table of sketched points, e.g. { C = [0.3, 0.2] }")
     return {name: r.vector(v, f"guess.{name}") for name, v in table.items()}
 
 
-def _special(raw: dict, r: _Reader, members: dict[int, Member]) -> dict[str, tuple[int, int]]:
+def _special(raw: dict, r: Reader, members: dict[int, Member]) -> dict[str, tuple[int, int]]:
     table = raw.get("special", {})
     if not isinstance(table, dict):
         raise r.fail("special", "must be a table such as { S = [3, 6] }")
@@ -548,7 +476,7 @@ def _special(raw: dict, r: _Reader, members: dict[int, Member]) -> dict[str, tup
     return out
 
 
-def _travel(raw: dict, r: _Reader, driver: Driver) -> Travel:
+def _travel(raw: dict, r: Reader, driver: Driver) -> Travel:
     spec = r.check_keys(raw["travel"], TRAVEL_KEYS, "travel")
     if driver.kind != "rotating":
         raise r.fail("travel", "needs a rotating driver (the crank is chain-driven)")
@@ -557,27 +485,7 @@ def _travel(raw: dict, r: _Reader, driver: Driver) -> Travel:
                   angle=math.radians(r.number(spec, "angle", "travel", default=0.0)))
 
 
-def identity(raw: dict, r: _Reader, default_id: str) -> dict:
-    """What every kind of scene has: id, titles, source, note, and the book's printed values
-    with the reasons some of them differ (``[book]``, ``[book_notes]``)."""
-    book = raw.get("book", {})
-    if not isinstance(book, dict):
-        raise r.fail("book", "must be a table of printed values, e.g. \"members.4.omega\" = 8.148")
-    notes = raw.get("book_notes", {})
-    if not isinstance(notes, dict):
-        raise r.fail("book_notes", "must be a table of strings keyed like [book]")
-    return dict(id=r.text(raw, "id", "", default=default_id),
-                title=r.text(raw, "title", "", default=default_id),
-                title_sr=r.text(raw, "title_sr", "", default=""),
-                source=r.text(raw, "source", "", default=""),
-                note=r.text(raw, "note", "", default=""),
-                note_sr=r.text(raw, "note_sr", "", default=""),
-                source_sr=r.text(raw, "source_sr", "", default=""),
-                book={k: r.number(book, k, "book") for k in book},
-                book_notes={k: r.text(notes, k, "book_notes") for k in notes})
-
-
-def _check_shared_points_are_joints(scene: Scene, r: _Reader) -> None:
+def _check_shared_points_are_joints(scene: Scene, r: Reader) -> None:
     """A letter on several members names one place: those members must be pinned there."""
     owners: dict[str, list[int]] = {}
     for number in [1, *scene.members]:
@@ -599,7 +507,7 @@ def _check_shared_points_are_joints(scene: Scene, r: _Reader) -> None:
                          f"{name} joins them; give the point its own letter")
 
 
-def _check_every_member_is_joined(scene: Scene, r: _Reader) -> None:
+def _check_every_member_is_joined(scene: Scene, r: Reader) -> None:
     for number in scene.members:
         if not any(number in p.members for p in scene.pairs):
             raise r.fail(f"members.{number}", "is not joined to anything by a pair")

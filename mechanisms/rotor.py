@@ -12,7 +12,7 @@ import math
 from dataclasses import dataclass, field
 
 from . import limits
-from .loader import SceneError, _Reader, identity
+from .reader import Reader, SceneError, identity
 
 PLANES = ("I", "II")
 QUANTITIES = ("mass", "radius", "angle")
@@ -64,7 +64,7 @@ class Rotor:
 
 
 def parse_rotor(raw: dict, source: str, default_id: str) -> Rotor:
-    r = _Reader(source)
+    r = Reader(source)
     r.check_keys(raw, TOP_KEYS, "")
     limits.count(raw, limits.ROTOR, r.fail)
     mode = r.text(raw, "mode", "", default="dynamic")

@@ -74,7 +74,8 @@ def use(scene) -> None:
 
 def from_raw(raw: dict):
     """Load a scene from an already parsed table, through the same entry as a file."""
-    from mechanisms.loader import _build, _Reader
+    from mechanisms.loader import _build
+    from mechanisms.reader import Reader
     from mechanisms.gears import parse_gears
     from mechanisms.rotor import parse_rotor
 
@@ -83,7 +84,7 @@ def from_raw(raw: dict):
         return parse_rotor(raw, "<fuzz>", "fuzz")
     if kind == "gears":
         return parse_gears(raw, "<fuzz>", "fuzz")
-    return _build(raw, _Reader("<fuzz>"), "fuzz")
+    return _build(raw, Reader("<fuzz>"), "fuzz")
 
 
 @FUZZ

@@ -1,0 +1,106 @@
+"""What every scene parser shares: typed access to parsed TOML whose messages name the key
+(``four-bar.toml: members.3.length must be > 0, got -0.2``), the scene error, and the fields
+every kind of scene has (id, titles, notes, the book's printed values).
+
+Its own module so that the linkage loader and the gear and rotor parsers import it and not
+each other.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from typing import Any
+
+LARGEST = 1e9  # beyond this a number is a typo or an attack, and squares of it overflow
+
+
+class SceneError(ValueError):
+    """A scene file breaks a rule; the message names the file, the key and the rule."""
+
+
+class Reader:
+    """Typed access to the parsed TOML with messages that name the key."""
+
+    def __init__(self, source: str):
+        self.source = source
+
+    def fail(self, key: str, rule: str) -> SceneError:
+        return SceneError(f"{self.source}: {key} {rule}")
+
+    def check_keys(self, table: Any, allowed: set[str], key: str) -> dict:
+        if not isinstance(table, dict):
+            raise self.fail(key, f"must be a table, got {type(table).__name__}")
+        for name in table:
+            if name not in allowed:
+                near = difflib.get_close_matches(name, sorted(allowed), n=1)
+                hint = f" (did you mean {near[0]!r}?)" if near else ""
+                where = f"{key}.{name}" if key else name
+                raise self.fail(where, f"is not a known key{hint}")
+        return table
+
+    def number(self, table: dict, name: str, key: str, default: float | None = None,
+               positive: bool = False, non_negative: bool = False) -> float:
+        where = f"{key}.{name}" if key else name
+        if name not in table:
+            if default is None:
+                raise self.fail(where, "is missing")
+            return default
+        value = table[name]
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise self.fail(where, f"must be a number, got {value!r}")
+        if not math.isfinite(value):
+            raise self.fail(where, f"must be a finite number, got {value!r}")
+        if abs(value) > LARGEST:
+            raise self.fail(where, f"is {value!r}: no mechanism needs a number beyond ±{LARGEST:g} "
+                                   "(SI units: metres, radians per second, kilograms, newtons)")
+        if positive and value <= 0:
+            raise self.fail(where, f"must be > 0, got {value!r}")
+        if non_negative and value < 0:
+            raise self.fail(where, f"must be >= 0, got {value!r}")
+        return float(value)
+
+    def text(self, table: dict, name: str, key: str, default: str | None = None) -> str:
+        where = f"{key}.{name}" if key else name
+        value = table.get(name, default)
+        if value is None:
+            raise self.fail(where, "is missing")
+        if not isinstance(value, str):
+            raise self.fail(where, f"must be a string, got {value!r}")
+        return value
+
+    def integer(self, table: dict, name: str, key: str) -> int:
+        where = f"{key}.{name}" if key else name
+        value = table.get(name)
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise self.fail(where, f"must be a member number (integer), got {value!r}")
+        return value
+
+    def vector(self, value: Any, key: str) -> complex:
+        ok = (isinstance(value, list) and len(value) == 2
+              and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value))
+        if not ok:
+            raise self.fail(key, f"must be a pair of numbers [x, y], got {value!r}")
+        if not all(math.isfinite(v) and abs(v) <= LARGEST for v in value):
+            raise self.fail(key, f"must be finite and within ±{LARGEST:g}, got {value!r}")
+        return complex(value[0], value[1])
+
+
+def identity(raw: dict, r: Reader, default_id: str) -> dict:
+    """What every kind of scene has: id, titles, source, note, and the book's printed values
+    with the reasons some of them differ (``[book]``, ``[book_notes]``)."""
+    book = raw.get("book", {})
+    if not isinstance(book, dict):
+        raise r.fail("book", "must be a table of printed values, e.g. \"members.4.omega\" = 8.148")
+    notes = raw.get("book_notes", {})
+    if not isinstance(notes, dict):
+        raise r.fail("book_notes", "must be a table of strings keyed like [book]")
+    return dict(id=r.text(raw, "id", "", default=default_id),
+                title=r.text(raw, "title", "", default=default_id),
+                title_sr=r.text(raw, "title_sr", "", default=""),
+                source=r.text(raw, "source", "", default=""),
+                note=r.text(raw, "note", "", default=""),
+                note_sr=r.text(raw, "note_sr", "", default=""),
+                source_sr=r.text(raw, "source_sr", "", default=""),
+                book={k: r.number(book, k, "book") for k in book},
+                book_notes={k: r.text(notes, k, "book_notes") for k in notes})
