@@ -20,9 +20,9 @@ sys.path.insert(0, str(ROOT))
 
 from bench.publish import publish  # noqa: E402
 from mechanisms import load_preset  # noqa: E402
+from methods.plans import build, readings  # noqa: E402
 from solvers.diagnostics import newton_accuracy, solve_instant, sweep_values  # noqa: E402
 from solvers.kinematics import solve  # noqa: E402
-from solvers.plans import build, readings  # noqa: E402
 
 STEPS = (12, 72, 360, 3600)
 DIFFERENCES = (("four-bar-crank-rocker", "E"), ("slider-crank", "B"), ("zbirka-2.2", "D"))

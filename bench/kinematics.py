@@ -11,8 +11,8 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from bench.publish import publish  # noqa: E402
+from cli.bench import measure  # noqa: E402
 from mechanisms import load_preset  # noqa: E402
-from solvers.bench import measure  # noqa: E402
 
 SCENES = ("four-bar-crank-rocker", "analitika-2.1", "analitika-2.2")
 STEPS = (12, 72, 360, 3600)

@@ -1,5 +1,5 @@
 """Making a set of exam variants: how long thirty take per task (drawing, checking, keys and
-the sheets), how many candidates were refused and why (solvers/variants.py).
+the sheets), how many candidates were refused and why (exams/variants.py).
 
     .venv/bin/python bench/variants.py [COUNT]
 """
@@ -11,9 +11,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from figures.sheets import sheets_html  # noqa: E402
-from mechanisms.codes import Settings  # noqa: E402
-from solvers.variants import TRIES, generate  # noqa: E402
+from exams.codes import Settings  # noqa: E402
+from exams.sheets import sheets_html  # noqa: E402
+from exams.variants import TRIES, generate  # noqa: E402
 
 TASKS = ("zbirka-3.1", "zbirka-2.1", "zbirka-5.4", "analitika-2.1", "zbirka-4.2", "zbirka-4.1",
          "zbirka-6.1", "zbirka-6.8", "zbirka-7.1")

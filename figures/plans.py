@@ -1,6 +1,6 @@
 """Velocity and acceleration plans drawn as a student draws them: in centimetres at a scale.
 
-``layout_plan`` turns a plan (``solvers.plans``) and a scale U (units per cm) into drawn
+``layout_plan`` turns a plan (``methods.plans``) and a scale U (units per cm) into drawn
 arrows and labels up to a step of the construction; ``plan_figure`` shows that in Plotly
 and ``plan_svg`` writes it as an SVG whose centimetre is a centimetre on paper.
 """
@@ -10,8 +10,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from methods.plans import POLE, Arrow, Plan, Plans
 from solvers.kinematics import Motion
-from solvers.plans import POLE, Arrow, Plan, Plans
 
 from .arrows import arrow_traces, name_by_colour
 from .linkage import Text, mechanism_traces, pose, scatter

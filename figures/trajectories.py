@@ -171,7 +171,7 @@ def field_figure(times: np.ndarray, field: np.ndarray, relative: np.ndarray, poi
 
 def compass_figure(scene: Scene, steps: list, texts: list[str], title: str, t: Text,
                    look: Look = NORMAL) -> RawFigure:
-    """The compass construction (``solvers.compass``) one step per animation frame, with a
+    """The compass construction (``methods.compass``) one step per animation frame, with a
     step slider and a play button that run in the browser: the arcs drawn so far in pencil,
     this step's arcs in colour, the points found so far with their numbers, and at the end
     each path through its 12 points. Each frame's title says what the step draws."""

@@ -15,13 +15,11 @@ from figures.polygon import polygon_figure, polygon_svg
 from figures.raw import RawFigure
 from figures.style import Look, nice_scale
 from mechanisms.schema import Scene
+from methods.force_steps import equation, steps as force_steps
+from methods.lever_steps import construction as lever_construction, latex as lever_latex
+from reports.values import has_loads
 from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_resolution
-from solvers.force_steps import equation
-from solvers.force_steps import steps as force_steps
 from solvers.kinetostatics import Action, Kinetostatics, analyse, free_body
-from solvers.lever_steps import construction as lever_construction
-from solvers.lever_steps import latex as lever_latex
-from solvers.report import has_loads
 from solvers.structure import StructureError
 from ui.benchmarks import speed_panel
 from ui.book import book_section

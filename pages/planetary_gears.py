@@ -5,10 +5,10 @@ from __future__ import annotations
 import pandas as pd
 import streamlit as st
 
-from figures.style import nice_scale
 from figures.gears import schematic_figure, velocity_figure
+from figures.style import nice_scale
 from mechanisms.gears import GearTrain, Input, Mesh
-from solvers.gear_steps import speed_steps, total_ratio
+from methods.gear_steps import speed_steps, total_ratio
 from solvers.gears import TrainError, geometry_notes, solve_train, stages, willis_table
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
@@ -23,7 +23,7 @@ from ui.url import seed, table_to_url, url_table
 
 page_title("pages/planetary_gears.py")
 
-# the caption under each step of solvers.gear_steps: (kind, on fixed axes) → locale key
+# the caption under each step of methods.gear_steps: (kind, on fixed axes) → locale key
 STEP_WORDS = {("input", True): "gears.kind_input", ("fixed", True): "gears.kind_fixed",
               ("shaft", True): "gears.kind_shaft", ("mesh", True): "gears.kind_mesh_fixed",
               ("mesh", False): "gears.kind_mesh_planet", ("stage", False): "gears.kind_stage",

@@ -6,8 +6,8 @@ import pandas as pd
 import streamlit as st
 
 from mechanisms import load_preset, preset_ids
+from reports.textbook import BookRow, check
 from solvers.diagnostics import Unsolvable
-from solvers.textbook import BookRow, check
 from ui.book import COUNTED, VERDICTS, book_table, coverage_table, fit_summary, tasks_table
 from ui.chapters import page_for
 from ui.export import csv_button

@@ -11,10 +11,19 @@ import streamlit as st
 from figures.style import Look
 from figures.trajectories import animation_figure, compass_figure, construction_figure, field_figure
 from mechanisms.schema import Scene, Travel
-from solvers.compass import construction as compass_steps
+from methods.compass import construction as compass_steps
 from solvers.diagnostics import dead_zones, format_range
-from solvers.paths import (animation_order, cycle_time, field_path, loops_backward,
-                           path_errors, path_length, solve_times, strokes, swings)
+from solvers.paths import (
+    animation_order,
+    cycle_time,
+    field_path,
+    loops_backward,
+    path_errors,
+    path_length,
+    solve_times,
+    strokes,
+    swings,
+)
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, cycle
 from ui.chapters import page_title

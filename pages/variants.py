@@ -8,11 +8,20 @@ import json
 import pandas as pd
 import streamlit as st
 
-from figures.sheets import sheets_html
+from exams.codes import DEFAULT_SPREAD, MAX_SEED, Settings
+from exams.sheets import sheets_html
+from exams.variants import (
+    MAX_COUNT,
+    Task,
+    VariantError,
+    VariantSet,
+    as_json,
+    generate,
+    key_rows,
+    symbol,
+    task,
+)
 from mechanisms import load_preset, preset_ids
-from mechanisms.codes import DEFAULT_SPREAD, MAX_SEED, Settings
-from solvers.variants import (MAX_COUNT, Task, VariantError, VariantSet, as_json, generate, key_rows,
-                              symbol, task)
 from ui.chapters import VARIANTS, page_for
 from ui.i18n import current, num, t, title_of
 

@@ -7,20 +7,19 @@ import math
 import pandas as pd
 import streamlit as st
 
-from figures.raw import RawFigure
 from figures.plans import KIND_KEYS, layout_plan, mechanism_figure, plain, plan_figure, plan_svg
+from figures.raw import RawFigure
 from figures.style import Look, nice_scale
 from mechanisms.schema import Scene
-from solvers.analytic import derivation, equations, solved_values
-from solvers.contour import contour, free_points
-from solvers.contour import latex as contour_latex
+from methods.analytic import derivation, equations, solved_values
+from methods.contour import contour, free_points, latex as contour_latex
+from methods.plans import Plans, build, describe, readings
 from solvers.diagnostics import Unsolvable, solve_instant
 from solvers.kinematics import Motion
-from solvers.plans import Plans, build, describe, readings
 from solvers.structure import StructureError
 from ui.benchmarks import speed_panel
-from ui.cache import BY_REPR, instant
 from ui.book import book_section
+from ui.cache import BY_REPR, instant
 from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc

@@ -1,4 +1,5 @@
-"""Mehanizmi's solvers: pure numpy, no drawing. See docs/api.md.
+"""The numerical core: pure numpy, no drawing, no sentences beyond error messages (the
+book's methods step by step are in ``methods``). See docs/api.md and docs/architecture.md.
 
     from mechanisms import load_preset
     from solvers import solve

@@ -20,12 +20,9 @@ OUT = ROOT / "tests" / "data" / "numbers.json"
 COMMANDS = ("solve", "plan", "forces", "structure")
 
 
-def _main():  # the command line's entry, wherever the move puts it
+def _main():
     sys.path.insert(0, str(ROOT))
-    try:
-        from cli import main
-    except ImportError:
-        from solvers.cli import main
+    from cli import main
     return main
 
 

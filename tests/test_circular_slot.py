@@ -10,9 +10,9 @@ import pytest
 from figures.linkage import mechanism_traces, pose
 from mechanisms import SceneError, load_preset, parse_document
 from mechanisms.writer import to_text
+from reports.values import exact_values
 from solvers.diagnostics import solve_instant
 from solvers.kinematics import solve
-from solvers.report import exact_values
 
 STEP = 1e-5  # rad of the crank, for the finite differences
 
@@ -92,7 +92,7 @@ def test_a_wrong_slot_is_refused_with_the_reason(change, message):
 
 def test_the_plans_cross_the_slot_the_books_way():
     """v_B₄ = v_B + v_B₄B (⊥ B₄H) = v_C + v_B₄C, and a_B₄ = a_B + a^k + a^n (v²/R) + a^t."""
-    from solvers.plans import build
+    from methods.plans import build
 
     scene = load_preset("zbirka-2.3")
     m = solve(scene, [scene.driver.at], order=2)

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from mechanisms import load_preset
-from solvers.compass import construction
+from methods.compass import construction
 from solvers.kinematics import solve
 from solvers.paths import cycle_values
 

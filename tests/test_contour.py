@@ -8,7 +8,7 @@ import pytest
 
 from mechanisms import load_preset
 from mechanisms.loader import preset_ids
-from solvers.contour import contour, free_points, latex, values
+from methods.contour import contour, free_points, latex, values
 from solvers.kinematics import solve
 
 

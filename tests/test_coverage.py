@@ -5,7 +5,7 @@ from collections import Counter
 
 from mechanisms import load_preset, preset_ids
 from mechanisms.coverage import tasks
-from solvers.textbook import check
+from reports.textbook import check
 from ui.i18n import t
 
 from .test_pages import page

@@ -150,7 +150,7 @@ def test_nearly_parallel_guides(delta):
 def test_a_special_point_at_infinity_is_labelled_not_a_number():
     """Where the two binary lines of a class III group are parallel, S is at infinity: NaN
     in the arrays, null in the JSON, never a huge finite number."""
-    from solvers.report import motion_json
+    from reports.values import motion_json
 
     scene = load_preset("triad-full-turn")
     phi = np.linspace(0.0, 2 * math.pi, 3601)

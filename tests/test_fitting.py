@@ -8,8 +8,8 @@ import pytest
 from mechanisms import SceneError, load_preset, parse_document, preset_ids
 from mechanisms.loader import preset_document
 from mechanisms.writer import to_text
-from solvers.fitting import refit
-from solvers.textbook import PRECISION, check
+from reports.fitting import refit
+from reports.textbook import PRECISION, check
 
 FITTED = [pid for pid in preset_ids("linkage") if load_preset(pid).fit]
 

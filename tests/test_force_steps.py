@@ -9,10 +9,9 @@ import pytest
 from mechanisms import load_preset
 from mechanisms.loader import preset_ids
 from mechanisms.schema import Force
-from solvers.force_steps import _Body, equation, steps
+from methods.force_steps import _Body, _together, equation, steps
+from methods.lever_steps import construction as lever_construction, latex as lever_latex
 from solvers.kinetostatics import analyse
-from solvers.lever_steps import construction as lever_construction
-from solvers.lever_steps import latex as lever_latex
 
 from .test_kinetostatics import loaded
 
@@ -114,7 +113,7 @@ def test_solving_a_body_all_at_once_gives_the_same_reactions():
     k = analyse(with_masses("four-bar-crank-rocker"))
     group = k.motion.structure.groups[0]
     body = _Body(k, 0, group.name, group.members, group.pairs, {})
-    step = body._together()
+    step = _together(body)
     assert step.kind == "together" and len(body.values) == len(body.unknowns)
     body.record()
     for (p, q), (force, _, _) in body.known.items():

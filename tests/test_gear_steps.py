@@ -1,4 +1,4 @@
-"""A gear train by hand, one unknown speed per equation (solvers.gear_steps), against the
+"""A gear train by hand, one unknown speed per equation (methods.gear_steps), against the
 linear system of solvers.gears."""
 
 import math
@@ -6,7 +6,7 @@ import math
 import pytest
 
 from mechanisms import load_preset, parse_document, preset_ids
-from solvers.gear_steps import speed_steps, total_ratio
+from methods.gear_steps import speed_steps, total_ratio
 from solvers.gears import solve_train, stages
 
 

@@ -12,15 +12,14 @@ import tomllib
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
+from hypothesis import HealthCheck, given, settings, strategies as st
 
+from cli import main
 from mechanisms import SceneError, parse_document, preset_ids
 from mechanisms.gears import GearTrain
 from mechanisms.loader import PRESETS as PRESET_DIR
 from mechanisms.rotor import Rotor
 from solvers.balancing import BalanceError, balance
-from solvers.cli import main
 from solvers.diagnostics import Unsolvable, solve_instant
 from solvers.gears import TrainError, solve_train
 from solvers.kinetostatics import SINGULAR, analyse
@@ -74,9 +73,9 @@ def use(scene) -> None:
 
 def from_raw(raw: dict):
     """Load a scene from an already parsed table, through the same entry as a file."""
+    from mechanisms.gears import parse_gears
     from mechanisms.loader import _build
     from mechanisms.reader import Reader
-    from mechanisms.gears import parse_gears
     from mechanisms.rotor import parse_rotor
 
     kind = raw.get("kind", "linkage")
@@ -231,11 +230,12 @@ def test_the_largest_allowed_linkage_still_solves_and_its_page_shows_it():
 
 
 def test_a_page_given_an_oversized_scene_in_a_link_says_the_limit_and_no_exception():
+    import base64
+    import zlib
+
     from streamlit.testing.v1 import AppTest
 
     from mechanisms.link import _DICTIONARY  # build the link by hand: encode needs a Scene
-    import base64
-    import zlib
 
     from .test_pages import ROOT
 

@@ -8,14 +8,13 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import assume, given
-from hypothesis import strategies as st
+from hypothesis import assume, given, strategies as st
 
+from cli import main
 from mechanisms import load_preset
 from mechanisms.schema import Force, Moment, Scene
-from solvers.cli import main
+from reports.textbook import check
 from solvers.kinetostatics import analyse, free_body
-from solvers.textbook import check
 
 from . import scenes
 from .test_properties import SETTINGS, angle, mechanisms

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from mechanisms import load_preset
-from solvers.analytic import equations
+from methods.analytic import equations
 from solvers.diagnostics import solve_instant
 from solvers.kinematics import solve
 

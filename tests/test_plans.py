@@ -12,10 +12,10 @@ import pytest
 from figures.plans import layout_plan, plan_svg
 from mechanisms import load_preset, preset_ids
 from mechanisms.schema import Scene
-from solvers.analytic import equations
+from methods.analytic import equations
+from methods.plans import POLE, build, readings
 from solvers.diagnostics import solve_instant
 from solvers.kinematics import solve
-from solvers.plans import POLE, build, readings
 from solvers.structure import StructureError, decompose
 
 CLASS_III = {"zbirka-4.1", "zbirka-4.2", "zbirka-4.3", "triad-full-turn"}  # drawn through S
@@ -252,7 +252,7 @@ def test_velocity_images_scale_with_omega_and_accelerations_with_its_square():
 def test_the_squared_and_added_position_equation_has_the_solutions_root(pid):
     """Each group's derivation ends on two roots, and the chosen one is the solver's value (to
     the printed five digits)."""
-    from solvers.analytic import derivation
+    from methods.analytic import derivation
 
     scene = load_preset(pid)
     motion = solve(scene, [scene.driver.at], order=2)
@@ -280,7 +280,7 @@ def test_the_other_root_is_the_other_assembly():
     rocker when the group is assembled the other way."""
     import dataclasses
 
-    from solvers.analytic import derivation
+    from methods.analytic import derivation
 
     scene = load_preset("analitika-2.1")
     motion = solve(scene, [scene.driver.at], order=2)

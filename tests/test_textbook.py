@@ -6,7 +6,7 @@ import math
 import pytest
 
 from mechanisms import load_preset
-from solvers.textbook import check, printed_unit, verdict
+from reports.textbook import check, printed_unit, verdict
 
 
 def test_the_printed_precision_is_read_from_the_number():
@@ -39,7 +39,7 @@ def test_a_slip_the_book_made_is_reproduced_by_its_own_formula():
     """2.3: the book divides a_D by DC where ε₄ needs the tangential part; repeating that on
     the exact a_D gives the printed value, so the layout is right and the arithmetic is not."""
     from mechanisms import load_preset
-    from solvers.textbook import check
+    from reports.textbook import check
 
     scene = load_preset("zbirka-2.3")
     row = {r.key: r for r in check(scene)}["members.4.epsilon"]
@@ -86,9 +86,9 @@ def test_a_slip_must_name_a_printed_value():
 def test_chapter_5s_lever_arms_and_reaction_parts_are_read_off_the_solved_figure():
     """arms.G_5.F: G_5 acts straight down at S5, so its arm about F is their horizontal
     distance; reactions.4-5.normal/tangential split F_45 along D→F and across it."""
+    from reports.values import exact_values
     from solvers.diagnostics import solve_instant
     from solvers.kinetostatics import analyse
-    from solvers.report import exact_values
 
     scene = load_preset("zbirka-5.1")
     exact = exact_values(scene)

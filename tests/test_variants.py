@@ -9,16 +9,16 @@ import re
 import numpy as np
 import pytest
 
+from exams.codes import CHECK_LETTERS, Settings, code, parse
+from exams.variants import VariantError, as_json, from_code, generate, task
+from exams.variation import givens
 from mechanisms import SceneError, load_preset
-from mechanisms.codes import CHECK_LETTERS, Settings, code, parse
-from mechanisms.variation import givens
-from solvers import variants
+from reports.values import exact_values
+from exams import variants
 from solvers.balancing import balance
 from solvers.diagnostics import solve_instant
 from solvers.kinematics import solve
-from solvers.report import exact_values
 from solvers.structure import decompose
-from solvers.variants import VariantError, as_json, from_code, generate, task
 
 from .test_cli import run
 

@@ -3,9 +3,9 @@ mechanism drawn in true centimetres at U_L; and a student's variant link on a li
 
 import re
 
-from mechanisms.codes import Settings
-from figures.sheets import sheets_html
-from solvers.variants import generate
+from exams.codes import Settings
+from exams.sheets import sheets_html
+from exams.variants import generate
 
 from .test_browser import open_page, wait_url
 

@@ -5,8 +5,8 @@ import math
 
 import pytest
 
-from mechanisms.codes import Settings
-from solvers.variants import generate, task
+from exams.codes import Settings
+from exams.variants import generate, task
 from ui.i18n import LANGUAGES, t
 
 from .test_pages import page

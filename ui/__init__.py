@@ -1,6 +1,7 @@
-"""The chapter pages, routed by ``st.navigation`` in app.py.
+"""What the chapter pages share: strings and languages, cached solving, the scene picker,
+URL state and the chart element.
 
-Streamlit still treats a folder named ``pages/`` beside the main script as a legacy
+Importing it also settles how the pages are routed. Streamlit still treats a folder named ``pages/`` beside the main script as a legacy
 multipage app until the first script run calls ``st.navigation``. When a user's very first
 visit opens a chapter URL directly, that run would show the legacy page list (every module
 in this folder). So the first import in the process switches the legacy mode off and reruns

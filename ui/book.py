@@ -6,7 +6,7 @@ import pandas as pd
 import streamlit as st
 
 from mechanisms.coverage import tasks
-from solvers.textbook import PRECISION, BookRow, check
+from reports.textbook import PRECISION, BookRow, check
 from ui.export import show_table
 from ui.i18n import current, num, t
 

@@ -8,13 +8,13 @@ import math
 
 import streamlit as st
 
+from exams.codes import parse
+from exams.variants import VariantError, from_code
 from mechanisms import Scene, SceneError, parse_document, preset_ids
 from mechanisms.gears import GearTrain
-from mechanisms.codes import parse
 from mechanisms.link import PARAMETER, decode, encode
 from mechanisms.rotor import Rotor
 from mechanisms.writer import to_text
-from solvers.variants import VariantError, from_code
 from ui.cache import preset
 from ui.chapters import page_for
 from ui.i18n import current, note_of, source_of, t, title_of

@@ -14,9 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from mechanisms.schema import DRIVER, FRAME, Scene
-
-from .kinematics import solve
-from .structure import Structure, decompose
+from solvers.kinematics import solve
+from solvers.structure import Structure, decompose
 
 
 def fourbar_closed_form(o, d, r2, r3, r4, phi2, omega2, eps2, sign):

@@ -22,17 +22,16 @@ is left is solved all at once, and the step says so.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 import re
+from dataclasses import dataclass, field
 from itertools import combinations
 
 import numpy as np
 
 from mechanisms.schema import DRIVER, Pair
-
-from .kinetostatics import Kinetostatics
-from .loops import cross
-from .state import value_at
+from solvers.kinetostatics import Kinetostatics
+from solvers.loops import cross
+from solvers.state import value_at
 
 ZERO = 1e-9  # a lever arm or determinant this small (relative to the body's size) is zero
 
@@ -109,7 +108,7 @@ def steps(k: Kinetostatics, index: int = 0) -> Construction:
         else:
             group = groups[name]
             body = _Body(k, index, name, group.members, group.pairs, known)
-        out += body.solve()
+        out += _solve(body)
         body.record()
         if name == "driver":
             driving = body.values[len(body.unknowns) - 1]
@@ -142,43 +141,8 @@ class _Body:
         self.size = max([abs(a - b) for a, b in combinations(self.position.values(), 2)] + [1e-9])
         self.unknowns: list[Unknown] = []
         for pair in pairs:
-            self.unknowns += self._pair_unknowns(pair)
+            self.unknowns += _pair_unknowns(self, pair)
         self.values: dict[int, float] = {}
-
-    # --- the unknowns -------------------------------------------------------------------
-
-    def _pair_unknowns(self, pair: Pair) -> list[Unknown]:
-        """Two unknown scalars per pair, as actions of the member outside the body (or of
-        the pair's first member) on the member inside."""
-        a, b = pair.members
-        inner = a in self.members and b in self.members
-        by, on = (a, b) if inner or b in self.members else (b, a)
-        scene, bodies = self.k.motion.scene, self.k.motion.bodies
-        point = complex(value_at(bodies[b].position(scene.points_of(b)[pair.point]), self.index))
-        name = f"F_{by}{on}"
-        if pair.kind == "prismatic":
-            normal = 1j * complex(value_at(np.exp(1j * pair.angle) * bodies[a].rot, self.index))
-            return [Unknown(name, "N", pair, by, on, normal, point),
-                    Unknown(f"{name}·h_{by}{on}", "Fh", pair, by, on, 0j, point, 1.0)]
-        towards = None if inner else self._other_joint(on, pair, point)
-        if towards is None:  # the driver's pivot, an inner joint: the whole vector closes
-            return [Unknown(name, "x", pair, by, on, 1.0 + 0j, point),
-                    Unknown(name, "y", pair, by, on, 1j, point)]
-        n = (towards - point) / abs(towards - point)
-        return [Unknown(f"{name}^t", "t", pair, by, on, 1j * n, point),
-                Unknown(f"{name}^n", "n", pair, by, on, n, point)]
-
-    def _other_joint(self, member: int, pair: Pair, point: complex) -> complex | None:
-        """The member's next joint inside the group: the normal part points along the member
-        to it, so that the moment about it holds the tangential part alone."""
-        for other in self.pairs:
-            if other is not pair and member in other.members and other.kind == "revolute":
-                z = self.position.get((member, other.point))
-                if z is not None and abs(z - point) > ZERO * self.size:
-                    return z
-        return None
-
-    # --- equations: coefficients of the unknowns and the known terms --------------------
 
     def _actions(self, member: int) -> list[tuple[str, complex, complex | None, float]]:
         """Every known action on ``member`` as (name, force, point, couple): loads, couples,
@@ -240,133 +204,17 @@ class _Body:
                                point=None if u.force == 0 else u.point)
         return list(out.values())
 
-    # --- the construction ----------------------------------------------------------------
-
-    def solve(self) -> list[Step]:
-        out: list[Step] = []
-        while len(self.values) < len(self.unknowns):
-            step = (self._moment_step(parts=("t", "drive")) or self._polygon_step(self.members)
-                    or self._special_point_step()
-                    or next((s for m in self.members if (s := self._polygon_step((m,)))), None)
-                    or self._moment_step(parts=None) or self._two_moments_step()
-                    or self._together())
-            out += step if isinstance(step, list) else [step]
-        return out
-
-    def _points(self, member: int) -> dict[str, complex]:
-        """The member's pair points in this body (their letters): moments are taken about them."""
-        return {p.point: self.position[(member, p.point)] for p in self.pairs
-                if member in p.members and (member, p.point) in self.position}
-
-    def _moment_step(self, parts) -> Step | None:
-        for m in self.members:
-            for letter, about in self._points(m).items():
-                coef, terms = self.moment((m,), about)
-                left = self._open(coef, moment=True)
-                if len(left) == 1 and (parts is None or self.unknowns[left[0]].part in parts):
-                    return self._moment_found((m,), letter, coef, terms, left[0], about)
-        return None
-
-    def _two_moments_step(self) -> Step | None:
-        """Two members' moments about their own joints that share the same two unknowns (a
-        block on a guide: the force across the guide and its couple F·h), solved together."""
-        equations = [(m, letter, *self.moment((m,), about)) for m in self.members
-                     for letter, about in self._points(m).items()]
-        for (m1, p1, c1, t1), (m2, p2, c2, t2) in combinations(equations, 2):
-            left = self._open(c1, moment=True)
-            if m1 == m2 or len(left) != 2 or left != self._open(c2, moment=True):
-                continue
-            a = np.array([[c1[j] for j in left], [c2[j] for j in left]])
-            if abs(np.linalg.det(a)) < 1e-6 * np.abs(a).max() ** 2:
-                continue
-            rests = [self._rest(c, sum(t.moment for t in ts)).real for c, ts in ((c1, t1), (c2, t2))]
-            x = np.linalg.solve(a, -np.array(rests))
-            solved = [self._solved(c, (m,), moment=True) for c, m in ((c1, m1), (c2, m2))]
-            self.values.update(dict(zip(left, x)))
-            names = self._found(left)
-            first = Step(self.name, "moment", (m1,), p1, t1 + solved[0] + [
-                self._found_term(j, c1[j]) for j in left], {}, at=self.position[(m1, p1)])
-            return [first, Step(self.name, "moment", (m2,), p2, t2 + solved[1] + [
-                self._found_term(j, c2[j]) for j in left], names, at=self.position[(m2, p2)])]
-        return None
-
-    def _special_point_step(self) -> Step | None:
-        """The moment of the whole body about the point where two unknown lines meet."""
-        lines = [j for j, u in enumerate(self.unknowns) if j not in self.values
-                 and u.part in ("n", "N", "t") and not self._inside(u, self.members)]
-        for a, b in combinations(lines, 2):
-            ua, ub = self.unknowns[a], self.unknowns[b]
-            det = cross(ua.force, ub.force) / abs(ua.force * ub.force)
-            if abs(det) < 1e-6:  # parallel: they meet far away, if at all
-                continue
-            about = ua.point + cross(ub.point - ua.point, ub.force) / cross(ua.force, ub.force) * ua.force
-            coef, terms = self.moment(self.members, about)
-            left = self._open(coef, moment=True)
-            if len(left) == 1:
-                return self._moment_found(self.members, "S", coef, terms, left[0], about)
-        return None
-
-    def _moment_found(self, body, letter, coef, terms, j, about: complex) -> Step:
-        known = sum(t.moment for t in terms)
-        value = -float(self._rest(coef, known).real) / coef[j]
-        solved = self._solved(coef, body, moment=True)
-        self.values[j] = value
-        return Step(self.name, "moment", body, letter,
-                    terms + solved + [self._found_term(j, coef[j])], self._found([j]), at=about)
-
-    def _found_term(self, j: int, arm: float) -> Term:
+    def found_term(self, j: int, arm: float) -> Term:
         """An unknown of a moment equation: its lever arm, and the force it was found to be."""
         u = self.unknowns[j]
         return Term(u.name, u.force * self.values[j], arm, unknown=True,
                     point=None if u.force == 0 else u.point)
 
-    def _polygon_step(self, body: tuple[int, ...]) -> Step | None:
-        coef, terms = self.polygon(body)
-        left = self._open(coef, moment=False)
-        if len(left) != 2:
-            return None
-        a, b = (coef[j] for j in left)
-        det = cross(a, b)
-        if abs(det) < 1e-6 * abs(a) * abs(b):  # parallel: the polygon cannot close
-            return None
-        solved = self._solved(coef, body, moment=False)
-        rest = -complex(self._rest(coef, sum((t.force for t in terms), 0j)))
-        x, y = cross(rest, b) / det, cross(a, rest) / det  # rest = x·a + y·b
-        self.values.update({left[0]: x, left[1]: y})
-        closing = self._closing(left, coef)
-        found = ({closing[0][0]: (abs(closing[0][1]), "N")} if len(closing) == 1
-                 else self._found(left))
-        return Step(self.name, "polygon", body, "", terms + solved, found, closing)
-
-    def _closing(self, left: list[int], coef) -> list[tuple[str, complex]]:
-        """The polygon's closing sides: two parts, or one whole vector (x and y of a pair)."""
-        us = [self.unknowns[j] for j in left]
-        if us[0].name == us[1].name:
-            return [(us[0].name, complex(sum(coef[j] * self.values[j] for j in left)))]
-        return [(self.unknowns[j].name, complex(coef[j] * self.values[j])) for j in left]
-
-    def _together(self) -> Step:
-        """Every remaining unknown from all the body's equations at once (least squares of a
-        consistent system), when no equation with one or two unknowns is left."""
-        rows, rhs = [], []
-        for m in self.members:
-            coef, terms = self.polygon((m,))
-            rest = self._rest(coef, sum((t.force for t in terms), 0j))
-            rows += [coef.real, coef.imag]
-            rhs += [-rest.real, -rest.imag]
-            coef, terms = self.moment((m,), next(iter(self._points(m).values())))
-            rows.append(coef / self.size)
-            rhs.append(-self._rest(coef, sum(t.moment for t in terms)).real / self.size)
-        left = [j for j in range(len(self.unknowns)) if j not in self.values]
-        x = np.linalg.lstsq(np.array(rows)[:, left], np.array(rhs), rcond=None)[0]
-        self.values.update(dict(zip(left, x)))
-        return Step(self.name, "together", self.members, "", [], self._found(left))
-
-    def _found(self, found: list[int]) -> dict[str, tuple[float, str]]:
+    def found(self, indices: list[int]) -> dict[str, tuple[float, str]]:
         """Each unknown found, with its unit: a couple F·h or a torque in N·m, else N (the
         x and y of one reaction are added up into its magnitude)."""
         out: dict[str, tuple[float, str]] = {}
-        for j in found:
+        for j in indices:
             u = self.unknowns[j]
             if u.part in ("x", "y"):
                 whole = sum(v.force * self.values[i] for i, v in enumerate(self.unknowns)
@@ -387,6 +235,170 @@ class _Body:
         for (p, q), (f, z, c) in by_pair.items():
             self.known[(p, q)] = (f, z, c)
             self.known[(q, p)] = (-f, z, -c)
+
+
+# --- one pair's unknowns -----------------------------------------------------------------
+
+def _pair_unknowns(body: _Body, pair: Pair) -> list[Unknown]:
+    """Two unknown scalars per pair, as actions of the member outside the body (or of
+    the pair's first member) on the member inside."""
+    a, b = pair.members
+    inner = a in body.members and b in body.members
+    by, on = (a, b) if inner or b in body.members else (b, a)
+    scene, bodies = body.k.motion.scene, body.k.motion.bodies
+    point = complex(value_at(bodies[b].position(scene.points_of(b)[pair.point]), body.index))
+    name = f"F_{by}{on}"
+    if pair.kind == "prismatic":
+        normal = 1j * complex(value_at(np.exp(1j * pair.angle) * bodies[a].rot, body.index))
+        return [Unknown(name, "N", pair, by, on, normal, point),
+                Unknown(f"{name}·h_{by}{on}", "Fh", pair, by, on, 0j, point, 1.0)]
+    towards = None if inner else _other_joint(body, on, pair, point)
+    if towards is None:  # the driver's pivot, an inner joint: the whole vector closes
+        return [Unknown(name, "x", pair, by, on, 1.0 + 0j, point),
+                Unknown(name, "y", pair, by, on, 1j, point)]
+    n = (towards - point) / abs(towards - point)
+    return [Unknown(f"{name}^t", "t", pair, by, on, 1j * n, point),
+            Unknown(f"{name}^n", "n", pair, by, on, n, point)]
+
+
+def _other_joint(body: _Body, member: int, pair: Pair, point: complex) -> complex | None:
+    """The member's next joint inside the group: the normal part points along the member
+    to it, so that the moment about it holds the tangential part alone."""
+    for other in body.pairs:
+        if other is not pair and member in other.members and other.kind == "revolute":
+            z = body.position.get((member, other.point))
+            if z is not None and abs(z - point) > ZERO * body.size:
+                return z
+    return None
+
+
+# --- the construction: which equation has a single unknown left ---------------------------
+
+def _solve(body: _Body) -> list[Step]:
+    """The book's order: the simplest equation with a single unknown left, until none is."""
+    out: list[Step] = []
+    while len(body.values) < len(body.unknowns):
+        step = (_moment_step(body, parts=("t", "drive")) or _polygon_step(body, body.members)
+                or _special_point_step(body)
+                or next((s for m in body.members if (s := _polygon_step(body, (m,)))), None)
+                or _moment_step(body, parts=None) or _two_moments_step(body)
+                or _together(body))
+        out += step if isinstance(step, list) else [step]
+    return out
+
+
+def _points(body: _Body, member: int) -> dict[str, complex]:
+    """The member's pair points in this body (their letters): moments are taken about them."""
+    return {p.point: body.position[(member, p.point)] for p in body.pairs
+            if member in p.members and (member, p.point) in body.position}
+
+
+def _moment_step(body: _Body, parts) -> Step | None:
+    """A member's moment about one of its joints with a single unknown (of ``parts``) left."""
+    for m in body.members:
+        for letter, about in _points(body, m).items():
+            coef, terms = body.moment((m,), about)
+            left = body._open(coef, moment=True)
+            if len(left) == 1 and (parts is None or body.unknowns[left[0]].part in parts):
+                return _moment_found(body, (m,), letter, coef, terms, left[0], about)
+    return None
+
+
+def _two_moments_step(body: _Body) -> Step | None:
+    """Two members' moments about their own joints that share the same two unknowns (a
+    block on a guide: the force across the guide and its couple F·h), solved together."""
+    equations = [(m, letter, *body.moment((m,), about)) for m in body.members
+                 for letter, about in _points(body, m).items()]
+    for (m1, p1, c1, t1), (m2, p2, c2, t2) in combinations(equations, 2):
+        left = body._open(c1, moment=True)
+        if m1 == m2 or len(left) != 2 or left != body._open(c2, moment=True):
+            continue
+        a = np.array([[c1[j] for j in left], [c2[j] for j in left]])
+        if abs(np.linalg.det(a)) < 1e-6 * np.abs(a).max() ** 2:
+            continue
+        rests = [body._rest(c, sum(t.moment for t in ts)).real for c, ts in ((c1, t1), (c2, t2))]
+        x = np.linalg.solve(a, -np.array(rests))
+        solved = [body._solved(c, (m,), moment=True) for c, m in ((c1, m1), (c2, m2))]
+        body.values.update(dict(zip(left, x)))
+        names = body.found(left)
+        first = Step(body.name, "moment", (m1,), p1, t1 + solved[0] + [
+            body.found_term(j, c1[j]) for j in left], {}, at=body.position[(m1, p1)])
+        return [first, Step(body.name, "moment", (m2,), p2, t2 + solved[1] + [
+            body.found_term(j, c2[j]) for j in left], names, at=body.position[(m2, p2)])]
+    return None
+
+
+def _special_point_step(body: _Body) -> Step | None:
+    """The moment of the whole body about the point where two unknown lines meet."""
+    lines = [j for j, u in enumerate(body.unknowns) if j not in body.values
+             and u.part in ("n", "N", "t") and not body._inside(u, body.members)]
+    for a, b in combinations(lines, 2):
+        ua, ub = body.unknowns[a], body.unknowns[b]
+        det = cross(ua.force, ub.force) / abs(ua.force * ub.force)
+        if abs(det) < 1e-6:  # parallel: they meet far away, if at all
+            continue
+        about = ua.point + cross(ub.point - ua.point, ub.force) / cross(ua.force, ub.force) * ua.force
+        coef, terms = body.moment(body.members, about)
+        left = body._open(coef, moment=True)
+        if len(left) == 1:
+            return _moment_found(body, body.members, "S", coef, terms, left[0], about)
+    return None
+
+
+def _moment_found(body: _Body, members, letter, coef, terms, j, about: complex) -> Step:
+    """A moment equation with one unknown left: solve it and record the step."""
+    known = sum(t.moment for t in terms)
+    value = -float(body._rest(coef, known).real) / coef[j]
+    solved = body._solved(coef, members, moment=True)
+    body.values[j] = value
+    return Step(body.name, "moment", members, letter,
+                terms + solved + [body.found_term(j, coef[j])], body.found([j]), at=about)
+
+
+def _polygon_step(body: _Body, members: tuple[int, ...]) -> Step | None:
+    """The force polygon of ``members`` when it closes with two unknown parts."""
+    coef, terms = body.polygon(members)
+    left = body._open(coef, moment=False)
+    if len(left) != 2:
+        return None
+    a, b = (coef[j] for j in left)
+    det = cross(a, b)
+    if abs(det) < 1e-6 * abs(a) * abs(b):  # parallel: the polygon cannot close
+        return None
+    solved = body._solved(coef, members, moment=False)
+    rest = -complex(body._rest(coef, sum((t.force for t in terms), 0j)))
+    x, y = cross(rest, b) / det, cross(a, rest) / det  # rest = x·a + y·b
+    body.values.update({left[0]: x, left[1]: y})
+    closing = _closing(body, left, coef)
+    found = ({closing[0][0]: (abs(closing[0][1]), "N")} if len(closing) == 1
+             else body.found(left))
+    return Step(body.name, "polygon", members, "", terms + solved, found, closing)
+
+
+def _closing(body: _Body, left: list[int], coef) -> list[tuple[str, complex]]:
+    """The polygon's closing sides: two parts, or one whole vector (x and y of a pair)."""
+    us = [body.unknowns[j] for j in left]
+    if us[0].name == us[1].name:
+        return [(us[0].name, complex(sum(coef[j] * body.values[j] for j in left)))]
+    return [(body.unknowns[j].name, complex(coef[j] * body.values[j])) for j in left]
+
+
+def _together(body: _Body) -> Step:
+    """Every remaining unknown from all the body's equations at once (least squares of a
+    consistent system), when no equation with one or two unknowns is left."""
+    rows, rhs = [], []
+    for m in body.members:
+        coef, terms = body.polygon((m,))
+        rest = body._rest(coef, sum((t.force for t in terms), 0j))
+        rows += [coef.real, coef.imag]
+        rhs += [-rest.real, -rest.imag]
+        coef, terms = body.moment((m,), next(iter(_points(body, m).values())))
+        rows.append(coef / body.size)
+        rhs.append(-body._rest(coef, sum(t.moment for t in terms)).real / body.size)
+    left = [j for j in range(len(body.unknowns)) if j not in body.values]
+    x = np.linalg.lstsq(np.array(rows)[:, left], np.array(rhs), rcond=None)[0]
+    body.values.update(dict(zip(left, x)))
+    return Step(body.name, "together", body.members, "", [], body.found(left))
 
 
 # --- the steps as the book writes them ------------------------------------------------------

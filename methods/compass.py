@@ -18,8 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from mechanisms.schema import DRIVER, FRAME, Scene
-
-from .kinematics import Motion
+from solvers.kinematics import Motion
 
 POSITIONS = 12
 

@@ -1,7 +1,7 @@
 """Exam and homework variants of a task, each a good exercise, with its answer key.
 
 A lecturer asks for N variants of a preset: the task's given numbers are drawn around the
-book's (``mechanisms.variation``) and each candidate is kept only when it is a good
+book's (``exams.variation``) and each candidate is kept only when it is a good
 exercise — it assembles at the asked instant; no group is near a dead centre there; it is
 reached from the task's own numbers without passing a dead centre, so every group keeps
 the task's branch; it runs the whole cycle when the task's mechanism does; a gear train's
@@ -20,21 +20,20 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from exams.codes import MAX_SEED, Settings, code, parse
+from exams.variation import Given, VariationError, apply, givens
 from mechanisms import SceneError
-from mechanisms.codes import MAX_SEED, Settings, code, parse
 from mechanisms.gears import GearTrain
 from mechanisms.loader import build_document, preset_document
 from mechanisms.rotor import Rotor
 from mechanisms.schema import Scene
-from mechanisms.variation import Given, VariationError, apply, givens
 from mechanisms.writer import to_text
-
-from .balancing import balance, graphical_error
-from .diagnostics import Unsolvable, solve_instant
-from .kinematics import Motion, solve
-from .plans import build, readings
-from .report import exact_values
-from .structure import StructureError
+from methods.plans import build, readings
+from reports.values import exact_values
+from solvers.balancing import balance, graphical_error
+from solvers.diagnostics import Unsolvable, solve_instant
+from solvers.kinematics import Motion, solve
+from solvers.structure import StructureError
 
 MAX_COUNT = 200  # a class of students; more is a mistake or an attack
 TRIES = 30  # candidates per asked variant before the ranges are declared too tight

@@ -20,10 +20,10 @@ from scipy.optimize import least_squares
 
 from mechanisms.loader import SceneError, build_document, preset_document
 from mechanisms.schema import Fit
+from solvers.budget import Unsolvable
+from solvers.structure import StructureError
 
-from .budget import Unsolvable
-from .report import exact_values
-from .structure import StructureError
+from .values import exact_values
 
 MISS = 10.0  # the misfit of a value where the trial mechanism does not assemble
 

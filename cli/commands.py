@@ -14,23 +14,21 @@ import json
 import sys
 from pathlib import Path
 
-from mechanisms import SceneError, Scene, load_any, load_preset, preset_ids
-
-from figures.sheets import sheets_html
-from mechanisms.codes import DEFAULT_SPREAD, Settings
+from exams import variants
+from exams.codes import DEFAULT_SPREAD, Settings
+from exams.sheets import sheets_html
+from exams.variants import MAX_COUNT
+from mechanisms import Scene, SceneError, load_any, load_preset, preset_ids
 from mechanisms.gears import GearTrain
 from mechanisms.link import PARAMETER, decode, encode
 from mechanisms.rotor import Rotor
-
-from .balancing import BalanceError, balance
-from .diagnostics import Unsolvable, explain_singular, solve_instant
-from .gears import TrainError, solve_train
-from .plans import build
-from .kinetostatics import analyse
-from .report import forces_json, gears_json, motion_json, plan_json, rotor_json
-from .structure import StructureError, decompose
-from . import variants
-from .variants import MAX_COUNT
+from methods.plans import build
+from reports.values import forces_json, gears_json, motion_json, plan_json, rotor_json
+from solvers.balancing import BalanceError, balance
+from solvers.diagnostics import Unsolvable, explain_singular, solve_instant
+from solvers.gears import TrainError, solve_train
+from solvers.kinetostatics import analyse
+from solvers.structure import StructureError, decompose
 
 
 def main(argv: list[str] | None = None) -> int:

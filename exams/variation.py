@@ -7,7 +7,7 @@ driven, force directions), so a variant is the same exercise with other numbers.
 are drawn within ± a spread around the book's and rounded to what the book prints:
 millimetres, whole degrees, whole teeth, two significant digits for speeds, masses and
 loads. The checks that make a variant a good exercise need the solvers: see
-``solvers.variants``.
+``exams.variants``.
 """
 
 from __future__ import annotations

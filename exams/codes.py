@@ -13,7 +13,7 @@ import re
 import zlib
 from dataclasses import dataclass
 
-from .loader import SceneError
+from mechanisms.loader import SceneError
 
 DEFAULT_SPREAD = 20  # ± % around the book's values
 CHECK_LETTERS = "ACDEFHJKLMNPRTUVWXY"  # no B/8, G/6, I/1, O/0, Q, S/5, Z/2 to confuse

@@ -18,11 +18,11 @@ import cmath
 from dataclasses import dataclass
 
 from mechanisms.schema import DRIVER
+from solvers.kinetostatics import Kinetostatics, LeverForce, centre_of_mass
+from solvers.loops import cross
+from solvers.state import value_at
 
 from .force_steps import latex_name, number, wrapped
-from .kinetostatics import Kinetostatics, LeverForce, centre_of_mass
-from .loops import cross
-from .state import value_at
 
 SAME = 1e-12  # m: a point of action this close to a lettered point is that point
 

@@ -14,11 +14,11 @@ from collections import deque
 from dataclasses import dataclass
 
 from mechanisms.schema import DRIVER, FRAME, Scene
+from solvers.kinematics import Motion
+from solvers.loops import Leg
+from solvers.state import value_at
 
 from .analytic import legs_latex
-from .state import value_at
-from .kinematics import Motion
-from .loops import Leg
 
 
 @dataclass(frozen=True)

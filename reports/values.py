@@ -9,15 +9,14 @@ import numpy as np
 
 from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
-
-from .balancing import Balance, balance
-from .diagnostics import Unsolvable, solve_instant
-from .gear_steps import speed_steps
-from .gears import TrainSolution, solve_train, stages
-from .kinematics import Motion
-from .kinetostatics import Kinetostatics, analyse
-from .plans import Plans, is_construction
-from .state import value_at
+from methods.gear_steps import speed_steps
+from methods.plans import Plans, is_construction
+from solvers.balancing import Balance, balance
+from solvers.diagnostics import Unsolvable, solve_instant
+from solvers.gears import TrainSolution, solve_train, stages
+from solvers.kinematics import Motion
+from solvers.kinetostatics import Kinetostatics, analyse
+from solvers.state import value_at
 
 
 def motion_json(motion: Motion) -> dict:
@@ -138,7 +137,7 @@ def gears_json(solution: TrainSolution, with_stages: bool = False) -> dict:
     """The solved train: ω of every member, ratios from each input (and any the book quotes),
     the named points' peripheral velocities and the degrees of freedom; with ``with_stages``
     each carrier's stage (``solvers.gears.stages``) and every member's speed in the book's
-    order (``solvers.gear_steps``)."""
+    order (``methods.gear_steps``)."""
     train = solution.train
     pairs = {(i.member, m) for i in train.inputs for m in train.members if m != i.member}
     pairs |= {tuple(int(x) for x in k.split(".")[1].split("-")) for k in train.book

@@ -22,7 +22,7 @@ from decimal import Decimal
 
 from mechanisms.formula import evaluate
 
-from .report import exact_values
+from .values import exact_values
 
 CLOSE = 0.03
 CLOSE_ANGLE = 2.0  # degrees

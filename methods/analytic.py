@@ -13,10 +13,9 @@ import math
 from dataclasses import dataclass
 
 from mechanisms.schema import FRAME, Scene
-
-from .kinematics import Motion
-from .loops import DyadLoop, Leg, build_loop
-from .structure import Group
+from solvers.kinematics import Motion
+from solvers.loops import DyadLoop, Leg, build_loop
+from solvers.structure import Group
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import html
 import math
 
-from solvers.variants import VariantSet, symbol
+from exams.variants import VariantSet, symbol
 
 WORDS = {
     "en": {"variant": "Variant", "name": "Name and index number", "given": "Given",
