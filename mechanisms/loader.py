@@ -17,6 +17,7 @@ from typing import Any
 
 from . import limits
 from .formula import formula_keys
+from .point_forms import FormError, form_of, local_point
 from .reader import Reader, SceneError, identity
 from .schema import DRIVER, FRAME, Driver, Fit, Force, Member, Moment, Pair, Scene, Travel
 
@@ -230,8 +231,12 @@ def _member(number: int, spec: dict, r: Reader, where: str) -> Member:
     extra = spec.get("extra", {})
     if not isinstance(extra, dict):
         raise r.fail(f"{where}.extra", "must be a table of points, e.g. { B = [0.45, 0.0] }")
+    forms = {}
     for name, value in extra.items():
-        z = r.vector(value, f"{where}.extra.{name}")
+        length = points[axis[1]].real if len(axis) == 2 else None
+        z = _extra_point(value, r, f"{where}.extra.{name}", length, f"point {name} of member {number}")
+        if isinstance(value, dict):
+            forms[name] = form_of(value)
         if name in points:
             raise r.fail(f"{where}.extra.{name}", "repeats a point of the member")
         for other, w in points.items():
@@ -247,7 +252,30 @@ def _member(number: int, spec: dict, r: Reader, where: str) -> Member:
         centre=None if centre is None else r.vector(centre, f"{where}.centre"),
         gyration=r.number(spec, "gyration", where, default=0.0, non_negative=True),
         label=r.text(spec, "label", where, default=""),
+        forms=forms,
     )
+
+
+def _extra_point(value: Any, r: Reader, where: str, length: float | None, who: str) -> complex:
+    """A member's extra point in any of its forms (mechanisms.point_forms): the shape of the
+    value checked here, with the file's messages; the geometry (a triangle that closes) there."""
+    if not isinstance(value, dict):
+        return r.vector(value, where)
+    form = form_of(value)
+    if form == "distances":
+        r.check_keys(value, {"distances", "side"}, where)
+        pair = r.vector(value["distances"], f"{where}.distances")
+        r.text(value, "side", where)
+    elif form == "polar":
+        r.check_keys(value, {"polar"}, where)
+        pair = r.vector(value["polar"], f"{where}.polar")
+    else:
+        raise r.fail(where, f"({who}) must be [along, left], {{ distances = [d1, d2], side = "
+                            f"\"left\" }} or {{ polar = [r, angle_deg] }}, got {value!r}")
+    try:
+        return local_point({**value, form: [pair.real, pair.imag]}, length)
+    except FormError as exc:
+        raise r.fail(where, f"({who}): {exc}") from None
 
 
 def _member_ref(value: Any, r: Reader, where: str, members: dict[int, Member]) -> int:

@@ -30,6 +30,8 @@ class Member:
     centre: complex | None = None  # centre of mass S in the member frame, m
     gyration: float = 0.0  # radius of gyration ρ about S, m
     label: str = ""
+    forms: dict[str, str] = field(default_factory=dict)  # extra point → "distances" or
+    # "polar" where the author gave it so (mechanisms.point_forms); else [along, left]
 
     @property
     def length(self) -> float | None:

@@ -23,6 +23,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
+from .point_forms import FORMS, FormError, every_form, form_of, local_point, written
 from .schema import DRIVER, FRAME, Scene
 from .writer import to_toml
 
@@ -32,11 +33,13 @@ COLUMNS = {
     "frame": ("point", "x", "y"),
     "members": ("member", "label", "first", "second", "length", "mass", "centre_along",
                 "centre_left", "gyration"),
-    "extra": ("member", "point", "along", "left"),
+    "extra": ("member", "point", "form", "along", "left", "d1", "d2", "side", "r", "theta"),
     "pairs": ("type", "p", "q", "point", "through", "angle", "slider_angle"),
     "forces": ("member", "point", "magnitude", "angle", "follows_member", "label"),
     "moments": ("member", "value"),
 }
+FORM_COLUMNS = {"offset": ("along", "left"), "distances": ("d1", "d2", "side"),
+                "polar": ("r", "theta")}  # a point's form is typed in these; the rest show it
 DRIVER_KEYS = ("type", "at", "speed", "accel")  # at: ° or m; speed: rad/s or m/s
 KEEP = ("id", "title", "title_sr", "source", "source_sr", "note", "note_sr", "gravity",
         "scales", "special")  # what the tables do not show, carried over unchanged
@@ -100,8 +103,8 @@ def tables(doc: dict) -> dict[str, list[dict]]:
             "member": int(number), "label": spec.get("label", ""), "first": axis[0],
             "second": axis[1], "length": spec.get("length"), "mass": spec.get("mass"),
             "centre_along": centre[0], "centre_left": centre[1], "gyration": spec.get("gyration")})
-        for name, (along, left) in spec.get("extra", {}).items():
-            out["extra"].append({"member": int(number), "point": name, "along": along, "left": left})
+        for name, value in spec.get("extra", {}).items():
+            out["extra"].append(_extra_row(int(number), name, value, spec))
     for p in doc.get("pairs", []):
         if p.get("type") == "prismatic":
             out["pairs"].append({"type": "prismatic", "p": p.get("guide"), "q": p.get("slider"),
@@ -157,8 +160,7 @@ def document(rows: Mapping[str, list[dict]], driver: Mapping[str, Any], base: di
         if _blank(r.get("member")) or _blank(r.get("point")):
             continue
         spec = members.setdefault(str(_int(r["member"])), {})
-        spec.setdefault("extra", {})[str(r["point"])] = [
-            _num(0.0 if _blank(r.get(k)) else r[k]) for k in ("along", "left")]
+        spec.setdefault("extra", {})[str(r["point"])] = _extra_value(r)
     doc["members"] = members
     doc["pairs"] = [_pair(r) for r in rows["pairs"] if not _blank(r.get("type"))]
     doc["forces"] = [{k: (_int(r[k]) if k == "member" else _num(r[k])) for k in COLUMNS["forces"]
@@ -172,6 +174,42 @@ def document(rows: Mapping[str, list[dict]], driver: Mapping[str, Any], base: di
     doc["guess"] = {k: v for k, v in base.get("guess", {}).items()
                     if any(k in _points_of(s) for s in members.values())}
     return doc
+
+
+def _extra_row(member: int, name: str, value: Any, spec: dict) -> dict:
+    """A member's point as a row: its form's cells as written, the other forms' cells
+    computed from them (blank where the point cannot be placed yet)."""
+    form = form_of(value)
+    row = {"member": member, "point": name, "form": form if form in FORMS else "offset",
+           **{k: None for k in COLUMNS["extra"][3:]}}
+    length = spec.get("length") if len(spec.get("points", [])) == 2 else None
+    try:
+        row.update(every_form(local_point(value, length), length))
+    except (FormError, TypeError, ValueError):
+        pass
+    if form == "distances":
+        (row["d1"], row["d2"]), row["side"] = _two(value.get("distances")), value.get("side")
+    elif form == "polar":
+        row["r"], row["theta"] = _two(value.get("polar"))
+    elif isinstance(value, list):
+        row["along"], row["left"] = _two(value)
+    return row
+
+
+def _two(value: Any) -> tuple[Any, Any]:
+    return tuple(value) if isinstance(value, list) and len(value) == 2 else (None, None)
+
+
+def _extra_value(r: Mapping[str, Any]) -> Any:
+    """A point row as the document writes it, in the row's form (blank numbers are 0 in the
+    offset form, and left blank in the others, for the loader to name)."""
+    form = r.get("form") if r.get("form") in FORMS else "offset"
+    if form == "distances":
+        return {"distances": [_num(r.get("d1")), _num(r.get("d2"))],
+                "side": "" if _blank(r.get("side")) else str(r["side"])}
+    if form == "polar":
+        return {"polar": [_num(r.get("r")), _num(r.get("theta"))]}
+    return [_num(0.0 if _blank(r.get(k)) else r[k]) for k in ("along", "left")]
 
 
 def _pair(r: Mapping[str, Any]) -> dict:
@@ -238,13 +276,11 @@ def drag(doc: dict, positions: Mapping[str, complex], rotations: Mapping[int, co
             spec["length"] = abs(now)
             turn[number] = cmath.exp(1j * _angle(now)) if now else turn[number]
             for name in spec.get("extra", {}):  # stays where it is drawn (unless dragged)
-                local = (new[name] - a) / turn[number]
-                spec["extra"][name] = [local.real, local.imag]
+                _move_extra(spec, name, (new[name] - a) / turn[number])
             if "centre" in spec:  # a mass property: follows the length, as with a slider
                 spec["centre"] = [c * factor for c in spec["centre"]]
         elif point in spec.get("extra", {}) and axis and axis[0] in new:
-            local = (to - new[axis[0]]) / turn[number]
-            spec["extra"][point] = [local.real, local.imag]
+            _move_extra(spec, point, (to - new[axis[0]]) / turn[number])
     for pair in doc.get("pairs", []):
         if pair.get("type") == "prismatic":
             g, s = pair["guide"], pair["slider"]
@@ -255,6 +291,17 @@ def drag(doc: dict, positions: Mapping[str, complex], rotations: Mapping[int, co
     _driver_follows(doc, new, turn)
     doc["guess"] = drawn(doc, new)
     return doc
+
+
+def _move_extra(spec: dict, name: str, local: complex) -> None:
+    """A member's point at a new local place, written in the form its row uses."""
+    old = spec["extra"][name]
+    form = form_of(old)
+    if form in ("distances", "polar"):
+        length = spec.get("length") if len(spec.get("points", [])) == 2 else None
+        spec["extra"][name] = written(form, local, length, old.get("side", "left"))
+    else:
+        spec["extra"][name] = [local.real, local.imag]
 
 
 def _onto_frame_guides(doc: dict, positions: Mapping[str, complex], point: str,

@@ -18,7 +18,8 @@ import math
 
 from .gears import GearTrain
 from .rotor import Rotor
-from .schema import Scene
+from .point_forms import written
+from .schema import Member, Scene
 
 
 def _s(text: str) -> str:
@@ -31,6 +32,19 @@ def _n(value: float) -> str:
 
 def _v(z: complex) -> str:
     return f"[{_n(z.real)}, {_n(z.imag)}]"
+
+
+def _point(member: Member, name: str, z: complex) -> str:
+    """An extra point in the form its author gave it (mechanisms.point_forms)."""
+    form = member.forms.get(name, "offset")
+    value = written(form, z, member.length) if form != "offset" else None
+    if isinstance(value, dict) and "distances" in value:
+        d1, d2 = value["distances"]
+        return f"{{ distances = [{_n(d1)}, {_n(d2)}], side = {_s(value['side'])} }}"
+    if isinstance(value, dict):
+        r, angle = value["polar"]
+        return f"{{ polar = [{_n(r)}, {_n(angle)}] }}"
+    return _v(z)
 
 
 def _identity(scene) -> list[str]:
@@ -81,7 +95,8 @@ def to_toml(scene: Scene) -> str:
         out.append("points = [" + ", ".join(_s(p) for p in m.axis) + "]")
         if m.length is not None:
             out.append(f"length = {_n(m.length)}")
-        extra = [f"{name} = {_v(z)}" for name, z in m.points.items() if name not in m.axis]
+        extra = [f"{name} = {_point(m, name, z)}" for name, z in m.points.items()
+                 if name not in m.axis]
         if extra:
             out.append("extra = { " + ", ".join(extra) + " }")
         if m.mass:
