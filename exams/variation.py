@@ -79,9 +79,8 @@ def _linkage(doc: dict) -> list[Given]:
         if "length" in m:
             out.append(Given(("members", number, "length"), m["length"], "length", "m",
                              "".join(m["points"])))
-        for name, (x, y) in m.get("extra", {}).items():
-            out += [Given(("members", number, "extra", name, 0), x, "length", "m", f"x{number}_{name}"),
-                    Given(("members", number, "extra", name, 1), y, "length", "m", f"y{number}_{name}")]
+        for name, value in m.get("extra", {}).items():
+            out += _extra_givens(number, m, name, value)
     driver = doc["driver"]
     if driver["type"] == "rotating":
         out += [Given(("driver", "at"), driver["at"], "angle", "°", "φ₂"),
@@ -101,6 +100,24 @@ def _linkage(doc: dict) -> list[Given]:
     for i, m in enumerate(doc.get("moments", [])):
         out.append(Given(("moments", i, "value"), m["value"], "value", "N·m", f"M{m['member']}"))
     return out
+
+
+def _extra_givens(number: str, m: dict, name: str, value) -> list[Given]:
+    """A member's point as the task gives it: its offsets, the triangle's two sides, or a
+    length and an angle (mechanisms.point_forms)."""
+    at = ("members", number, "extra", name)
+    first, *second = m.get("points", ["?"])
+    if isinstance(value, dict) and "distances" in value:
+        d1, d2 = value["distances"]
+        return [Given((*at, "distances", 0), d1, "length", "m", f"{first}{name}"),
+                Given((*at, "distances", 1), d2, "length", "m", f"{(second or ['?'])[0]}{name}")]
+    if isinstance(value, dict) and "polar" in value:
+        r, angle = value["polar"]
+        return [Given((*at, "polar", 0), r, "length", "m", f"{first}{name}"),
+                Given((*at, "polar", 1), angle, "angle", "°", f"∠{name}{number}")]
+    x, y = value
+    return [Given((*at, 0), x, "length", "m", f"x{number}_{name}"),
+            Given((*at, 1), y, "length", "m", f"y{number}_{name}")]
 
 
 def _rotor(doc: dict) -> list[Given]:

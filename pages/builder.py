@@ -26,12 +26,14 @@ from ui.scenes import read_upload, scene_download
 LINKAGE_PAGES = [c for c in CHAPTERS if c.file in (
     "pages/trajectories.py", "pages/velocity_plans.py", "pages/assur_groups.py",
     "pages/kinetostatics.py")]
-TEXT = {"point", "label", "first", "second", "through", "type"}
+TEXT = {"point", "label", "first", "second", "through", "type", "form", "side"}
 LABELS = {"point": "build.col_point", "x": "build.col_x", "y": "build.col_y",
           "member": "build.col_member", "label": "build.col_label", "first": "build.col_first",
           "second": "build.col_second", "length": "build.col_length", "mass": "build.col_mass",
           "centre_along": "build.col_centre_along", "centre_left": "build.col_centre_left",
           "gyration": "build.col_gyration", "along": "build.col_along", "left": "build.col_left",
+          "form": "build.col_form", "d1": "build.col_d1", "d2": "build.col_d2",
+          "side": "build.col_side", "r": "build.col_r", "theta": "build.col_theta",
           "type": "build.col_type", "p": "build.col_p", "q": "build.col_q",
           "through": "build.col_through", "angle": "build.col_angle",
           "slider_angle": "build.col_slider_angle", "magnitude": "build.col_magnitude",
@@ -45,8 +47,12 @@ TABS = {"frame": ("build.tab_frame", "build.hint_frame"),
 DRIVERS = {"rotating": ("build.driver_rotating", ("build.phi", "build.omega", "build.epsilon")),
            "linear": ("build.driver_linear", ("build.s", "build.v", "build.a"))}
 CLICKS = {"nothing": "build.click_nothing", "frame": "build.click_frame"}
+FORM_LABELS = {"offset": "build.form_offset", "distances": "build.form_distances",
+               "polar": "build.form_polar"}
+SIDE_LABELS = {"left": "build.side_left", "right": "build.side_right"}
 UNITS = {"x": "m", "y": "m", "length": "m", "mass": "kg", "centre_along": "m",
          "centre_left": "m", "gyration": "m", "along": "m", "left": "m", "angle": "°",
+         "d1": "m", "d2": "m", "r": "m", "theta": "°",
          "slider_angle": "°", "magnitude": "N", "value": "N·m"}
 
 
@@ -56,6 +62,18 @@ def column(name: str):
         label = f"{label} [{UNITS[name]}]"
     if name == "type":
         return st.column_config.SelectboxColumn(label, options=["revolute", "prismatic", "circular"])
+    if name == "form":
+        return st.column_config.SelectboxColumn(label, options=list(FORM_LABELS), default="offset",
+                                                format_func=lambda f: t(FORM_LABELS[f]))
+    if name == "side":
+        return st.column_config.SelectboxColumn(label, options=list(SIDE_LABELS),
+                                                format_func=lambda s: t(SIDE_LABELS[s]))
+    if name == "form":
+        return st.column_config.SelectboxColumn(label, options=list(FORM_LABELS), default="offset",
+                                                format_func=lambda f: t(FORM_LABELS[f]))
+    if name == "side":
+        return st.column_config.SelectboxColumn(label, options=list(SIDE_LABELS),
+                                                format_func=lambda s: t(SIDE_LABELS[s]))
     if name == "follows_member":
         return st.column_config.CheckboxColumn(label)
     if name in TEXT:
@@ -148,7 +166,7 @@ def upload() -> None:
 
 
 def checks(doc: dict, scene: Scene | None, problem: str | None,
-           solved: builder.Drawing | None) -> None:
+           solved: builder.Drawing | None, last_doc: dict | None) -> None:
     """What a student needs to hear while building, in words."""
     n, p5 = len(doc.get("members", {})), len(doc.get("pairs", []))
     w = 3 * n - 2 * p5 if scene is None else degrees_of_freedom(scene)
@@ -171,6 +189,27 @@ def checks(doc: dict, scene: Scene | None, problem: str | None,
     for zone in solved.zones if solved is not None else []:
         where = "; ".join(format_range(scene, lo, hi) for lo, hi in zone.ranges)
         st.info(t("build.dead_zone", group=zone.group, kind=zone.kind, where=where))
+    if solved is not None and not problem:
+        assemblies(structure, solved, last_doc)
+
+
+def assemblies(structure, solved: builder.Drawing, doc: dict) -> None:
+    """Each group that closes more than one way: where it is drawn, where the other closure
+    would put it, and one click to put it there."""
+    found = builder.group_closures(solved.scene)
+    for group in structure.groups:
+        if len(found.get(group.name, [])) < 2:
+            continue
+        words = builder.closure_words(solved.scene, group.name, found[group.name])
+        side = words.pop("side")
+        text = t("build.closures_side" if side else "build.closures", group=group.label(),
+                 count=len(found[group.name]), **words,
+                 **({"side": t(SIDE_LABELS[side])} if side else {}))
+        left, right = st.columns([4, 1], vertical_alignment="center")
+        left.info(text)
+        right.button(t("build.flip"), key=f"build_flip_{group.name}", help=t("build.flip_help"),
+                     on_click=builder.flip, args=(doc, solved, group.name),
+                     icon=":material/flip:", width="stretch")
 
 
 def study(scene: Scene) -> None:
@@ -224,15 +263,21 @@ with drawing_col:
             else:
                 builder.drop(last_doc, last, *event)
             st.rerun()
+        if result.joint and not problem and (group := builder.group_of_joint(
+                last.scene, str(result.joint.get("point")))):
+            builder.flip(last_doc, last, group)
+            st.rerun()
         if result.click and mode != "nothing" and not problem:
             builder.click(last_doc, last, 1 if mode == "frame" else int(mode),
                           complex(result.click["x"], result.click["y"]), result.click["pixel"])
             st.rerun()
+    if st.session_state.get("build_flip_error"):
+        st.error(t("build.flip_failed", group=st.session_state.pop("build_flip_error")))
     if st.session_state.get("build_drag_error"):
         point, to, why = st.session_state.pop("build_drag_error")
         st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=why))
     if not waiting():  # on a fresh visit, after the drawing is painted (ui/firstpaint.py)
-        checks(doc, scene, problem, solved)
+        checks(doc, scene, problem, solved, last_doc)
 
 if scene is not None and problem is None and not waiting():
     study(scene)

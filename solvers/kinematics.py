@@ -265,6 +265,12 @@ class _Solved:
                                               _ranges(at, weak), float(1.0 / np.nanmin(t))))
 
 
+def bodies_before(scene: Scene, groups, at: float, tol: float = TOL) -> dict[int, Body]:
+    """The frame, the driver and ``groups`` solved at one driver value: what the next group
+    hangs on (solvers.assembly asks it for every way that group can close)."""
+    return _Solved(scene, groups, np.array([at]), 0, tol).bodies
+
+
 def _plan(scene: Scene) -> dict:
     """What is kept for this live scene object (see _PLANS)."""
     plan = _PLANS.get(id(scene))

@@ -150,6 +150,12 @@ def _poses(unknown, z: np.ndarray, th: np.ndarray) -> dict[int, Body]:
             for i, m in enumerate(unknown)}
 
 
+def pose_bodies(scene: Scene, group: Group, size: float, z: np.ndarray,
+                th: np.ndarray) -> dict[int, Body]:
+    """The group's members placed at poses z (N, m) and θ (N, m), as ``poses`` finds them."""
+    return _poses(_System(scene, group, size).unknown, z, th)
+
+
 def _take(body: Body, idx) -> Body:
     """A known member's motion at some positions only (constants, and a single position
     shared by many starts, stay as they are and broadcast)."""
@@ -398,11 +404,28 @@ def _step(system, known_at, state, b, known_b, trail, depth: int = 0) -> bool:
 
 def assemble(scene: Scene, group: Group, known: dict[int, Body], size: float,
              tol: float = 1e-12, starts: int = 64) -> tuple[np.ndarray, np.ndarray] | None:
-    """The group's pose at the scene's instant, on the branch the scene sketches.
+    """The group's pose at the scene's instant, on the branch the scene sketches: of the
+    poses that converge (``poses``), the one closest to the ``[guess]`` points (or the first,
+    without guesses)."""
+    found = poses(scene, group, known, size, tol, starts)
+    if found is None:
+        return None
+    z, th = found
+    miss = np.zeros(len(z))
+    for i, member in enumerate(group.members):
+        rot = np.exp(1j * th[:, i])
+        for name, local in scene.members[member].points.items():
+            if name in scene.guess:
+                miss += np.abs(z[:, i] + local * rot - scene.guess[name]) ** 2
+    best = int(np.argmin(miss))
+    return z[best], th[best]
 
-    Many deterministic starts run through Newton at once; of the poses that converge,
-    the one closest to the ``[guess]`` points is taken (or the first, without guesses).
-    """
+
+def poses(scene: Scene, group: Group, known: dict[int, Body], size: float,
+          tol: float = 1e-12, starts: int = 64) -> tuple[np.ndarray, np.ndarray] | None:
+    """Every pose Newton reaches from many deterministic starts at once (z and θ of each
+    member, one row a start that converged; the same assembly may come more than once),
+    or None when none converges."""
     system = _System(scene, group, size)
     rng = np.random.default_rng(7)
     anchors = [known[p.other(m)].position(system._local(p, p.other(m)))
@@ -416,17 +439,7 @@ def assemble(scene: Scene, group: Group, known: dict[int, Body], size: float,
         z[:, i] = _guess_origin(scene, member, th[:, i], z[:, i])
     z, th, _, _ = newton(system, known, z, th, tol)
     ok = np.all(np.isfinite(z), axis=1)
-    if not ok.any():
-        return None
-    z, th = z[ok], th[ok]
-    miss = np.zeros(len(z))
-    for i, member in enumerate(group.members):
-        rot = np.exp(1j * th[:, i])
-        for name, local in scene.members[member].points.items():
-            if name in scene.guess:
-                miss += np.abs(z[:, i] + local * rot - scene.guess[name]) ** 2
-    best = int(np.argmin(miss))
-    return z[best], th[best]
+    return (z[ok], th[ok]) if ok.any() else None
 
 
 def _guess_origin(scene: Scene, member: int, th: np.ndarray, default: np.ndarray) -> np.ndarray:

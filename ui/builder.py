@@ -19,9 +19,10 @@ from mechanisms import Scene, SceneError
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
 from mechanisms.sketch import add_point, drag, drawn, from_scene, snap, template
+from solvers.assembly import closures
 from solvers.diagnostics import Unsolvable, dead_zones, solve_instant, sweep_values
 from solvers.kinematics import GroupIssue, solve
-from solvers.structure import StructureError
+from solvers.structure import StructureError, decompose
 from ui.cache import BY_REPR
 from ui.scenes import link_choice
 
@@ -162,3 +163,56 @@ def refuse_drag() -> None:
 
 def click(doc: dict, last: Drawing, member: int, at: complex, pixel: float) -> None:
     replace(add_point(doc, last.positions, last.rotations, member, snap(at, pixel)))
+
+
+@st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR)
+def group_closures(scene: Scene) -> dict[str, list[dict[str, complex]]]:
+    """Every Assur group's closures at the drawn instant, the drawn one first
+    (solvers.assembly); a class III group's search takes ~0.1 s, so it is kept."""
+    return {g.name: closures(scene, g.name) for g in decompose(scene).groups}
+
+
+def group_of_joint(scene: Scene, point: str) -> str | None:
+    """The Assur group a double-clicked joint moves with: the group whose closures differ
+    at that point (its inner joint, or a point of its members)."""
+    for name, found in group_closures(scene).items():
+        if len(found) > 1 and point in found[0] and abs(found[0][point] - found[1][point]) > 0:
+            return name
+    return None
+
+
+def flip(doc: dict, last: Drawing, group: str) -> None:
+    """The group drawn in its next closure: its points' drawn places (``[guess]``) move there
+    and every length stays, so the solver takes that assembly; the groups after it keep the
+    side they are drawn on."""
+    found = group_closures(last.scene).get(group, [])
+    if len(found) < 2:
+        st.session_state["build_flip_error"] = group
+        return
+    new = {**doc, "guess": drawn(doc, {**last.positions, **found[1]})}
+    problem = _solves(new)
+    if problem is None:
+        replace(new)
+    else:
+        st.session_state["build_flip_error"] = group
+
+
+def closure_words(scene: Scene, group: str, found: list[dict[str, complex]]) -> dict:
+    """What a student compares with the sheet's figure: the point that moves most between
+    the drawn closure and the other one, where each puts it, and for an RRR dyad on which
+    side of the line between its outer joints it is drawn."""
+    drawn_at, other = found[0], found[1]
+    point = max(drawn_at, key=lambda n: abs(drawn_at[n] - other[n]))
+    words = {"point": point, "x": drawn_at[point].real, "y": drawn_at[point].imag,
+             "x2": other[point].real, "y2": other[point].imag, "side": None}
+    g = next(g for g in decompose(scene).groups if g.name == group)
+    if g.kind == "RRR":
+        p, q = g.pairs[0].point, g.pairs[2].point
+        c = g.pairs[1].point
+        a, b = drawn_at.get(p), drawn_at.get(q)
+        if a is not None and b is not None:
+            turn = ((drawn_at[c] - a) / (b - a)).imag
+            words.update(point=c, x=drawn_at[c].real, y=drawn_at[c].imag, x2=other[c].real,
+                         y2=other[c].imag, side="left" if turn > 0 else "right", line=f"{p}→{q}")
+    return words
+

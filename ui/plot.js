@@ -122,6 +122,18 @@ function listen(gd, send) {
     send.current("click", { x: xaxis.p2c(e.clientX - box.left), y: yaxis.p2c(e.clientY - box.top),
                             pixel: pixel(gd) });
   });
+  // a double click (or double tap) on a joint: "joint" ({point}); the builder puts that
+  // joint's Assur group in its other assembly
+  gd.addEventListener("dblclick", (e) => {
+    const area = gd.querySelector(".nsewdrag");
+    if (!area) return;
+    const box = area.getBoundingClientRect();
+    const { xaxis, yaxis } = gd._fullLayout;
+    const x = xaxis.p2c(e.clientX - box.left), y = yaxis.p2c(e.clientY - box.top);
+    const hit = (gd.layout.shapes || []).find((s) => s.name && s.type === "circle"
+      && Math.hypot(x - (s.x0 + s.x1) / 2, y - (s.y0 + s.y1) / 2) <= Math.abs(s.x1 - s.x0));
+    if (hit) send.current("joint", { point: hit.name });
+  }, true);
 }
 
 // φ₂ in the browser (ui/crank.py): a slider and play controls under the chart. The first

@@ -91,7 +91,8 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
 
     ``editable``: the figure's shapes can be dragged and the paper clicked; the rerun that
     follows reads the result's ``drag`` ({point, x, y}: a shape named after a point, moved
-    to x, y) or ``click`` ({x, y}), each set for that one rerun.
+    to x, y), ``click`` ({x, y}) or ``joint`` ({point}: a joint double-clicked), each set for
+    that one rerun.
 
     ``crank``: the chart's own φ₂ control (ui/crank.py). ``on_crank`` is called before the
     rerun the control starts: with the angle in degrees when the student lets go of it, with
@@ -106,7 +107,8 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
             f'"first": {json.dumps(first)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
             f'"crank": {control}, "figure": {pio.to_json(fig, validate=False)}}}')
-    events = {"on_drag_change": _ignore, "on_click_change": _ignore} if editable else {}
+    events = ({"on_drag_change": _ignore, "on_click_change": _ignore, "on_joint_change": _ignore}
+              if editable else {})
     if first:
         events["on_painted_change"] = _ignore  # the rerun it starts is what it is for
     if on_crank is not None:
