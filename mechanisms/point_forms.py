@@ -51,13 +51,18 @@ def from_distances(d1: float, d2: float, side: str, length: float | None) -> com
     if side not in SIDES:
         raise FormError(f"side must be \"left\" or \"right\" (of the direction from the "
                         f"member's first point to its second), got {side!r}")
-    sides = sorted((d1, d2, length))
-    if sides[2] - sides[0] - sides[1] > SLACK * sides[2]:
+    c, b, a = sorted((d1, d2, length))
+    if a - b - c > SLACK * a:
         raise FormError(f"distances {d1:g} m and {d2:g} m cannot close a triangle with the "
                         f"member's length {length:g} m (each side must be at most the sum of "
                         "the other two)")
     along = (d1 * d1 - d2 * d2 + length * length) / (2 * length)
-    left = math.sqrt(max(d1 * d1 - along * along, 0.0))
+    # the height from the triangle's area, by Heron's formula in Kahan's stable order (the
+    # plain √(d1² − along²) loses half its digits for a point near the member's line)
+    flat = b + c - a <= SLACK * a
+    area = 0.0 if flat else 0.25 * math.sqrt(
+        (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c)))
+    left = 2 * area / length
     return complex(along, left if side == "left" else -left)
 
 
@@ -98,14 +103,21 @@ def _round(x: float) -> float:
 
 def written(form: str, z: complex, length: float | None, side: str = "left") -> Any:
     """The local point ``z`` written in ``form`` (the offset form where a distances form has
-    no second point to measure from). A point on the line keeps ``side``."""
+    no second point to measure from). A point on the line keeps ``side``. Numbers are
+    rounded to 12 digits (what was typed comes back as typed) unless that moves the point:
+    near the member's line the distances carry the height in their last digits."""
     if form == "distances" and length is not None and z != 0 and z != length:
         if abs(z.imag) > SLACK * abs(z):
             side = "left" if z.imag > 0 else "right"
-        return {"distances": [_round(abs(z)), _round(abs(z - length))], "side": side}
-    if form == "polar" and z != 0:
-        return {"polar": [_round(abs(z)), _round(math.degrees(cmath.phase(z)))]}
-    return [_round(z.real), _round(z.imag)]
+        exact = {"distances": [abs(z), abs(z - length)], "side": side}
+    elif form == "polar" and z != 0:
+        exact = {"polar": [abs(z), math.degrees(cmath.phase(z))]}
+    else:
+        return [_round(z.real), _round(z.imag)]
+    key = "distances" if "distances" in exact else "polar"
+    rounded = {**exact, key: [_round(v) for v in exact[key]]}
+    scale = max(abs(z), length or 0.0)
+    return rounded if abs(local_point(rounded, length) - z) <= 1e-14 * scale else exact
 
 
 def every_form(z: complex, length: float | None) -> dict[str, Any]:

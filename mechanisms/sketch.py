@@ -205,8 +205,8 @@ def _extra_value(r: Mapping[str, Any]) -> Any:
     offset form, and left blank in the others, for the loader to name)."""
     form = r.get("form") if r.get("form") in FORMS else "offset"
     if form == "distances":
-        return {"distances": [_num(r.get("d1")), _num(r.get("d2"))],
-                "side": "" if _blank(r.get("side")) else str(r["side"])}
+        value = {"distances": [_num(r.get("d1")), _num(r.get("d2"))]}
+        return value if _blank(r.get("side")) else {**value, "side": str(r["side"])}
     if form == "polar":
         return {"polar": [_num(r.get("r")), _num(r.get("theta"))]}
     return [_num(0.0 if _blank(r.get(k)) else r[k]) for k in ("along", "left")]

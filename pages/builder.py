@@ -205,11 +205,10 @@ def assemblies(structure, solved: builder.Drawing, doc: dict) -> None:
         text = t("build.closures_side" if side else "build.closures", group=group.label(),
                  count=len(found[group.name]), **words,
                  **({"side": t(SIDE_LABELS[side])} if side else {}))
-        left, right = st.columns([4, 1], vertical_alignment="center")
-        left.info(text)
-        right.button(t("build.flip"), key=f"build_flip_{group.name}", help=t("build.flip_help"),
-                     on_click=builder.flip, args=(doc, solved, group.name),
-                     icon=":material/flip:", width="stretch")
+        st.info(text)
+        st.button(t("build.flip"), key=f"build_flip_{group.name}", help=t("build.flip_help"),
+                  on_click=builder.flip, args=(doc, solved, group.name),
+                  icon=":material/flip:")
 
 
 def study(scene: Scene) -> None:

@@ -109,8 +109,8 @@ def test_the_exam_four_bar_is_built_by_dragging_and_typing_and_read_on_the_plans
     for row, length in enumerate(("0.1", "0.35", "0.25")):  # crank, coupler, rocker
         type_cell(page, "second point", row, 4, length)
     page.get_by_role("tab", name="Points of members").click()
-    type_cell(page, "along [m]", 0, 2, "0.2")  # M: 0.20 m along AB …
-    type_cell(page, "along [m]", 0, 3, "0.05")  # … and 0.05 m to its left
+    type_cell(page, "along [m]", 0, 3, "0.2")  # M: 0.20 m along AB …
+    type_cell(page, "along [m]", 0, 4, "0.05")  # … and 0.05 m to its left
     exact = exam_four_bar()
     drawn = shapes(page)
     for name in ("A", "B", "M"):
@@ -187,3 +187,128 @@ def test_a_typed_length_the_loader_refuses_gets_its_message_and_the_drawing_stay
     assert page.get_by_text("The drawing shows the last mechanism").count() == 1
     assert shapes(page) == before
     assert page.locator("[data-testid='stException']").count() == 0
+
+
+def start_template(page, title: str) -> None:
+    """Choose a template in the "Start from" box by typing its name, then Start."""
+    page.locator("[data-testid='stSelectbox']").filter(has_text="Start from").click()
+    page.keyboard.type(title, delay=20)
+    page.keyboard.press("Enter")
+    wait_idle(page)
+    before = page.evaluate(SHAPES)
+    page.get_by_role("button", name="Start", exact=True).click()
+    page.wait_for_function(f"b => JSON.stringify(({SHAPES})()) !== JSON.stringify(b)",
+                           arg=before, timeout=30_000)
+    wait_idle(page)
+
+
+def test_a_triangles_three_sides_typed_in_the_builder_place_its_point(app_url, browser, tmp_path):
+    """Watt's rocker DB carries E by the sheet's triangle: DB = 0.26 m, DE = 0.2 m, BE = 0.1 m,
+    E to the right of D → B. Typed as printed, E is drawn where the law of cosines puts it."""
+    page = builder(browser, app_url)
+    start_template(page, "Watt six-bar")
+    page.get_by_role("tab", name="Members", exact=True).click()
+    type_cell(page, "second point", 2, 4, "0.26")  # member 4, D → B
+    page.get_by_role("tab", name="Points of members").click()
+    type_cell(page, "along [m]", 0, 5, "0.2")  # DE
+    type_cell(page, "along [m]", 0, 6, "0.1")  # BE
+    drawn = shapes(page)
+    d, b = drawn["D"], drawn["B"]
+    assert abs(abs(b - d) - 0.26) < 1e-12
+    along = (0.2**2 - 0.1**2 + 0.26**2) / (2 * 0.26)
+    expected = d + (b - d) / 0.26 * complex(along, -math.sqrt(0.2**2 - along**2))  # right side
+    assert abs(drawn["E"] - expected) < 1e-9
+    assert abs(abs(drawn["E"] - d) - 0.2) < 1e-9 and abs(abs(drawn["E"] - b) - 0.1) < 1e-9
+    assert page.locator("[data-testid='stException']").count() == 0
+    shot = tmp_path / "builder-triangle-sides-en.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+
+
+def watt_other_closure(phi2=math.radians(60), omega2=10.0):
+    """The Watt template by hand: the first four-bar as drawn (B above OD), E by its
+    triangle (DE = 0.16, BE = 0.12, right of D → B), and the second dyad E–F–G closed on the
+    side opposite the template's drawing; velocities from the two vector loops."""
+    o, d, g = 0j, 0.3 + 0j, 0.55 + 0.05j
+    r2, r3, r4, r5, r6 = 0.1, 0.35, 0.25, 0.25, 0.2
+
+    def meet(p, q, rp, rq):  # both intersections of circles about p and q
+        pq = q - p
+        x = (rp**2 - rq**2 + abs(pq) ** 2) / (2 * abs(pq))
+        h = math.sqrt(rp**2 - x**2)
+        return [p + pq / abs(pq) * (x + s * 1j * h) for s in (1, -1)]
+
+    a = o + r2 * cmath.exp(1j * phi2)
+    b = max(meet(a, d, r3, r4), key=lambda z: z.imag)
+    along = (0.16**2 - 0.12**2 + r4**2) / (2 * r4)
+    e = d + (b - d) / r4 * complex(along, -math.sqrt(0.16**2 - along**2))
+    e2, e3, e4 = (1j * (p / abs(p)) for p in (a - o, b - a, b - d))
+    m = np.array([[r3 * e3.real, -r4 * e4.real], [r3 * e3.imag, -r4 * e4.imag]])
+    w3, w4 = np.linalg.solve(m, [-(r2 * omega2 * e2).real, -(r2 * omega2 * e2).imag])
+    v_e = 1j * w4 * (e - d)
+    f = min(meet(e, g, r5, r6), key=lambda z: z.imag)  # the template draws F above: the other
+    e5, e6 = 1j * (f - e) / r5, 1j * (f - g) / r6
+    m = np.array([[r5 * e5.real, -r6 * e6.real], [r5 * e5.imag, -r6 * e6.imag]])
+    w5, w6 = np.linalg.solve(m, [-v_e.real, -v_e.imag])
+    return dict(F=f, w3=w3, w4=w4, w5=w5, w6=w6)
+
+
+def members_csv(page) -> dict[int, dict]:
+    with page.expect_download() as download:
+        page.locator(".st-key-csv_members button").click()
+    rows = csv.DictReader(io.StringIO(open(download.value.path(), encoding="utf-8").read()))
+    return {int(r["member"]): r for r in rows}
+
+
+def test_groups_flip_to_their_other_assembly_and_the_plans_page_reads_its_omegas(
+        app_url, browser, tmp_path):
+    """A dyad by a double click on its joint, a class III group by its button: every length
+    stays, and ω on the plans page is the other closure's (the dyad's computed by hand)."""
+    page = builder(browser, app_url)
+    start_template(page, "Watt six-bar")
+    before = shapes(page)
+    x, y = screen_of(page, before["F"].real, before["F"].imag)
+    page.mouse.dblclick(x, y)
+    exact = watt_other_closure()
+    page.wait_for_function(f"() => Math.abs(({SHAPES})()['F'][1] - {exact['F'].imag}) < 1e-3",
+                           timeout=30_000)
+    wait_idle(page)
+    assert abs(shapes(page)["F"] - exact["F"]) < 1e-3  # drawn to the snapped guess
+    page.get_by_role("button", name="2–3 · Velocity and acceleration plans").click()
+    wait_url(page, r"velocity_plans\?.*s=1")
+    wait_idle(page)
+    rows = members_csv(page)
+    for member in (3, 4, 5, 6):
+        assert float(rows[member]["ω [s⁻¹]"]) == pytest.approx(exact[f"w{member}"], rel=1e-4)
+    shot = tmp_path / "builder-other-assembly-plans-en.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+
+    page = builder(browser, app_url)
+    start_template(page, "A mechanism with a class III group")
+    drawn_before = shapes(page)
+    page.get_by_role("button", name="Other assembly").first.click()
+    page.wait_for_function(f"b => JSON.stringify(({SHAPES})()) !== JSON.stringify(b)",
+                           arg={k: [v.real, v.imag] for k, v in drawn_before.items()}, timeout=30_000)
+    wait_idle(page)
+    after = shapes(page)
+    for a, b in (("B", "C"), ("C", "D"), ("E", "D")):  # the lengths of members 3, 4, 5
+        assert abs(abs(after[a] - after[b]) - abs(drawn_before[a] - drawn_before[b])) < 1e-3
+    assert max(abs(after[n] - drawn_before[n]) for n in ("C", "D")) > 0.05
+    shot = tmp_path / "builder-class-iii-other-assembly-en.png"
+    page.screenshot(path=str(shot), full_page=True)
+    keep(shot)
+    page.get_by_role("button", name="2–3 · Velocity and acceleration plans").click()
+    wait_url(page, r"velocity_plans\?.*s=1")
+    wait_idle(page)
+    omegas = {m: float(r["ω [s⁻¹]"]) for m, r in members_csv(page).items()}
+    from mechanisms.link import decode
+    from solvers.diagnostics import solve_instant
+    link = page.evaluate("() => new URL(location.href).searchParams.get('s')")
+    motion = solve_instant(decode(link), None)
+    for member in (3, 4, 5, 6):
+        assert omegas[member] == pytest.approx(float(motion.members[member].omega[0]), rel=1e-4)
+    from mechanisms.loader import build_scene
+    from mechanisms.sketch import template
+    original = solve_instant(build_scene(template("class-iii")), None)
+    assert any(abs(omegas[m] - float(original.members[m].omega[0])) > 1e-3 for m in (3, 4, 5, 6))

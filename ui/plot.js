@@ -123,10 +123,15 @@ function listen(gd, send) {
                             pixel: pixel(gd) });
   });
   // a double click (or double tap) on a joint: "joint" ({point}); the builder puts that
-  // joint's Assur group in its other assembly
-  gd.addEventListener("dblclick", (e) => {
+  // joint's Assur group in its other assembly. Told from two presses, not from "dblclick":
+  // Plotly covers the page while a shape is pressed, so the click events miss the chart.
+  let last = null;
+  gd.addEventListener("pointerdown", (e) => {
+    const now = { t: e.timeStamp, x: e.clientX, y: e.clientY };
+    const again = last && now.t - last.t < 450 && Math.hypot(now.x - last.x, now.y - last.y) < 8;
+    last = again ? null : now;
     const area = gd.querySelector(".nsewdrag");
-    if (!area) return;
+    if (!again || !area) return;
     const box = area.getBoundingClientRect();
     const { xaxis, yaxis } = gd._fullLayout;
     const x = xaxis.p2c(e.clientX - box.left), y = yaxis.p2c(e.clientY - box.top);
