@@ -186,3 +186,19 @@ def test_a_drag_keeps_the_form_the_row_uses():
     new = build_scene(moved)
     local = (positions["E"] + 0.01 - positions["D"]) / rotations[4]
     assert abs(new.members[4].points["E"] - local) < 1e-11
+
+
+def test_a_variant_varies_the_sides_or_the_length_and_angle_the_task_gives():
+    from exams.variation import apply, givens
+    doc = template("watt-six-bar")
+    found = {g.path: g for g in givens(doc)}
+    sides = [p for p in found if p[:4] == ("members", "4", "extra", "E")]
+    assert sides == [("members", "4", "extra", "E", "distances", 0),
+                     ("members", "4", "extra", "E", "distances", 1)]
+    assert [found[p].label for p in sides] == ["DE", "BE"]
+    new, _ = apply(doc, list(found.values()), [g.value * 1.05 for g in found.values()])
+    assert new["members"]["4"]["extra"]["E"] == {"distances": [0.16 * 1.05, 0.12 * 1.05],
+                                                 "side": "right"}
+    doc["members"]["4"]["extra"]["E"] = {"polar": [0.15, -30.0]}
+    kinds = [(g.label, g.kind) for g in givens(doc) if g.path[:4] == ("members", "4", "extra", "E")]
+    assert kinds == [("DE", "length"), ("∠E4", "angle")]
