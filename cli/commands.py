@@ -1,5 +1,5 @@
-"""Command line: ``python -m solvers list | solve | plan | structure | forces | link | variants
-| bench``
+"""Command line: ``python -m solvers list | solve | plan | structure | forces | practice | link |
+variants | bench``
 (see docs/cli.md).
 
 Exit codes: 0 done; 2 the scene or the command is wrong; 3 the mechanism cannot be in
@@ -30,6 +30,8 @@ from solvers.gears import TrainError, solve_train
 from solvers.kinetostatics import analyse
 from solvers.structure import StructureError, decompose
 
+from . import practice
+
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
@@ -38,7 +40,7 @@ def main(argv: list[str] | None = None) -> int:
     except (SceneError, StructureError, TrainError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    except Unsolvable as exc:
+    except (Unsolvable, BalanceError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 3
 
@@ -73,6 +75,18 @@ def _parser() -> argparse.ArgumentParser:
                    help="leave the inertia forces out (as tasks 5.1–5.2 do)")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.set_defaults(run=_forces)
+    p = sub.add_parser("practice", help="a construction's steps to practise, or a student's "
+                                        "answers graded step by step (docs/practice.md)")
+    _scene_arguments(p)
+    p.add_argument("--method", required=True, choices=list(practice.KINDS),
+                   help="compass, plans, forces, lever (linkages), willis (gear trains), "
+                        "balance (rotors)")
+    p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver "
+                                            "(plans, forces, lever)")
+    p.add_argument("--answers", metavar="FILE", help='a JSON file {"answers": {"<step id>": '
+                                                      '[x, y] or a number}} to grade')
+    p.add_argument("--json", action="store_true", help="print JSON (SI units)")
+    p.set_defaults(run=_practice)
     p = sub.add_parser("link", help=f"the share parameter ({PARAMETER}=…) that carries a scene "
                                     "in any page's link")
     p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")
@@ -144,6 +158,21 @@ def _load(args):
 
 def _link(args) -> int:
     print(f"{PARAMETER}={encode(load_any(args.scene))}")
+    return 0
+
+
+def _practice(args) -> int:
+    data = practice.run(_load(args), args.method, args.at, args.answers)
+    if args.json:
+        return _print_json(data)
+    if "steps" in data:
+        for step in data["steps"]:
+            print(f"{step['id']:24s} {step['asks']}: {step['expected']} ± {step['tolerance']:.3g} "
+                  f"{step['unit']}")
+        return 0
+    for result in data["results"]:
+        print(f"{result['id']:24s} {result['diagnosis']:12s} {result['hint']}")
+    print(f"score: {data['score']['ok']} of {data['score']['of']}")
     return 0
 
 

@@ -12,8 +12,17 @@ from solvers.kinetostatics import Kinetostatics
 from .linkage import Text, mechanism_traces, pose, scatter, typical_length
 from .polygon import arrows
 from .raw import RawFigure
-from .style import (AXIS, LEGEND, NORMAL, TICKS, Look, margins, member_colour, path_colour,
-                    plane_layout)
+from .style import (
+    AXIS,
+    LEGEND,
+    NORMAL,
+    TICKS,
+    Look,
+    margins,
+    member_colour,
+    path_colour,
+    plane_layout,
+)
 
 LOAD_COLOURS = {"external": "#d62728", "inertia": "#ff7f0e", "weight": "#7f7f7f",
                 "reaction": "#1f77b4"}

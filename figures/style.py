@@ -56,14 +56,6 @@ NORMAL = Look()
 PROJECTOR = Look(font=24, line=2.0, height=860)
 
 
-def nice_scale(value: float) -> float:
-    """A round drawing scale (1, 2 or 5 × 10ⁿ) at or above ``value``, as a student would pick."""
-    if value <= 0:
-        return 1.0
-    power = 10 ** math.floor(math.log10(value))
-    return float(next(k * power for k in (1, 2, 5, 10) if k * power >= value))
-
-
 def member_colour(number: int) -> str:
     return MEMBER_COLOURS[(number - 2) % len(MEMBER_COLOURS)]
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-
 import numpy as np
 import pandas as pd
 import streamlit as st
@@ -11,8 +10,14 @@ from figures.assur import structure_figure
 from figures.raw import RawFigure
 from figures.style import Look
 from mechanisms.schema import Scene
-from solvers.diagnostics import (TOLERANCES, Unsolvable, format_range, newton_accuracy,
-                                 newton_iterations, sweep_values)
+from solvers.diagnostics import (
+    TOLERANCES,
+    Unsolvable,
+    format_range,
+    newton_accuracy,
+    newton_iterations,
+    sweep_values,
+)
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
@@ -22,8 +27,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import first_run, waiting
-from ui.i18n import current as current_language
-from ui.i18n import num, t, title_of
+from ui.i18n import current as current_language, num, t, title_of
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_position, driver_start, scene_download, scene_picker

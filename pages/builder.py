@@ -11,7 +11,15 @@ from mechanisms import SceneError, preset_ids
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
 from mechanisms.schema import Scene
-from mechanisms.sketch import COLUMNS, TABLES, document, driver_values, tables, template, template_ids
+from mechanisms.sketch import (
+    COLUMNS,
+    TABLES,
+    document,
+    driver_values,
+    tables,
+    template,
+    template_ids,
+)
 from solvers.diagnostics import Unsolvable, format_range
 from solvers.structure import StructureError, decompose, degrees_of_freedom, loose_joints
 from ui import builder

@@ -13,14 +13,17 @@ import streamlit as st
 from figures.kinetostatics import cycle_figure, forces_figure, html, lever_figure
 from figures.polygon import polygon_figure, polygon_svg
 from figures.raw import RawFigure
-from figures.style import Look, nice_scale
+from figures.style import Look
 from mechanisms.schema import Scene
+from methods import practice_steps
 from methods.force_steps import equation, steps as force_steps
 from methods.lever_steps import construction as lever_construction, latex as lever_latex
+from methods.scales import nice_scale
 from reports.values import has_loads
 from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_resolution
 from solvers.kinetostatics import Action, Kinetostatics, analyse, free_body
 from solvers.structure import StructureError
+from ui import practice
 from ui.benchmarks import speed_panel
 from ui.book import book_section
 from ui.cache import BY_REPR, instant
@@ -329,20 +332,29 @@ if tabs[1].open:
 
 if tabs[2].open:
     with tabs[2]:
-        construction_steps(k, now)
+        if practice.toggle("pr_forces"):
+            uf = st.session_state.get("UF") or auto_scale(
+                complex(r.force[now]) for r in k.reactions.values())
+            practice.panel(practice_steps.forces(k, now, uf), "pr_forces",
+                           t("practice.sheet_forces"))
+        else:
+            construction_steps(k, now)
 
 if tabs[3].open:
     with tabs[3]:
         st.write(t("forces.lever_intro"))
-        chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
-              key="fig_lever")
-        speed = scene.driver.speed or 1.0
-        lever = pd.DataFrame([{t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
-                               t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
-                              for f in k.lever if abs(f.force[now]) > 0])
-        show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
-        book_lever(k, now)
-        method_doc("reduced-mechanism")
+        if practice.toggle("pr_lever"):
+            practice.panel(practice_steps.lever(k, now), "pr_lever", "", drawable=False)
+        else:
+            chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
+                  key="fig_lever")
+            speed = scene.driver.speed or 1.0
+            lever = pd.DataFrame([{t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
+                                   t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
+                                  for f in k.lever if abs(f.force[now]) > 0])
+            show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
+            book_lever(k, now)
+            method_doc("reduced-mechanism")
 
 if tabs[4].open:
     with tabs[4]:

@@ -6,10 +6,12 @@ import pandas as pd
 import streamlit as st
 
 from figures.gears import schematic_figure, velocity_figure
-from figures.style import nice_scale
 from mechanisms.gears import GearTrain, Input, Mesh
+from methods import practice_steps
 from methods.gear_steps import speed_steps, total_ratio
+from methods.scales import nice_scale
 from solvers.gears import TrainError, geometry_notes, solve_train, stages, willis_table
+from ui import practice
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.docs import method_doc
@@ -169,5 +171,8 @@ with main:
 
 if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
     with main:
-        results()
+        if practice.toggle("pr_willis"):
+            practice.panel(practice_steps.willis(solution), "pr_willis", "", drawable=False)
+        else:
+            results()
         speed_panel("planetary_gears", train.id)

@@ -7,11 +7,13 @@ import math
 import pandas as pd
 import streamlit as st
 
-from figures.style import nice_scale
 from figures.balancing import end_view_figure, rotor_3d_figure
 from figures.polygon import polygon_figure, polygon_svg
 from mechanisms.rotor import PLANES, Correction, Mass, Rotor
+from methods import practice_steps
+from methods.scales import nice_scale
 from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
+from ui import practice
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.export import chart, print_button, show_table
@@ -21,6 +23,7 @@ from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed, table_to_url, url_choice, url_table
+
 
 def legend() -> tuple[str, str]:
     return t("rotor.fig_known"), t("rotor.fig_corrections")
@@ -147,6 +150,9 @@ def results_table(result: Balance) -> pd.DataFrame:
 
 
 with main:
+    if practice.toggle("pr_balance"):  # the corrections stay hidden: the student finds them
+        practice.panel(practice_steps.balance(result), "pr_balance", t("practice.sheet_rotor"))
+        st.stop()  # (app.py still ends the run)
     st.subheader(t("rotor.results"))
     corrections_table = results_table(result)
     show_table(corrections_table, f"{rotor.id}-corrections.csv", "csv")

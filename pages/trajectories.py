@@ -11,7 +11,9 @@ import streamlit as st
 from figures.style import Look
 from figures.trajectories import animation_figure, compass_figure, construction_figure, field_figure
 from mechanisms.schema import Scene, Travel
+from methods import practice_steps
 from methods.compass import construction as compass_steps
+from methods.scales import plan_scales
 from solvers.diagnostics import dead_zones, format_range
 from solvers.paths import (
     animation_order,
@@ -24,6 +26,7 @@ from solvers.paths import (
     strokes,
     swings,
 )
+from ui import practice
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, cycle
 from ui.chapters import page_title
@@ -168,7 +171,12 @@ with main:
                                       title_of(scene), t, look())
         figure_ms = (time.perf_counter() - started) * 1e3
         with tab_paths:
-            chart(fig, f"{scene.id}-paths", key="paths")
+            if view == "compass" and practice.toggle("pr_compass"):
+                practice.panel(practice_steps.compass(construction, points,
+                                                      plan_scales(scene, None)["L"]),
+                               "pr_compass", t("practice.sheet_compass"))
+            else:
+                chart(fig, f"{scene.id}-paths", key="paths")
             if view == "compass":
                 method_doc("compass")
     if tab_anim.open:

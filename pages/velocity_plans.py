@@ -9,14 +9,17 @@ import streamlit as st
 
 from figures.plans import KIND_KEYS, layout_plan, mechanism_figure, plain, plan_figure, plan_svg
 from figures.raw import RawFigure
-from figures.style import Look, nice_scale
+from figures.style import Look
 from mechanisms.schema import Scene
+from methods import practice_steps
 from methods.analytic import derivation, equations, solved_values
 from methods.contour import contour, free_points, latex as contour_latex
 from methods.plans import Plans, build, describe, readings
+from methods.scales import plan_scales
 from solvers.diagnostics import Unsolvable, solve_instant
 from solvers.kinematics import Motion
 from solvers.structure import StructureError
+from ui import practice
 from ui.benchmarks import speed_panel
 from ui.book import book_section
 from ui.cache import BY_REPR, instant
@@ -51,14 +54,9 @@ def solved_plans(scene: Scene) -> Plans:
 def auto_scales(scene: Scene) -> dict[str, float]:
     """The book's scales when the preset has them, else round ones that fit a 12 cm plan."""
     try:
-        plans = solved_plans(scene)
-        reach = {"v": max(map(abs, plans.velocity.images.values())),
-                 "a": max(map(abs, plans.acceleration.images.values()))}
+        return plan_scales(scene, solved_plans(scene))
     except (Unsolvable, StructureError):
-        reach = {"v": 1.0, "a": 10.0}
-    spans = [abs(z) for m in scene.members.values() for z in m.points.values()]
-    reach["L"] = max(spans or [1.0])
-    return {k: scene.scales.get(k, nice_scale(reach[k] / 12)) for k in ("L", "v", "a")}
+        return plan_scales(scene, None)
 
 
 def defaults(base: Scene) -> dict[str, object]:
@@ -170,6 +168,12 @@ def member_table() -> pd.DataFrame:
 
 
 if tab_plans.open:
+    with tab_plans:
+        practising = practice.toggle("pr_plans")
+if tab_plans.open and practising:
+    with tab_plans:
+        practice.panel(practice_steps.plans(plans, scales), "pr_plans", t("practice.sheet_plans"))
+elif tab_plans.open:
     with tab_plans:
         index = step - 1
         later = first_run()  # on a fresh visit the charts below come first (ui/firstpaint.py)

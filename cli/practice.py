@@ -1,0 +1,115 @@
+"""``python -m solvers practice SCENE --method …``: a construction's steps with their exact
+values and tolerances, and with ``--answers`` a student's answers graded step by step by the
+same function the pages use (methods.practice.grade); hints in English from locales/en.toml.
+"""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+
+from mechanisms import Scene, SceneError
+from mechanisms.gears import GearTrain
+from mechanisms.rotor import Rotor
+from methods import practice_steps
+from methods.plans import build
+from methods.practice import Progress, Step, Verdict, answer_of
+from methods.scales import plan_scales, polygon_scale
+from solvers.balancing import balance
+from solvers.diagnostics import solve_instant
+from solvers.gears import solve_train
+from solvers.kinematics import solve
+from solvers.kinetostatics import analyse
+from solvers.paths import cycle_values
+
+LOCALES = Path(__file__).resolve().parents[1] / "locales"
+KINDS = {"compass": Scene, "plans": Scene, "forces": Scene, "lever": Scene,
+         "willis": GearTrain, "balance": Rotor}
+
+
+def steps_for(scene, method: str, at: float | None = None) -> list[Step]:
+    """The steps of ``method`` on ``scene`` (at ``at``: φ₂ in degrees, or s in m, where the
+    method works at one instant); SceneError when the scene is not of the method's kind."""
+    kind = KINDS.get(method)
+    if kind is None:
+        raise SceneError(f"unknown method {method!r}: choose one of {', '.join(KINDS)}")
+    if not isinstance(scene, kind):
+        raise SceneError(f"the {method} method needs a {kind.__name__.lower()} scene; this is a "
+                         f"{type(scene).__name__.lower()}")
+    if method == "compass":
+        motion = solve(scene, cycle_values(scene, 12), order=0)
+        pin = next(n for n in scene.members[2].points if n not in scene.frame)
+        return practice_steps.compass(motion, [pin], plan_scales(scene, None)["L"])
+    if method == "willis":
+        return practice_steps.willis(solve_train(scene))
+    if method == "balance":
+        return practice_steps.balance(balance(scene))
+    motion = solve_instant(scene, at)
+    if method == "plans":
+        plans = build(motion)
+        return practice_steps.plans(plans, plan_scales(scene, plans))
+    k = analyse(scene, inertia=True, motion=motion)
+    if method == "lever":
+        return practice_steps.lever(k, 0)
+    forces = [complex(np.ravel(r.force)[0]) for r in k.reactions.values()]
+    return practice_steps.forces(k, 0, scene.scales.get("F", polygon_scale(forces)))
+
+
+@cache
+def _english() -> dict[str, str]:
+    with open(LOCALES / "en.toml", "rb") as f:
+        return tomllib.load(f)
+
+
+def hint(step: Step, verdict: Verdict, language: dict[str, str] | None = None) -> str:
+    """The hint for a diagnosis, in the strings table's words (English here)."""
+    table = language or _english()
+    text = table[f"practice.hint_{verdict.diagnosis.replace('-', '_')}"].format(
+        ratio=f"{verdict.ratio:.3g}" if verdict.ratio is not None else "",
+        term=verdict.term, turn=f"{verdict.turn:.0f}" if verdict.turn is not None else "")
+    if verdict.diagnosis in ("sense", "direction", "wrong", "length"):
+        text += " " + table[f"practice.rule_{step.rule}"]
+    return text.replace("⟨", "").replace("⟩", "")
+
+
+def graded(steps: list[Step], answers: dict) -> dict:
+    """``{"results": [{"id", "diagnosis", "hint"}], "score": {"ok", "of"}}`` for the answers
+    (a step not answered is ``none``)."""
+    progress, results = Progress.start(), []
+    for step in steps:
+        given = answers.get(step.id)
+        try:
+            value = answer_of(given, step.kind)
+        except ValueError as exc:
+            raise SceneError(f"answers: {step.id} must be {exc}") from None
+        verdict = progress.give(step, value)
+        results.append({"id": step.id, "diagnosis": verdict.diagnosis,
+                        "hint": hint(step, verdict)})
+    return {"results": results, "score": {"ok": sum(r["diagnosis"] == "ok" for r in results),
+                                          "of": len(steps)}}
+
+
+def read_answers(path: str) -> dict:
+    """The answers file: ``{"answers": {"<id>": [x, y] or number}}`` (SceneError if not)."""
+    try:
+        data = json.loads(Path(path).read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise SceneError(f"answers: cannot read {path}: {exc.strerror}") from None
+    except json.JSONDecodeError as exc:
+        raise SceneError(f"answers: {path} is not JSON ({exc.msg}, line {exc.lineno})") from None
+    if not isinstance(data, dict) or not isinstance(data.get("answers"), dict):
+        raise SceneError(f'answers: {path} must hold {{"answers": {{"<step id>": [x, y] or a '
+                         'number}}')
+    return data["answers"]
+
+
+def run(scene, method: str, at: float | None, answers_path: str | None) -> dict:
+    """What ``practice`` prints: the steps, or the graded answers."""
+    steps = steps_for(scene, method, at)
+    if answers_path is not None:
+        return graded(steps, read_answers(answers_path))
+    return {"scene": scene.id, "method": method, "steps": [s.json() for s in steps]}

@@ -1,0 +1,53 @@
+"""The sheet a student practises on: what the construction has drawn so far (the exact earlier
+steps, at the page's scale, in cm of paper), the current step's tail, and a circle to drag to
+where the student puts the new arrow's tip (or the new point)."""
+
+from __future__ import annotations
+
+from methods.practice import Step
+
+from .arrows import arrow_traces
+from .linkage import Text, scatter
+from .plans import html
+from .raw import RawFigure
+from .style import NORMAL, Look, plane_layout
+
+DONE = "#7f7f7f"
+ANSWER = "#d62728"
+TIP = 0.18  # the tip's circle: radius in cm of paper
+
+
+def practice_figure(steps: list[Step], index: int, tip: complex | None, title: str, t: Text,
+                    look: Look = NORMAL, revision: str = "") -> RawFigure:
+    """Step ``index`` of ``steps`` on its sheet: the earlier steps of the same sheet drawn
+    exactly (arrows, or points for a compass step; an image reached from the pole as its
+    labelled point), the tail as a point, and a draggable circle named "tip" at ``tip`` (cm
+    on the paper; the tail plus a small offset when None) with the student's arrow to it."""
+    step = steps[index]
+    scale = step.scale or 1.0
+    fig = RawFigure()
+    earlier = [s for s in steps[:index] if s.sheet == step.sheet and s.kind != "scalar"]
+    arrows = [(s.tail / scale, (s.tail + complex(s.expected)) / scale, DONE)
+              for s in earlier if s.kind == "vector" and s.rule != "sum"]
+    fig.add_raw(arrow_traces(arrows, 1.6 * look.line))
+    points = [(complex(s.expected) / scale if s.kind == "point" else
+               (s.tail + complex(s.expected)) / scale, s.symbol) for s in earlier
+              if s.kind == "point" or s.rule == "sum"]
+    start = step.tail / scale
+    points.append((start, t("practice.tail")) if step.kind == "vector" else (start, ""))
+    fig.add_raw([scatter(x=[z.real for z, _ in points], y=[z.imag for z, _ in points],
+                         mode="markers+text", text=[html(n) if n else "" for _, n in points],
+                         textposition="top right", hoverinfo="skip", showlegend=False,
+                         marker=dict(size=5 * look.line, color="black"))])
+    if tip is None:
+        tip = start + (1.0 + 0.5j)
+    if step.kind == "vector":
+        fig.add_raw(arrow_traces([(start, tip, ANSWER)], 2.4 * look.line))
+    shapes = [dict(type="circle", name="tip", xref="x", yref="y", x0=tip.real - TIP,
+                   x1=tip.real + TIP, y0=tip.imag - TIP, y1=tip.imag + TIP,
+                   line=dict(color=ANSWER, width=1.5 * look.line),
+                   fillcolor="rgba(214, 39, 40, 0.15)")]
+    plane_layout(fig, title, look, x_title="x [cm]", y_title="y [cm]")
+    fig.merge_layout(dict(shapes=shapes, dragmode="pan", uirevision=f"practice-{step.sheet}",
+                          editrevision=revision))
+    return fig

@@ -1,0 +1,240 @@
+"""Practice: the student gives each step of a construction, and the step is graded against the
+exact one with the usual mistake named.
+
+A step asks for a vector (an arrow of a plan or a polygon, in SI units), a point (a compass
+position, m) or a signed scalar (ω₄, a stage's ω, a reaction's part). ``grade`` compares an
+answer with the step's exact value within what a drawing at the page's scales allows, and
+says which of a fixed set of mistakes it looks like:
+
+``ok``            within the tolerance;
+``sense``         the arrow reversed (or the sign of a scalar lost);
+``direction``     the right length, another direction;
+``length``        the right direction (or the right sign), another length;
+``scale``         off by a power of ten or by the drawing scale: the usual unit slip;
+``missing-term``  the step's sum without one of its known terms (a forgotten Coriolis,
+                  normal or tangential part, or inertia force);
+``wrong``         none of these; ``none``: not answered.
+
+The steps themselves come from the methods written out step by step (methods.practice_steps);
+later steps use the exact earlier results, so one slip does not spoil the rest.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass
+
+DIAGNOSES = ("ok", "sense", "direction", "length", "scale", "missing-term", "wrong", "none")
+PRECISION_CM = 0.05  # a line drawn and read to half a millimetre (as the variants' keys)
+ANGLE_READ = math.radians(1.0)  # a direction read with a protractor (as the polygons' error)
+RELATIVE = 0.01  # a value computed from an equation by hand: ±1 %
+SLIP = 0.02  # an answer within 2 % of a slipped value is that slip
+TRIES = 3  # after three tries the step is revealed
+
+
+@dataclass(frozen=True)
+class Term:
+    """A known vector (or value) a sum step adds, as it adds it (with its sign)."""
+
+    name: str
+    value: complex | float
+
+
+@dataclass(frozen=True)
+class Step:
+    """One thing the student gives.
+
+    ``expected`` and ``tolerance`` are in SI units (``unit``); ``scale`` is the drawing's
+    scale in ``unit`` per cm (1 for a scalar found by arithmetic), against which the
+    student's unit slip is recognised; ``tail`` is where the arrow starts on its drawing
+    (``sheet``: "v", "a", a force polygon, "U", "V", "L" for the mechanism) so it can be
+    drawn from there; ``terms`` the known vectors a sum step adds; ``missing`` what the
+    answer would be with one of them forgotten; ``rule`` the kind of part (relative,
+    normal, tangential, coriolis, sliding, sum, point, closing, scalar …) for the hint."""
+
+    id: str
+    asks: str  # in English, for the command line; pages show ``symbol`` and ``rule``
+    symbol: str  # LaTeX
+    kind: str  # "vector", "point" or "scalar"
+    unit: str
+    expected: complex | float
+    tolerance: float
+    scale: float = 1.0
+    sheet: str = ""
+    tail: complex = 0j
+    terms: tuple[Term, ...] = ()
+    missing: tuple[Term, ...] = ()
+    rule: str = "sum"
+
+    def json(self) -> dict:
+        return {"id": self.id, "asks": self.asks, "kind": self.kind, "unit": self.unit,
+                "expected": _out(self.expected, self.kind), "tolerance": self.tolerance,
+                "terms": [{"name": term.name, "value": _out(term.value, self.kind)}
+                          for term in self.terms]}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """A step's diagnosis, with what the hint needs: ``ratio`` (answer ÷ exact, for
+    ``length`` and ``scale``), ``term`` (for ``missing-term``), ``turn`` (degrees, for
+    ``direction``)."""
+
+    diagnosis: str
+    ratio: float | None = None
+    term: str = ""
+    turn: float | None = None
+
+    @property
+    def ok(self) -> bool:
+        return self.diagnosis == "ok"
+
+
+def _out(value, kind: str):
+    if kind == "scalar":
+        return float(value.real if isinstance(value, complex) else value)
+    return [float(value.real), float(value.imag)]
+
+
+def answer_of(value, kind: str) -> complex | float | None:
+    """An answer as the command line or a page gives it: [x, y] or a number (None: none)."""
+    if value is None:
+        return None
+    if kind == "scalar":
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ValueError(f"a number, got {value!r}")
+        return float(value)
+    ok = (isinstance(value, (list, tuple)) and len(value) == 2
+          and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value))
+    if not ok:
+        raise ValueError(f"a pair [x, y], got {value!r}")
+    return complex(value[0], value[1])
+
+
+def polar(magnitude: float, angle_deg: float) -> complex:
+    """A typed arrow: its length and its direction, counter-clockwise from +x in degrees."""
+    return cmath.rect(magnitude, math.radians(angle_deg))
+
+
+def grade(step: Step, answer: complex | float | None) -> Verdict:
+    """The diagnosis of ``answer`` for ``step`` (see the module's list)."""
+    if answer is None or (isinstance(answer, float) and math.isnan(answer)):
+        return Verdict("none")
+    if step.kind == "scalar":
+        return _scalar(step, float(answer.real if isinstance(answer, complex) else answer))
+    return _vector(step, complex(answer))
+
+
+def _close(a: complex, b: complex, tolerance: float) -> bool:
+    """Within the drawing's tolerance: the tip within δ, or the length within δ and the
+    direction within a protractor's reading."""
+    if abs(a - b) <= tolerance:
+        return True
+    return (abs(abs(a) - abs(b)) <= tolerance and abs(b) > tolerance
+            and abs(cmath.phase(a / b)) <= ANGLE_READ if a else False)
+
+
+def _slips(step: Step) -> list[float]:
+    """The factors of a unit or scale slip: powers of ten, the drawing scale and its inverse
+    (a length on the plan read as the value, or the other way round)."""
+    factors = [10.0 ** k for k in (-3, -2, -1, 1, 2, 3)]
+    if step.scale not in (0.0, 1.0):
+        factors += [step.scale, 1 / step.scale]
+    return factors
+
+
+def _vector(step: Step, answer: complex) -> Verdict:
+    exact, tol = complex(step.expected), step.tolerance
+    if _close(answer, exact, tol):
+        return Verdict("ok")
+    for term in step.missing:
+        if _close(answer, complex(term.value), tol):
+            return Verdict("missing-term", term=term.name)
+    if step.kind == "point":  # a point has no sense or length: only where it is
+        return _slipped(step, answer, exact) or Verdict("wrong")
+    if abs(exact) <= tol:
+        return _slipped(step, answer, exact) or Verdict("wrong")
+    if _close(answer, -exact, tol):
+        return Verdict("sense")
+    ratio = abs(answer) / abs(exact)
+    turn = math.degrees(cmath.phase(answer / exact)) if answer else None
+    same_line = answer != 0 and abs(cmath.phase(answer / exact)) <= ANGLE_READ
+    if same_line:
+        slipped = _slipped(step, answer, exact)
+        return slipped or Verdict("length", ratio=ratio)
+    if abs(abs(answer) - abs(exact)) <= tol:
+        return Verdict("direction", turn=turn)
+    return _slipped(step, answer, exact) or Verdict("wrong")
+
+
+def _slipped(step: Step, answer: complex, exact: complex) -> Verdict | None:
+    for factor in _slips(step):
+        if abs(answer - exact * factor) <= max(step.tolerance * factor, SLIP * abs(exact * factor)):
+            return Verdict("scale", ratio=factor)
+    return None
+
+
+def _scalar(step: Step, answer: float) -> Verdict:
+    exact, tol = float(step.expected.real if isinstance(step.expected, complex) else step.expected), \
+        step.tolerance
+    if abs(answer - exact) <= tol:
+        return Verdict("ok")
+    for term in step.missing:
+        if abs(answer - float(term.value.real if isinstance(term.value, complex) else term.value)) <= tol:
+            return Verdict("missing-term", term=term.name)
+    if abs(exact) > tol and abs(answer + exact) <= tol:
+        return Verdict("sense")
+    if abs(exact) > tol and answer != 0 and math.copysign(1, answer) == math.copysign(1, exact):
+        slipped = _slipped(step, complex(answer), complex(exact))
+        return slipped or Verdict("length", ratio=answer / exact)
+    return Verdict("wrong")
+
+
+@dataclass
+class Progress:
+    """A student's run through a list of steps: tries, answers and diagnoses per step."""
+
+    tries: dict[str, int]
+    answers: dict[str, list]
+    verdicts: dict[str, list[Verdict]]
+    revealed: set[str]
+
+    @classmethod
+    def start(cls) -> Progress:
+        return cls({}, {}, {}, set())
+
+    def give(self, step: Step, answer) -> Verdict:
+        """Grade one try (a step already right or revealed keeps its outcome)."""
+        if self.done(step):
+            return self.verdicts[step.id][-1]
+        verdict = grade(step, answer)
+        if verdict.diagnosis != "none":
+            self.tries[step.id] = self.tries.get(step.id, 0) + 1
+            self.answers.setdefault(step.id, []).append(answer)
+            self.verdicts.setdefault(step.id, []).append(verdict)
+            if not verdict.ok and self.tries[step.id] >= TRIES:
+                self.revealed.add(step.id)
+        return verdict
+
+    def reveal(self, step: Step) -> None:
+        if not self.done(step):
+            self.revealed.add(step.id)
+
+    def done(self, step: Step) -> bool:
+        return step.id in self.revealed or any(v.ok for v in self.verdicts.get(step.id, []))
+
+    def outcome(self, step: Step) -> str:
+        """"first" (right at the first try), "later" (right after hints), "revealed" or
+        "open"."""
+        verdicts = self.verdicts.get(step.id, [])
+        if verdicts and verdicts[0].ok:
+            return "first"
+        if any(v.ok for v in verdicts):
+            return "later"
+        return "revealed" if step.id in self.revealed else "open"
+
+    def score(self, steps: list[Step]) -> dict[str, int]:
+        counts = {"first": 0, "later": 0, "revealed": 0, "open": 0}
+        for step in steps:
+            counts[self.outcome(step)] += 1
+        return counts

@@ -1,0 +1,199 @@
+"""Practice mode on a page: the student gives each step of a construction — by dragging the new
+arrow's tip (or the new point) on the sheet at the page's scale, or by typing it — and hears
+at once whether it is right and, if not, which usual mistake it looks like
+(methods.practice). Three tries, or "Show it", reveal a step; the score and a CSV of every
+answer come at the end. The state lives in the session, one run per page and scene.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pandas as pd
+import streamlit as st
+
+from figures.practice import practice_figure
+from methods.practice import TRIES, Progress, Step, Verdict, polar
+from ui.export import chart
+from ui.i18n import num, t
+from ui.present import look
+
+HINTS = {"ok": "practice.hint_ok", "sense": "practice.hint_sense",
+         "direction": "practice.hint_direction", "length": "practice.hint_length",
+         "scale": "practice.hint_scale", "missing-term": "practice.hint_missing_term",
+         "wrong": "practice.hint_wrong", "none": "practice.hint_none"}
+RULES = {"relative": "practice.rule_relative", "normal": "practice.rule_normal",
+         "tangential": "practice.rule_tangential", "coriolis": "practice.rule_coriolis",
+         "sliding": "practice.rule_sliding", "absolute": "practice.rule_absolute",
+         "sum": "practice.rule_sum", "point": "practice.rule_point", "rate": "practice.rule_rate",
+         "moment": "practice.rule_moment", "closing": "practice.rule_closing",
+         "balancing": "practice.rule_balancing", "stage": "practice.rule_stage",
+         "polygon": "practice.rule_polygon", "correction": "practice.rule_correction"}
+PARTS = {"vector": "practice.part_vector", "point": "practice.part_point",
+         "scalar": "practice.part_scalar"}
+OUTCOMES = {"first": "practice.first", "later": "practice.later",
+            "revealed": "practice.revealed", "open": "practice.open"}
+
+
+def toggle(key: str) -> bool:
+    """The page's "Practise" switch."""
+    return st.toggle(t("practice.mode"), key=f"{key}_on", help=t("practice.mode_help"))
+
+
+def hint(step: Step, verdict: Verdict) -> str:
+    """The diagnosis in words, and the book's rule for the step where it helps."""
+    text = t(HINTS[verdict.diagnosis],
+             ratio=num(verdict.ratio, 3) if verdict.ratio is not None else "",
+             term=_plain(verdict.term), turn=num(abs(verdict.turn), 2) if verdict.turn else "")
+    if verdict.diagnosis in ("sense", "direction", "length", "wrong"):
+        text += " " + t(RULES[step.rule])
+    return text
+
+
+def _plain(symbol: str) -> str:
+    return symbol.replace("{", "").replace("}", "").replace("\\omega", "ω").replace(
+        "\\varepsilon", "ε").replace("\\cdot", "·")
+
+
+def _state(key: str, steps: list[Step]) -> dict:
+    """This page's practice run; a new one when the steps changed (another scene, instant
+    or scale)."""
+    signature = tuple((s.id, s.tolerance, str(s.expected)) for s in steps)
+    state = st.session_state.get(f"{key}_state")
+    if state is None or state["signature"] != signature:
+        state = {"signature": signature, "progress": Progress.start(), "index": 0,
+                 "tips": {}, "revision": 0}
+        st.session_state[f"{key}_state"] = state
+    return state
+
+
+def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> None:
+    """The practice of ``steps`` under the key ``key`` (one per page and method)."""
+    if not steps:
+        st.info(t("practice.no_steps"))
+        return
+    state = _state(key, steps)
+    progress: Progress = state["progress"]
+    index = min(state["index"], len(steps) - 1)
+    step = steps[index]
+    st.markdown(t("practice.step", n=index + 1, of=len(steps), part=t(PARTS[step.kind]))
+                + f" ${step.symbol}$ [{step.unit}]")
+    st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
+               else t("practice.rule_hidden"))
+    if drawable and step.kind != "scalar" and step.sheet:
+        _drawing(steps, index, key, state, progress, title)
+    _typing(step, key, progress)
+    _feedback(step, progress)
+    _moves(steps, index, key, state, progress)
+    if all(progress.done(s) for s in steps):
+        score(steps, progress, key)
+
+
+def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Progress,
+             title: str) -> None:
+    """The sheet: drag the red circle to the tip; the check follows on release."""
+    step = steps[index]
+    tip = state["tips"].get(step.id)
+    revision = f"{step.id}-{state['revision']}"
+    result = chart(practice_figure(steps, index, tip, title, t, look(), revision),
+                   f"practice-{key}", key=f"{key}_fig", editable=True)
+    st.caption(t("practice.drag_hint"))
+    drag = result.drag
+    if drag and drag.get("point") == "tip":
+        place = complex(float(drag["x"]), float(drag["y"]))
+        state["tips"][step.id] = place
+        at = place * step.scale
+        progress.give(step, at - step.tail if step.kind == "vector" else at)
+        state["revision"] += 1
+        st.rerun()
+
+
+def _typing(step: Step, key: str, progress: Progress) -> None:
+    """The same answer typed: length and direction, a point's x and y, or a signed value."""
+    with st.form(f"{key}_form_{step.id}", border=False):
+        if step.kind == "vector":
+            cols = st.columns(2)
+            size = cols[0].number_input(t("practice.length", unit=step.unit), value=None,
+                                        format="%.6g", key=f"{key}_len_{step.id}")
+            angle = cols[1].number_input(t("practice.angle"), value=None, format="%.6g",
+                                         key=f"{key}_ang_{step.id}")
+            answer = None if size is None or angle is None else polar(size, angle)
+        elif step.kind == "point":
+            cols = st.columns(2)
+            x = cols[0].number_input("x [m]", value=None, format="%.6g", key=f"{key}_x_{step.id}")
+            y = cols[1].number_input("y [m]", value=None, format="%.6g", key=f"{key}_y_{step.id}")
+            answer = None if x is None or y is None else complex(x, y)
+        else:
+            answer = st.number_input(t("practice.value", unit=step.unit), value=None,
+                                     format="%.6g", key=f"{key}_value_{step.id}")
+        if st.form_submit_button(t("practice.check"), icon=":material/check:"):
+            progress.give(step, answer)
+
+
+def _feedback(step: Step, progress: Progress) -> None:
+    verdicts = progress.verdicts.get(step.id, [])
+    if verdicts:
+        last = verdicts[-1]
+        (st.success if last.ok else st.warning)(hint(step, last))
+    if progress.done(step) and not any(v.ok for v in verdicts):
+        st.info(t("practice.shown", tries=len(verdicts), limit=TRIES))
+    if progress.done(step):
+        st.markdown(t("practice.exact") + " " + exact_text(step))
+
+
+def exact_text(step: Step) -> str:
+    """The exact answer as the student would write it."""
+    if step.kind == "scalar":
+        return f"{num(float(step.expected), 5)} {step.unit}"
+    z = complex(step.expected)
+    if step.kind == "point":
+        return f"({num(z.real, 5)}; {num(z.imag, 5)}) m"
+    return (f"{num(abs(z), 5)} {step.unit}, "
+            f"{num(math.degrees(math.atan2(z.imag, z.real)) % 360, 4)}°")
+
+
+def _moves(steps: list[Step], index: int, key: str, state: dict, progress: Progress) -> None:
+    cols = st.columns(3)
+
+    def go(to: int) -> None:
+        state["index"] = max(0, min(to, len(steps) - 1))
+
+    cols[0].button(t("practice.previous"), key=f"{key}_prev", on_click=go, args=(index - 1,),
+                   disabled=index == 0, icon=":material/arrow_back:", width="stretch")
+    cols[1].button(t("practice.reveal"), key=f"{key}_reveal",
+                   on_click=lambda: progress.reveal(steps[index]),
+                   disabled=progress.done(steps[index]), icon=":material/visibility:",
+                   width="stretch")
+    cols[2].button(t("practice.next"), key=f"{key}_next", on_click=go, args=(index + 1,),
+                   disabled=index == len(steps) - 1, icon=":material/arrow_forward:",
+                   width="stretch")
+
+
+def score(steps: list[Step], progress: Progress, key: str) -> None:
+    """The score (first try, after hints, revealed) and every step's answers as CSV (a
+    decimal point, for spreadsheets)."""
+    counts = progress.score(steps)
+    st.subheader(t("practice.score"))
+    cols = st.columns(3)
+    for col, outcome in zip(cols, ("first", "later", "revealed")):
+        col.metric(t(OUTCOMES[outcome]), f"{counts[outcome]} / {len(steps)}")
+    st.download_button(t("practice.csv"), lambda: answers_table(steps, progress).to_csv(
+        index=False).encode("utf-8"), f"practice-{key}.csv", mime="text/csv",
+        key=f"{key}_csv", on_click="ignore", icon=":material/download:")
+
+
+def answers_table(steps: list[Step], progress: Progress) -> pd.DataFrame:
+    """One row per step: what was asked, the exact value, each answer and its diagnosis."""
+    def value(v) -> str:
+        if v is None:
+            return ""
+        if isinstance(v, complex):
+            return f"{v.real:.6g}; {v.imag:.6g}"
+        return f"{float(v):.6g}"
+
+    return pd.DataFrame([{
+        "step": s.id, "symbol": _plain(s.symbol), "unit": s.unit, "exact": value(s.expected),
+        "tolerance": f"{s.tolerance:.3g}",
+        "answers": " | ".join(value(a) for a in progress.answers.get(s.id, [])),
+        "diagnoses": " | ".join(v.diagnosis for v in progress.verdicts.get(s.id, [])),
+        "outcome": progress.outcome(s)} for s in steps])
