@@ -15,6 +15,7 @@ from .style import NORMAL, Look, plane_layout
 DONE = "#7f7f7f"
 ANSWER = "#d62728"
 TIP = 0.18  # the tip's circle: radius in cm of paper
+REACH = 7.0  # cm of paper shown around the tail
 
 
 def practice_figure(steps: list[Step], index: int, tip: complex | None, title: str, t: Text,
@@ -39,6 +40,10 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
                          mode="markers+text", text=[html(n) if n else "" for _, n in points],
                          textposition="top right", hoverinfo="skip", showlegend=False,
                          marker=dict(size=5 * look.line, color="black"))])
+    # the sheet around the tail: room for any arrow a plan at a 12 cm scale can hold
+    corners = [start + REACH * c for c in (1 + 1j, -1 - 1j)]
+    fig.add_raw([scatter(x=[z.real for z in corners], y=[z.imag for z in corners], mode="markers",
+                         hoverinfo="skip", showlegend=False, marker=dict(opacity=0))])
     if tip is None:
         tip = start + (1.0 + 0.5j)
     if step.kind == "vector":
