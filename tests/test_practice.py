@@ -164,3 +164,21 @@ def test_a_missing_term_candidate_is_the_sum_without_it():
              terms=(Term("a", 1 + 0j), Term("b", 2 + 4j)), missing=(Term("a", 2 + 4j), Term("b", 1 + 0j)))
     assert grade(s, 2 + 4j).term == "a" and grade(s, 1 + 0j).term == "b"
     assert grade(s, 3 + 4.04j).ok and grade(s, 5 + 5j).diagnosis == "wrong"
+
+
+def test_any_scene_practises_a_link_and_an_exam_variant():
+    from exams.codes import Settings
+    from exams.variants import from_code, generate
+    from mechanisms.link import decode, encode
+
+    scene = load_preset("zbirka-3.1")
+    linked = steps_for(decode(encode(scene)), "plans")
+    direct = steps_for(scene, "plans")
+    assert [s.id for s in linked] == [s.id for s in direct]
+    assert all(abs(a.expected - b.expected) < 1e-12 * max(1.0, abs(b.expected))
+               for a, b in zip(linked, direct))
+    variant = generate(Settings("zbirka-3.1", 7), 1).variants[0]
+    steps = steps_for(from_code(variant.code).scene, "plans")
+    assert steps and all(grade(s, s.expected).ok for s in steps)
+    book = {s.id: s.expected for s in steps_for(scene, "plans")}
+    assert any(abs(complex(s.expected) - complex(book.get(s.id, 0))) > s.tolerance for s in steps)
