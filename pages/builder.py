@@ -76,12 +76,6 @@ def column(name: str):
     if name == "side":
         return st.column_config.SelectboxColumn(label, options=list(SIDE_LABELS),
                                                 format_func=lambda s: t(SIDE_LABELS[s]))
-    if name == "form":
-        return st.column_config.SelectboxColumn(label, options=list(FORM_LABELS), default="offset",
-                                                format_func=lambda f: t(FORM_LABELS[f]))
-    if name == "side":
-        return st.column_config.SelectboxColumn(label, options=list(SIDE_LABELS),
-                                                format_func=lambda s: t(SIDE_LABELS[s]))
     if name == "follows_member":
         return st.column_config.CheckboxColumn(label)
     if name in TEXT:

@@ -45,7 +45,8 @@ def screen_of(page, x: float, y: float) -> tuple[float, float]:
         return [box.left + L.xaxis.c2p(x), box.top + L.yaxis.c2p(y)]; }""", [x, y]))
 
 
-def drag_point(page, name: str, to: complex) -> None:
+def drag_shape(page, name: str, to: complex) -> None:
+    """Drag the drawing's circle ``name`` to ``to`` (the figure's units) with the mouse."""
     start = shapes(page)[name]
     x0, y0 = screen_of(page, start.real, start.imag)
     x1, y1 = screen_of(page, to.real, to.imag)
@@ -54,6 +55,10 @@ def drag_point(page, name: str, to: complex) -> None:
     page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=5)
     page.mouse.move(x1, y1, steps=5)
     page.mouse.up()
+
+
+def drag_point(page, name: str, to: complex) -> None:
+    drag_shape(page, name, to)
     # Plotly moves the circle at once; the server's redraw puts it on round millimetres
     page.wait_for_function(f"() => Math.hypot(({SHAPES})()[{name!r}][0] - {to.real}, "
                            f"({SHAPES})()[{name!r}][1] - {to.imag}) < 1e-9", timeout=30_000)
@@ -119,13 +124,7 @@ def test_the_exam_four_bar_is_built_by_dragging_and_typing_and_read_on_the_plans
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
 
-    page.get_by_role("button", name="2–3 · Velocity and acceleration plans").click()
-    wait_url(page, r"velocity_plans\?.*s=1")
-    wait_idle(page)
-    with page.expect_download() as download:
-        page.locator(".st-key-csv_members button").click()
-    rows = list(csv.DictReader(io.StringIO(open(download.value.path(), encoding="utf-8").read())))
-    omega = {int(r["member"]): float(r["ω [s⁻¹]"]) for r in rows}
+    omega = omegas_on_the_plans_page(page)
     assert omega[3] == pytest.approx(exact["w3"], rel=1e-4)
     assert omega[4] == pytest.approx(exact["w4"], rel=1e-4)
     assert page.locator("[data-testid='stException']").count() == 0
@@ -253,6 +252,15 @@ def watt_other_closure(phi2=math.radians(60), omega2=10.0):
     return dict(F=f, w3=w3, w4=w4, w5=w5, w6=w6)
 
 
+def omegas_on_the_plans_page(page) -> dict[int, float]:
+    """Open the built scene on the plans page (its button) and read ω per member from the
+    members table's CSV."""
+    page.get_by_role("button", name="2–3 · Velocity and acceleration plans").click()
+    wait_url(page, r"velocity_plans\?.*s=1")
+    wait_idle(page)
+    return {m: float(r["ω [s⁻¹]"]) for m, r in members_csv(page).items()}
+
+
 def members_csv(page) -> dict[int, dict]:
     with page.expect_download() as download:
         page.locator(".st-key-csv_members button").click()
@@ -274,12 +282,9 @@ def test_groups_flip_to_their_other_assembly_and_the_plans_page_reads_its_omegas
                            timeout=30_000)
     wait_idle(page)
     assert abs(shapes(page)["F"] - exact["F"]) < 1e-3  # drawn to the snapped guess
-    page.get_by_role("button", name="2–3 · Velocity and acceleration plans").click()
-    wait_url(page, r"velocity_plans\?.*s=1")
-    wait_idle(page)
-    rows = members_csv(page)
+    omegas = omegas_on_the_plans_page(page)
     for member in (3, 4, 5, 6):
-        assert float(rows[member]["ω [s⁻¹]"]) == pytest.approx(exact[f"w{member}"], rel=1e-4)
+        assert omegas[member] == pytest.approx(exact[f"w{member}"], rel=1e-4)
     shot = tmp_path / "builder-other-assembly-plans-en.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
@@ -298,10 +303,7 @@ def test_groups_flip_to_their_other_assembly_and_the_plans_page_reads_its_omegas
     shot = tmp_path / "builder-class-iii-other-assembly-en.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
-    page.get_by_role("button", name="2–3 · Velocity and acceleration plans").click()
-    wait_url(page, r"velocity_plans\?.*s=1")
-    wait_idle(page)
-    omegas = {m: float(r["ω [s⁻¹]"]) for m, r in members_csv(page).items()}
+    omegas = omegas_on_the_plans_page(page)
     from mechanisms.link import decode
     from solvers.diagnostics import solve_instant
     link = page.evaluate("() => new URL(location.href).searchParams.get('s')")

@@ -7,21 +7,14 @@ from cli.practice import steps_for
 from mechanisms import load_preset
 
 from .test_browser import keep, open_page, wait_idle
-from .test_builder_browser import screen_of, shapes
+from .test_builder_browser import drag_shape, shapes
 
 pytestmark = pytest.mark.browser
 
 
 def drag_tip(page, to: complex) -> None:
-    """Drag the sheet's red circle to ``to`` (cm on the paper) with the mouse."""
-    start = shapes(page)["tip"]
-    x0, y0 = screen_of(page, start.real, start.imag)
-    x1, y1 = screen_of(page, to.real, to.imag)
-    page.mouse.move(x0, y0)
-    page.mouse.down()
-    page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=5)
-    page.mouse.move(x1, y1, steps=5)
-    page.mouse.up()
+    """Drag the sheet's red circle to ``to`` (cm on the paper)."""
+    drag_shape(page, "tip", to)
 
 
 def test_dragging_the_tip_on_the_plans_page_is_checked_on_release(app_url, browser, tmp_path):
