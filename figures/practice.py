@@ -22,14 +22,20 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
                     look: Look = NORMAL, revision: str = "") -> RawFigure:
     """Step ``index`` of ``steps`` on its sheet: the earlier steps of the same sheet drawn
     exactly (arrows, or points for a compass step; an image reached from the pole as its
-    labelled point), the tail as a point, and a draggable circle named "tip" at ``tip`` (cm
-    on the paper; the tail plus a small offset when None) with the student's arrow to it."""
+    labelled point), a polygon's known sides before its closing side, the tail as a point,
+    and a draggable circle named "tip" at ``tip`` (cm on the paper; the tail plus a small
+    offset when None) with the student's arrow to it."""
     step = steps[index]
     scale = step.scale or 1.0
     fig = RawFigure()
     earlier = [s for s in steps[:index] if s.sheet == step.sheet and s.kind != "scalar"]
     arrows = [(s.tail / scale, (s.tail + complex(s.expected)) / scale, DONE)
               for s in earlier if s.kind == "vector" and s.rule != "sum"]
+    if step.rule == "closing":  # the polygon's known sides, head to tail, up to the tail
+        end = 0j
+        for term in step.terms:
+            arrows.append((end / scale, (end - complex(term.value)) / scale, DONE))
+            end -= complex(term.value)
     fig.add_raw(arrow_traces(arrows, 1.6 * look.line))
     points = [(complex(s.expected) / scale if s.kind == "point" else
                (s.tail + complex(s.expected)) / scale, s.symbol) for s in earlier
