@@ -7,7 +7,7 @@ from cli.practice import steps_for
 from mechanisms import load_preset
 
 from .test_browser import keep, open_page, wait_idle
-from .test_builder_browser import drag_shape, shapes
+from .test_builder_browser import SHAPES, drag_shape, shapes
 
 pytestmark = pytest.mark.browser
 
@@ -34,6 +34,9 @@ def test_dragging_the_tip_on_the_plans_page_is_checked_on_release(app_url, brows
     wait_idle(page)
     second = steps_for(load_preset("zbirka-3.1"), "plans")[1]
     start = second.tail / second.scale
+    fresh = start + (1.0 + 0.5j)  # the new step's circle, before the student moves it
+    page.wait_for_function(f"() => Math.hypot(({SHAPES})()['tip'][0] - {fresh.real}, "
+                           f"({SHAPES})()['tip'][1] - {fresh.imag}) < 1e-9", timeout=30_000)
     reversed_tip = start - complex(second.expected) / second.scale
     drag_tip(page, reversed_tip)
     page.get_by_text("the arrow points the other way").wait_for(timeout=30_000)
