@@ -5,6 +5,7 @@ import streamlit as st
 from ui.chapters import BUILDER, CHAPTERS, VARIANTS
 from ui.firstpaint import begin_run, end_run
 from ui.i18n import language_picker, t
+from ui.layout import frame_css
 from ui.present import projector_switch
 
 
@@ -20,6 +21,7 @@ def home() -> None:
 st.set_page_config(page_title="Mehanizmi", page_icon=":material/settings:", layout="wide")
 language_picker()
 projector_switch()
+frame_css()
 pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
 pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER, VARIANTS)]
 pages.append(st.Page("pages/textbook_check.py", title=t("check.title"), icon=":material/fact_check:"))

@@ -28,6 +28,7 @@ from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import first_run, waiting
 from ui.i18n import current as current_language, num, t, title_of
+from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_position, driver_start, scene_download, scene_picker
@@ -122,7 +123,7 @@ def newton_table(scene: Scene, tol: float) -> None:
 def about_the_survey(base: Scene, scene: Scene, current: Motion, survey: Motion, tol: float) -> None:
     """Under the drawing: the special points' table, Newton's accuracy and iterations."""
     if survey.special:
-        st.subheader(t("assur.special"))
+        st.header(t("assur.special"))
         st.caption(t("assur.special_hint"))
         table = special_table(current, 0)
         show_table(table, f"{scene.id}-special-points.csv", "special_csv")
@@ -156,7 +157,7 @@ def self_check(scene: Scene, structure, current: Motion) -> list[Quantity]:
                            Quantity(f"v_{name} [m/s]", float(abs(p.v[0])), "m/s")]
     return quantities
 
-controls, main = st.columns([1, 3], gap="large")
+controls, main = page_columns()
 asked = live()  # a chart's φ₂ control was touched: this run sends the frames
 with controls:
     base = scene_picker(default="zbirka-4.1")

@@ -214,7 +214,7 @@ def assemblies(structure, solved: builder.Drawing, doc: dict) -> None:
 
 
 def study(scene: Scene) -> None:
-    st.subheader(t("build.study"))
+    st.header(t("build.study"))
     cols = st.columns(len(LINKAGE_PAGES))
     for col, chapter in zip(cols, LINKAGE_PAGES):
         if col.button(t(chapter.title), icon=chapter.icon, key=f"open_{chapter.file}", width="stretch"):

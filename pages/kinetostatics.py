@@ -33,6 +33,7 @@ from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import waiting
 from ui.i18n import current, num, scaled_title, t, title_of
+from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
@@ -186,7 +187,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
 def book_lever(k: Kinetostatics, now: int) -> None:
     """The reduced mechanism as tasks 5.3–5.4 write it: the unlettered points placed by
     proportion, the moments about the pole, F_p and M_p against the group-by-group value."""
-    st.subheader(t("forces.lever_book"))
+    st.header(t("forces.lever_book"))
     st.caption(t("forces.lever_book_hint"))
     lever = lever_construction(k, now)
     proportions, moments = lever_latex(lever, k.rotating)
@@ -246,7 +247,7 @@ def turn_frames(scene: Scene, values: tuple[float, ...], inertia: bool,
     return crank_frames(draw, values)
 
 
-controls, main = st.columns([1, 3], gap="large")
+controls, main = page_columns()
 asked = live()  # a chart's φ₂ control was touched: this run sends the frames
 with controls:
     base = scene_picker(default="predavanja-kinetostatika")
@@ -276,11 +277,11 @@ with main:
 
 def load_tables(k: Kinetostatics, now: int) -> None:
     """Under the loads: the joint reactions, and the inertia loads when they count."""
-    st.subheader(t("forces.reactions"))
+    st.header(t("forces.reactions"))
     st.caption(t("forces.reactions_hint"))
     show_table(reactions_table(k, now), f"{scene.id}-reactions.csv", "csv_reactions")
     if k.inertia:
-        st.subheader(t("forces.inertia_title"))
+        st.header(t("forces.inertia_title"))
         st.caption(t("forces.inertia_hint"))
         show_table(inertia_table(k, now), f"{scene.id}-inertia.csv", "csv_inertia")
 

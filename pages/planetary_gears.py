@@ -18,6 +18,7 @@ from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import waiting
 from ui.i18n import num, t
+from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -47,7 +48,7 @@ def meshes_table(base: GearTrain) -> pd.DataFrame:
                           "R_b [m]": m.radii[1], "ring": m.internal or 0} for m in base.meshes])
 
 
-controls, main = st.columns([1, 3], gap="large")
+controls, main = page_columns()
 with controls:
     base = scene_picker("gears")
     seed(defaults(base), st.session_state["scene"])

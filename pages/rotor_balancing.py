@@ -19,6 +19,7 @@ from ui.chapters import page_title
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import waiting
 from ui.i18n import num, scaled_title, t
+from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -33,7 +34,7 @@ MM = 1e3  # the course writes radii and distances in mm, U in kg·mm and V in kg
 COLUMNS = ("m [kg]", "r [mm]", "φ [°]", "x [mm]")
 
 page_title("pages/rotor_balancing.py")
-controls, main = st.columns([1, 3], gap="large")
+controls, main = page_columns()
 
 
 
@@ -153,7 +154,7 @@ with main:
     if practice.toggle("pr_balance"):  # the corrections stay hidden: the student finds them
         practice.panel(practice_steps.balance(result), "pr_balance", t("practice.sheet_rotor"))
         st.stop()  # (app.py still ends the run)
-    st.subheader(t("rotor.results"))
+    st.header(t("rotor.results"))
     corrections_table = results_table(result)
     show_table(corrections_table, f"{rotor.id}-corrections.csv", "csv")
     cols = st.columns(2)
@@ -211,7 +212,7 @@ with main:
 def drawing_accuracy() -> None:
     """Under the polygons: what a drawing to the chosen precision misses, the answer box, and
     the analytical solution step by step."""
-    st.subheader(t("rotor.accuracy_title"))
+    st.header(t("rotor.accuracy_title"))
     rows, answers = [], []
     for plane, f in result.corrections.items():
         size = abs(found[plane])

@@ -42,7 +42,7 @@ cols = st.columns(len(COUNTED))
 for col, verdict in zip(cols, COUNTED):
     col.metric(t(VERDICTS[verdict]), sum(r.verdict == verdict for r in everything))
 
-st.subheader(t("check.coverage_title"))
+st.header(t("check.coverage_title"))
 st.dataframe(coverage_table(checks), hide_index=True)
 box = st.expander(t("check.tasks_title"), key="tasks_open", on_change="rerun")
 if box.open:  # filled only while open
@@ -52,7 +52,7 @@ if box.open:  # filled only while open
 table = []
 for pid in sorted(checks, key=order):
     scene = load_preset(pid)
-    st.subheader(f"{pid} — {title_of(scene)}")
+    st.header(f"{pid} — {title_of(scene)}")
     st.page_link(page_for(pid), label=t("check.open"), icon=":material/open_in_new:",
                  query_params={"scene": pid})
     rows = checks[pid]

@@ -34,6 +34,7 @@ from ui.docs import method_doc
 from ui.export import chart, csv_button, show_table
 from ui.firstpaint import waiting
 from ui.i18n import current, num, t, title_of
+from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -72,7 +73,7 @@ def animation(scene: Scene, steps: int, points: tuple[str, ...], language: str, 
     return animation_figure(fine, frames, list(points), title_of(scene), t, look_)
 
 
-controls, main = st.columns([1, 3], gap="large")
+controls, main = page_columns()
 
 
 COMPASS = {"crank": "compass.crank", "arc": "compass.arc", "meet": "compass.meet",
@@ -232,7 +233,7 @@ def readouts() -> None:
 
 def resolution_table() -> None:
     """Under the chart: what each resolution costs and misses, the paths as CSV, the speed panel."""
-    st.subheader(t("traj.accuracy_title"))
+    st.header(t("traj.accuracy_title"))
     rows = [{t("traj.col_positions"): r["positions"], t("traj.col_solve"): num(r["solve_ms"], 3),
              t("traj.col_deviation"): num(r["deviation_m"] * 1e3, 3),
              t("traj.col_current"): "◀" if r["positions"] == steps else ""}

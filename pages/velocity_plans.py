@@ -29,6 +29,7 @@ from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import first_run, waiting
 from ui.i18n import current, num, t, title_of
+from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -79,7 +80,7 @@ def scale_inputs() -> dict[str, float]:
     return {"L": scales["L"], "v": scales["v"], "a": scales["a"], "precision_cm": precision / 10}
 
 
-controls, main = st.columns([1, 3], gap="large")
+controls, main = page_columns()
 asked = live()  # a chart's φ₂ control was touched: this run sends the frames
 
 with controls:

@@ -85,7 +85,7 @@ def test_every_preset_that_quotes_the_book_is_on_the_textbook_check_page():
 
     at = page("pages/textbook_check.py", lang="en")
     assert not at.exception
-    headings = " ".join(h.value for h in at.subheader)
+    headings = " ".join(h.value for h in at.header)
     quoting = [pid for pid in preset_ids() if load_preset(pid).book]
     assert len(quoting) >= 9
     for pid in quoting:

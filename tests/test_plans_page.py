@@ -70,7 +70,7 @@ def test_the_other_tabs_render(tab):
         assert any(r"\text{B:}" in x.value for x in at.latex)
         assert "Both methods agree" in text
     else:
-        assert any("Book vs exact" in h.value for h in at.subheader)
+        assert any("Book vs exact" in h.value for h in at.header)
 
 
 def test_self_check_accepts_a_value_within_drawing_precision():

@@ -101,7 +101,7 @@ def test_the_score_and_the_csv_come_when_every_step_is_done():
             _type(at, "pr_willis", step, step.expected)
         if i < len(steps) - 1:
             next(b for b in at.button if b.key == "pr_willis_next").click().run()
-    assert t("practice.score", "en") in [h.value for h in at.subheader]
+    assert t("practice.score", "en") in [h.value for h in at.header]
     values = {m.label: m.value for m in at.metric}
     n = len(steps)
     assert values[t("practice.first", "en")] == f"{n - 1} / {n}"

@@ -50,7 +50,7 @@ def fit_summary(scene, rows: list[BookRow]) -> None:
 def book_section(scene, base) -> None:
     """Book vs exact on a chapter page: only for the scene as loaded (the printed values
     belong to its own data), with its CSV."""
-    st.subheader(t("plans.book_title"))
+    st.header(t("plans.book_title"))
     if scene == base:
         show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
     else:

@@ -164,6 +164,9 @@ function showIndex(crank, k) {
   const reachable = !spec.turn || spec.turn.frames[k];
   crank.label.textContent = `${spec.label} = ${spec.values[k]}°${reachable ? "" : " ✕"}`;
   crank.label.title = reachable ? "" : crank.unreachable;  // why the chart does not move
+  // a screen reader names the slider and reads the angle, not the frame's index
+  crank.range.setAttribute("aria-label", `${spec.label} [°]`);
+  crank.range.setAttribute("aria-valuetext", crank.label.textContent);
 }
 
 function showFrame(gd, k) {
@@ -193,6 +196,7 @@ function crankButton(text, title, click) {
   b.type = "button";
   b.textContent = text;
   b.title = title;
+  b.setAttribute("aria-label", title);  // the symbols ◀ ▶ ❚❚ say nothing to a screen reader
   b.addEventListener("click", click);
   return b;
 }
@@ -228,6 +232,7 @@ function crankControls(gd, labels) {
     crank.playing = false;
     play.textContent = "❚❚";
     play.title = labels.pause;
+    play.setAttribute("aria-label", labels.pause);
     timer = setInterval(() => moveCrank(gd, (crank.index + 1) % n(), false), 80);
   };
   crank.stop = () => {
@@ -236,6 +241,7 @@ function crankControls(gd, labels) {
     timer = null;
     play.textContent = "▶";
     play.title = labels.play;
+    play.setAttribute("aria-label", labels.play);
     return true;
   };
   const step = (by) => () => {
@@ -246,7 +252,8 @@ function crankControls(gd, labels) {
   range.addEventListener("pointerdown", () => askFrames(gd));
   range.addEventListener("input", () => { crank.stop(); moveCrank(gd, Number(range.value), false); });
   range.addEventListener("change", () => moveCrank(gd, Number(range.value), true));
-  box.append(crankButton("◀", "−5°", step(-1)), play, crankButton("▶|", "+5°", step(1)), range, label);
+  box.append(crankButton("◀", `${crank.spec.label} −5°`, step(-1)), play,
+             crankButton("▶|", `${crank.spec.label} +5°`, step(1)), range, label);
   gd.after(box);
   Object.assign(crank, { box, range, label });
   crank.follow = (e) => {

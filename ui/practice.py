@@ -173,7 +173,7 @@ def score(steps: list[Step], progress: Progress, key: str) -> None:
     """The score (first try, after hints, revealed) and every step's answers as CSV (a
     decimal point, for spreadsheets)."""
     counts = progress.score(steps)
-    st.subheader(t("practice.score"))
+    st.header(t("practice.score"))
     cols = st.columns(3)
     for col, outcome in zip(cols, ("first", "later", "revealed")):
         col.metric(t(OUTCOMES[outcome]), f"{counts[outcome]} / {len(steps)}")
