@@ -71,12 +71,13 @@ with controls:
     pole = h * u_l  # the pole's distance below the axis, in metres of the drawing's scale
 
 with main:
-    st.markdown(f"**{t('gears.meshes')}**")
-    own = meshes_table(base)
-    table = st.data_editor(url_table("meshes", own, base.id), key=f"meshes-{base.id}",
-                           width="stretch", disabled=["a", "b"],
-                           column_config={"ring": st.column_config.NumberColumn(t("gears.ring"))})
-    table_to_url("meshes", table, own)
+    with st.container(key="later_meshes"):  # on a phone, after the charts (ui/layout.py)
+        st.markdown(f"**{t('gears.meshes')}**")
+        own = meshes_table(base)
+        table = st.data_editor(url_table("meshes", own, base.id), key=f"meshes-{base.id}",
+                               width="stretch", disabled=["a", "b"], column_config={
+                                   "ring": st.column_config.NumberColumn(t("gears.ring"))})
+        table_to_url("meshes", table, own)
     meshes = tuple(Mesh((int(r["a"]), int(r["b"])), (float(r["R_a [m]"]), float(r["R_b [m]"])),
                         int(r["ring"]) or None, old.bevel)
                    for (_, r), old in zip(table.iterrows(), base.meshes))

@@ -92,7 +92,7 @@ with controls:
     precision = st.slider(t("rotor.precision"), 0.1, 2.0, 0.5, 0.1, key="precision",
                           bind="query-params")
 
-with main:
+with main, st.container(key="later_masses"):  # on a phone, after the polygons (ui/layout.py)
     st.markdown(f"**{t('rotor.masses')}**")
     own = table_of(base)
     table = st.data_editor(url_table("masses", own, base.id, rows_fixed=False), num_rows="dynamic",
@@ -154,18 +154,22 @@ with main:
     if practice.toggle("pr_balance"):  # the corrections stay hidden: the student finds them
         practice.panel(practice_steps.balance(result), "pr_balance", t("practice.sheet_rotor"))
         st.stop()  # (app.py still ends the run)
-    st.header(t("rotor.results"))
-    corrections_table = results_table(result)
-    show_table(corrections_table, f"{rotor.id}-corrections.csv", "csv")
-    cols = st.columns(2)
-    cols[0].metric(t("rotor.residual_force"), f"{num(result.residual_force * MM, 2)} kg·mm")
-    cols[1].metric(t("rotor.residual_moment"), f"{num(result.residual_moment * MM**2, 2)} kg·mm²")
-    before, after = result.bearing_forces(False), result.bearing_forces(True)
-    if before:
-        cols = st.columns(4)
-        for i, bearing in enumerate(("A", "B")):
-            cols[i].metric(t("rotor.bearing_before", bearing=bearing), f"{num(before[bearing], 4)} N")
-            cols[2 + i].metric(t("rotor.bearing_after", bearing=bearing), f"{num(after[bearing], 2)} N")
+    with st.container(key="later_results"):  # on a phone, after the polygons (ui/layout.py)
+        st.header(t("rotor.results"))
+        corrections_table = results_table(result)
+        show_table(corrections_table, f"{rotor.id}-corrections.csv", "csv")
+        cols = st.columns(2)
+        cols[0].metric(t("rotor.residual_force"), f"{num(result.residual_force * MM, 2)} kg·mm")
+        cols[1].metric(t("rotor.residual_moment"),
+                       f"{num(result.residual_moment * MM**2, 2)} kg·mm²")
+        before, after = result.bearing_forces(False), result.bearing_forces(True)
+        if before:
+            cols = st.columns(4)
+            for i, bearing in enumerate(("A", "B")):
+                cols[i].metric(t("rotor.bearing_before", bearing=bearing),
+                               f"{num(before[bearing], 4)} N")
+                cols[2 + i].metric(t("rotor.bearing_after", bearing=bearing),
+                                   f"{num(after[bearing], 2)} N")
 
     names = [f"U{i + 1}" for i in range(len(rotor.masses))]
     us = [m.mass * m.radius * unit(m.angle) * MM for m in rotor.masses]  # kg·mm

@@ -1,10 +1,17 @@
 """Serve the app: ``streamlit run`` with Nagle's algorithm off on the server's connections,
-and static files gzipped once for a browser that accepts it (scripts/precompressed.py).
+and static files gzipped once for a browser that accepts it.
 
-Streamlit (1.67) creates its listening socket without naming TCP as the protocol, and asyncio
-sets TCP_NODELAY only on sockets that name it. With Nagle's algorithm on, every message a
-rerun sends after the first waits for the browser's delayed ACK, 40 ms on Linux: a
+Nagle: Streamlit (1.67) creates its listening socket without naming TCP as the protocol, and
+asyncio sets TCP_NODELAY only on sockets that name it. With Nagle's algorithm on, every
+message a rerun sends after the first waits for the browser's delayed ACK, 40 ms on Linux: a
 one-slider page took 46 ms a rerun, of which 4 ms was work (bench/pages.py measures it).
+
+Gzip: Streamlit serves its own scripts (``/static/…``, content-hashed) and ours
+(``/app/static/…``: Plotly's bundles, named by version) uncompressed: gzipping at the origin
+on every request cost it CPU under load, so it leaves compression to a proxy. On a mobile
+link those 3.6–5.1 MB were most of a first visit's five seconds. Here each file is
+compressed once, the first time it is asked for, and kept: every later request is served
+from memory. Our bundles get the year-long immutable lifetime Streamlit gives its own.
 
     .venv/bin/python scripts/serve.py app.py [streamlit run's options]
 """
@@ -12,13 +19,71 @@ one-slider page took 46 ms a rerun, of which 4 ms was work (bench/pages.py measu
 from __future__ import annotations
 
 import asyncio.base_events
+import gzip
 import socket
 import sys
 
 from streamlit.web import cli
 from streamlit.web.server.starlette import starlette_app
 
-from precompressed import PrecompressedStatic
+COMPRESSIBLE = (b"text/", b"application/javascript", b"application/json", b"image/svg+xml")
+SMALLEST = 1024  # below this the gzip header is not worth it
+PREFIXES = ("/static/", "/app/static/")
+YEAR = b"public, immutable, max-age=31536000"
+
+
+def _accepts_gzip(scope) -> bool:
+    return any(name == b"accept-encoding" and b"gzip" in value.lower()
+               for name, value in scope.get("headers", ()))
+
+
+class PrecompressedStatic:
+    """ASGI middleware: a GET of a static file by a client that accepts gzip gets the file
+    gzipped (compressed once per file and version, then kept); anything else passes."""
+
+    def __init__(self, app, cache_limit: int = 64):
+        self.app = app
+        self.cache: dict[tuple, bytes] = {}
+        self.cache_limit = cache_limit
+
+    async def __call__(self, scope, receive, send):
+        path = scope.get("path", "")
+        if (scope["type"] != "http" or scope.get("method") != "GET"
+                or not path.startswith(PREFIXES) or not _accepts_gzip(scope)):
+            await self.app(scope, receive, send)
+            return
+        start: dict = {}
+        body: list[bytes] = []
+
+        async def capture(message):
+            if message["type"] == "http.response.start":
+                start.update(message)
+            elif message["type"] == "http.response.body":
+                body.append(message.get("body", b""))
+
+        await self.app(scope, receive, capture)
+        headers = [(k.lower(), v) for k, v in start.get("headers", [])]
+        data = b"".join(body)
+        kind = dict(headers).get(b"content-type", b"")
+        if (start.get("status") != 200 or len(data) < SMALLEST or dict(headers).get(b"content-encoding")
+                or not kind.startswith(COMPRESSIBLE)):
+            await send(start)
+            await send({"type": "http.response.body", "body": data})
+            return
+        key = (path, len(data), dict(headers).get(b"etag"), dict(headers).get(b"last-modified"))
+        packed = self.cache.get(key)
+        if packed is None:
+            packed = gzip.compress(data, compresslevel=9, mtime=0)
+            if len(self.cache) >= self.cache_limit:
+                self.cache.pop(next(iter(self.cache)))
+            self.cache[key] = packed
+        kept = [(k, v) for k, v in headers if k not in (b"content-length", b"vary")]
+        if path.startswith("/app/static/plotly-"):  # named by version: never changes
+            kept = [(k, v) for k, v in kept if k != b"cache-control"] + [(b"cache-control", YEAR)]
+        kept += [(b"content-encoding", b"gzip"), (b"vary", b"Accept-Encoding"),
+                 (b"content-length", str(len(packed)).encode())]
+        await send({**start, "headers": kept})
+        await send({"type": "http.response.body", "body": packed})
 
 
 def _set_nodelay(sock: socket.socket) -> None:

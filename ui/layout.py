@@ -4,7 +4,9 @@ the charts first on a phone; captions dark enough to read (WCAG's 4.5:1).
 Streamlit stacks a row of columns below 640 px in their order, so a chapter page's column of
 sliders came first and its chart two to four screens down. ``page_columns`` keys the page's
 row, and on a narrow screen that row alone is shown in reverse: the chart (with its own φ₂
-control under it) comes first, the rest of the controls follow.
+control under it) comes first, the rest of the controls follow. What a page puts in a
+container keyed ``later…`` (an input table, a results table above the charts) moves after
+the charts there, and a row of metrics stays two abreast instead of four screens long.
 """
 
 from __future__ import annotations
@@ -13,12 +15,20 @@ import streamlit as st
 
 CSS = """
 <style>
-/* captions: Streamlit's grey is 3.7:1 on white; this one is 7:1 */
-[data-testid="stCaptionContainer"], [data-testid="stCaptionContainer"] p,
-[data-testid="stWidgetLabel"] [data-testid="stCaptionContainer"] { color: #4a4c57; }
+/* captions: Streamlit draws them at 60 % opacity, 3.0:1 on white; these are 6.6:1 */
+[data-testid="stCaptionContainer"] { opacity: 1; color: #5c5e66; }
+/* a page's sections are h2 under its h1 (no level skipped), at a subheading's size */
+[data-testid="stHeading"] h2 { font-size: 1.5rem; padding-top: 0.75rem; }
 @media (max-width: 640px) {
   .st-key-page > div > [data-testid="stHorizontalBlock"],
   .st-key-page > [data-testid="stHorizontalBlock"] { flex-direction: column-reverse; }
+  [class*="st-key-later"], div:has(> [class*="st-key-later"]) { order: 1; }
+  [data-testid="stHorizontalBlock"]:has(> [data-testid="stColumn"] > [data-testid="stVerticalBlock"]
+    > [data-testid="stElementContainer"] > [data-testid="stMetric"]) { flex-wrap: wrap; }
+  [data-testid="stHorizontalBlock"]:has(> [data-testid="stColumn"] > [data-testid="stVerticalBlock"]
+    > [data-testid="stElementContainer"] > [data-testid="stMetric"]) > [data-testid="stColumn"] {
+    flex: 1 1 40% !important; min-width: 40% !important; width: auto !important; }
+  [data-testid="stMetricValue"] { font-size: 1.6rem; }
   [data-testid="stMainBlockContainer"] { padding-left: 0.75rem; padding-right: 0.75rem; }
   [data-testid="stMainBlockContainer"] h1 { font-size: 1.6rem; padding-top: 0.25rem; }
 }

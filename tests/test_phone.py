@@ -1,0 +1,121 @@
+"""On a phone and for every reader (Playwright + Debian chromium): with an iPhone 13 profile
+every page shows its first chart on the first screen and never scrolls sideways, a joint of
+the builder is dragged by a finger, axe-core finds no critical or serious violation on any
+page in Serbian or English, and the server sends its scripts gzipped when asked."""
+
+from __future__ import annotations
+
+import gzip
+import urllib.request
+from pathlib import Path
+
+import pytest
+
+from .test_browser import CHROMIUM, FLAGS, ROOT, keep, wait_idle
+from .test_builder_browser import SHAPES, screen_of, shapes
+
+pytestmark = pytest.mark.browser
+
+PAGES = ["trajectories", "velocity_plans", "assur_groups", "kinetostatics", "planetary_gears",
+         "rotor_balancing", "builder"]
+AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
+CHART_TOP = """() => { const chart = document.querySelector('.main-svg');
+  const main = document.querySelector('[data-testid="stMain"]');
+  return chart.getBoundingClientRect().top + (main ? main.scrollTop : 0); }"""
+
+
+@pytest.fixture(scope="module")
+def phone():
+    """A function that opens a page in a fresh iPhone 13 context (touch, 390 × 664 CSS px)."""
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        device = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
+        contexts = []
+
+        def open_phone(url: str):
+            context = browser.new_context(**device)
+            contexts.append(context)
+            page = context.new_page()
+            page.goto(url)
+            page.wait_for_selector(".js-plotly-plot", timeout=60_000)
+            wait_idle(page)
+            return page
+
+        yield open_phone
+        for context in contexts:
+            context.close()
+        browser.close()
+
+
+@pytest.mark.parametrize("name", PAGES)
+def test_the_first_chart_is_on_the_first_screen_and_nothing_scrolls_sideways(app_url, phone, name,
+                                                                             tmp_path):
+    page = phone(f"{app_url}/{name}?lang=sr")
+    height = page.evaluate("() => window.innerHeight")
+    top = page.evaluate(CHART_TOP)
+    assert 0 < top < height, f"the first chart starts at {top:.0f} px of {height}"
+    assert page.evaluate("() => document.documentElement.scrollWidth <= window.innerWidth")
+    shot = tmp_path / f"phone-{name}-sr.png"
+    page.screenshot(path=str(shot))
+    keep(shot)
+
+
+@pytest.mark.parametrize("lang", ["sr", "en"])
+def test_axe_finds_no_critical_or_serious_violation_on_any_page(app_url, phone, lang):
+    found = {}
+    for name in PAGES:
+        page = phone(f"{app_url}/{name}?lang={lang}")
+        page.add_script_tag(content=AXE.read_text(encoding="utf-8"))
+        violations = page.evaluate("async () => (await axe.run(document)).violations"
+                                   ".map(v => [v.id, v.impact, v.nodes[0].html.slice(0, 160)])")
+        bad = [v for v in violations if v[1] in ("critical", "serious")]
+        if bad:
+            found[name] = bad
+        page.context.close()
+    assert not found, found
+
+
+def test_a_finger_drags_a_joint_of_the_builder_and_the_drawing_follows(app_url, phone):
+    page = phone(f"{app_url}/builder?lang=sr")
+    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
+    page.locator(".mehanizmi-plot").evaluate("e => e.scrollIntoView({block: 'center'})")
+    page.wait_for_timeout(300)
+    before = shapes(page)
+    target = before["D"] - 0.08  # the rocker's pivot, 8 cm to the left
+    x0, y0 = screen_of(page, before["D"].real, before["D"].imag)
+    x1, y1 = screen_of(page, target.real, target.imag)
+    cdp = page.context.new_cdp_session(page)
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [{"x": x0, "y": y0}]})
+    for k in range(1, 11):
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [
+            {"x": x0 + (x1 - x0) * k / 10, "y": y0 + (y1 - y0) * k / 10}]})
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+    page.wait_for_function(f"b => Math.abs(({SHAPES})()['D'][0] - b) > 0.02",
+                           arg=before["D"].real, timeout=30_000)
+    wait_idle(page)
+    after = shapes(page)
+    assert abs(after["D"] - target) < 0.01  # snapped to round millimetres near the finger
+    paths = "() => Array.from(document.querySelector('.mehanizmi-plot').data[0].x).join()"
+    assert page.evaluate(paths)  # the paths were redrawn for the new pivot
+    assert page.locator("[data-testid='stException']").count() == 0
+
+
+def test_the_server_sends_scripts_and_plotly_gzipped_when_asked(app_url):
+    page = urllib.request.urlopen(f"{app_url}/").read().decode()
+    script = next(part.split('"')[0] for part in page.split('src="')[1:] if part.endswith(".js\"")
+                  or ".js" in part.split('"')[0])
+    plotly = next((ROOT / "static").glob("plotly-basic-*.min.js"), None) or next(
+        (ROOT / "static").glob("plotly-*.min.js"))
+    for path in (script.lstrip("./"), f"app/static/{plotly.name}"):
+        plain = urllib.request.urlopen(f"{app_url}/{path}")
+        body = plain.read()
+        assert plain.headers.get("Content-Encoding") is None
+        asked = urllib.request.urlopen(urllib.request.Request(
+            f"{app_url}/{path}", headers={"Accept-Encoding": "gzip"}))
+        packed = asked.read()
+        assert asked.headers["Content-Encoding"] == "gzip"
+        assert "immutable" in asked.headers["Cache-Control"]
+        assert gzip.decompress(packed) == body and len(packed) < len(body) / 2
+    assert Path(AXE).exists()
