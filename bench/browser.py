@@ -6,6 +6,7 @@ navigation → first chart painted, and the bytes transferred by then.
 
     .venv/bin/python bench/browser.py           # print the table
     .venv/bin/python bench/browser.py --write   # and regenerate its part of docs/performance.md
+    .venv/bin/python bench/browser.py --phone   # only the phone rows (iPhone 13, 10 Mbit/s)
 """
 
 import asyncio
@@ -163,6 +164,64 @@ def first_paint(browser, url: str) -> tuple[float, float]:
     return statistics.median(times), statistics.median(sizes)
 
 
+# A phone: iPhone 13 (390 × 664 CSS px, touch) over Chrome's emulated 10 Mbit/s, 40 ms link
+PHONE_LINK = {"offline": False, "latency": 40, "downloadThroughput": 10e6 / 8,
+              "uploadThroughput": 5e6 / 8}
+CHART_TOP = """() => { const chart = document.querySelector('.main-svg');
+  const main = document.querySelector('[data-testid="stMain"]');
+  return chart.getBoundingClientRect().top + (main ? main.scrollTop : 0); }"""
+
+
+def phone_paint(browser, device: dict, url: str) -> tuple[float, float, float]:
+    """Medians over VISITS fresh phone contexts on the slow link: ms to the first chart
+    painted, kB on the wire by then (encoded: what a gzip saves counts), and where the chart
+    starts (CSS px from the page's top; the screen is 664 high)."""
+    times, sizes, tops = [], [], []
+    for _ in range(VISITS):
+        context = browser.new_context(**device)
+        context.add_init_script(FIRST_PAINT)
+        page = context.new_page()
+        cdp = context.new_cdp_session(page)
+        cdp.send("Network.enable")
+        cdp.send("Network.emulateNetworkConditions", PHONE_LINK)
+        wire = []
+        cdp.on("Network.loadingFinished", lambda e: wire.append(e["encodedDataLength"]))
+        page.goto(url, wait_until="commit")
+        page.wait_for_function("() => window.__firstChart", timeout=120_000)
+        times.append(page.evaluate("() => window.__firstChart"))
+        sizes.append(sum(wire) / 1e3)
+        tops.append(page.evaluate(CHART_TOP))
+        context.close()
+    return statistics.median(times), statistics.median(sizes), statistics.median(tops)
+
+
+def phone_rows(p, port: int) -> list[str]:
+    browser = p.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
+                                args=["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"])
+    device = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
+    rows = ["", f"| page, on a phone (iPhone 13, 10 Mbit/s, 40 ms; Serbian) | navigation → first "
+            f"chart painted, ms (median of {VISITS}) | on the wire by then, kB | the chart starts "
+            "at, px (screen: 664) |", "|---|---:|---:|---:|"]
+    for name in OPENED:
+        ms, kb, top = phone_paint(browser, device, f"http://127.0.0.1:{port}/{name}?lang=sr")
+        rows.append(f"| {name} | {ms:.0f} | {kb:.0f} | {top:.0f} |")
+    browser.close()
+    return rows
+
+
+def phone_table() -> str:
+    """The phone rows alone (``--phone``)."""
+    port = free_port()
+    server = start_server(port)
+    try:
+        asyncio.run(wait_ready(f"ws://127.0.0.1:{port}/_stcore/stream"))
+        with sync_playwright() as p:
+            return "\n".join(phone_rows(p, port)[1:])
+    finally:
+        server.terminate()
+        server.wait(timeout=30)
+
+
 def table() -> str:
     port, floor_port = free_port(), free_port()
     while floor_port == port:
@@ -203,6 +262,7 @@ def table() -> str:
             rows.append(f"| (the floor: sidebar, navigation and one small chart, "
                         f"`bench/floor_chart_app.py`) | {ms:.0f} | {kb:.0f} |")
             browser.close()
+            rows += phone_rows(p, port)
     finally:
         for running in (server, floor):
             running.terminate()
@@ -211,4 +271,7 @@ def table() -> str:
 
 
 if __name__ == "__main__":
-    publish(table(), "<!-- browser table -->", CHANGES)
+    if "--phone" in sys.argv:
+        print(phone_table())
+    else:
+        publish(table(), "<!-- browser table -->", CHANGES)
