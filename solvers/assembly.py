@@ -37,7 +37,9 @@ def closures(scene: Scene, group_name: str) -> list[dict[str, complex]]:
     known = bodies_before(scene, structure.groups[:index], at)
     size = group_size(scene, group)
     if group.cls == 2:
-        found = [solve_dyad(build_loop(scene, group, sign), known, 0).bodies for sign in (1, -1)]
+        with np.errstate(invalid="ignore"):  # a sign that cannot close is NaN, and left out
+            found = [solve_dyad(build_loop(scene, group, sign), known, 0).bodies
+                     for sign in (1, -1)]
     else:
         reached = poses(scene, group, known, size, starts=256)
         found = [] if reached is None else [pose_bodies(scene, group, size, *reached)]

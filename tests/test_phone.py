@@ -119,3 +119,38 @@ def test_the_server_sends_scripts_and_plotly_gzipped_when_asked(app_url):
         assert "immutable" in asked.headers["Cache-Control"]
         assert gzip.decompress(packed) == body and len(packed) < len(body) / 2
     assert Path(AXE).exists()
+
+
+def test_the_crank_control_plays_and_steps_by_touch(app_url, phone):
+    page = phone(f"{app_url}/velocity_plans?lang=sr&scene=zbirka-3.1")
+    crank = page.locator(".mehanizmi-crank").first
+    crank.evaluate("e => e.scrollIntoView({block: 'center'})")
+    label = crank.locator("span")
+    start = label.inner_text()
+    step = crank.get_by_role("button", name="φ₂ +5°")
+    box = step.bounding_box()
+    page.touchscreen.tap(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.wait_for_function("([e, s]) => e.innerText !== s", arg=[label.element_handle(), start],
+                           timeout=30_000)
+    play = crank.get_by_role("button", name="Pokreni")
+    box = play.bounding_box()
+    page.touchscreen.tap(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    crank.get_by_role("button", name="Zaustavi").wait_for(timeout=30_000)  # it plays
+    seen = label.inner_text()
+    page.wait_for_function("([e, s]) => e.innerText !== s", arg=[label.element_handle(), seen],
+                           timeout=30_000)  # and φ₂ moves on its own
+    assert crank.locator("input[type='range']").get_attribute("aria-label") == "φ₂ [°]"
+
+
+def test_a_tap_on_a_table_cell_edits_it(app_url, phone):
+    page = phone(f"{app_url}/builder?lang=sr")
+    grid = page.locator("[data-testid='stDataFrame']").first
+    grid.evaluate("e => e.scrollIntoView({block: 'center'})")
+    page.wait_for_timeout(500)
+    box = grid.bounding_box()
+    x, y = box["x"] + 70, box["y"] + 35 + 17  # the first row's first cell
+    page.touchscreen.tap(x, y)
+    page.wait_for_timeout(300)
+    page.touchscreen.tap(x, y)
+    page.wait_for_function("() => ['INPUT', 'TEXTAREA'].includes(document.activeElement?.tagName)",
+                           timeout=10_000)
