@@ -154,3 +154,11 @@ def test_a_tap_on_a_table_cell_edits_it(app_url, phone):
     page.touchscreen.tap(x, y)
     page.wait_for_function("() => ['INPUT', 'TEXTAREA'].includes(document.activeElement?.tagName)",
                            timeout=10_000)
+
+
+def test_a_serbian_chart_writes_its_numbers_with_a_decimal_comma(app_url, phone):
+    page = phone(f"{app_url}/velocity_plans?lang=sr&scene=zbirka-3.1")
+    ticks = page.evaluate("() => [...document.querySelectorAll('.js-plotly-plot .xtick text, "
+                          ".js-plotly-plot .ytick text')].map(t => t.textContent)")
+    decimals = [text for text in ticks if any(mark in text for mark in ",.")]
+    assert decimals and all("," in text and "." not in text for text in decimals), ticks

@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import plotly
+import pytest
 
 from figures.raw import RawFigure
 from ui.plot import PLOTLY_JS_VERSION, bundle_url, publish_plotly_js
@@ -46,3 +47,12 @@ def test_a_chart_gets_the_smallest_bundle_that_draws_its_traces():
     assert "plotly-gl3d-" in bundle_url(solid)
     solid.add_raw([{"type": "sankey"}])  # in neither partial bundle
     assert bundle_url(solid).endswith(f"/plotly-{PLOTLY_JS_VERSION}.min.js")
+
+
+@pytest.mark.parametrize("lang, separators", [("sr", ",."), ("sr-cyrl", ",."), ("en", None)])
+def test_a_serbian_page_asks_its_charts_for_a_decimal_comma(lang, separators):
+    from .test_pages import charts, page
+
+    at = page("pages/trajectories.py", lang=lang)
+    sent = charts(at)
+    assert sent and all(chart["separators"] == separators for chart in sent.values())

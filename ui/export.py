@@ -7,7 +7,7 @@ import streamlit as st
 
 from figures.raw import RawFigure
 from ui.crank import LIVE, Crank
-from ui.i18n import t
+from ui.i18n import current, t
 from ui.plot import plot
 
 
@@ -23,12 +23,14 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
     """A Plotly chart whose toolbar saves it as SVG (to print) or PNG, and shows it full screen.
     Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE).
     ``editable``: its shapes drag and its paper clicks (ui.plot.plot), read from the result.
-    ``crank``: its own φ₂ control (ui.crank); letting go of it sets the page's φ₂ (``at``)."""
+    ``crank``: its own φ₂ control (ui.crank); letting go of it sets the page's φ₂ (``at``).
+    On a Serbian page its numbers have a decimal comma (Plotly's ``separators``)."""
     labels = {"svg": t("export.save_svg"), "png": t("export.save_png"),
               "fullscreen": t("export.fullscreen")}
     if crank is not None:
         labels.update(play=t("fig.play"), pause=t("fig.pause"), unreachable=t("fig.unreachable"))
-    return plot(fig, key, filename, labels, editable, crank, None if crank is None else _turned)
+    return plot(fig, key, filename, labels, editable, crank, None if crank is None else _turned,
+                separators=",." if current().startswith("sr") else None)
 
 
 def _turned(degrees: float | None) -> None:

@@ -326,6 +326,8 @@ export default function (component) {
                      modeBarButtonsToAdd: toolbar(Plotly, spec.labels),
                      ...(spec.editable ? EDITABLE : {}) };
     gd.__config = config;  // the frames of φ₂ are drawn with the same config (see BUTTONS)
+    // the page's decimal mark on ticks and hover labels (Serbian: 0,25), frames included
+    if (spec.separators) spec.figure.layout = { ...spec.figure.layout, separators: spec.separators };
     gd.__layout = spec.figure.layout;  // and over the same layout
     if (gd.__Plotly && gd.__Plotly !== Plotly) gd.__Plotly.purge(gd);  // drawn by another bundle
     gd.__Plotly = Plotly;

@@ -84,7 +84,7 @@ def bundle_url(fig: RawFigure) -> str:
 
 def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
          editable: bool = False, crank: Crank | None = None,
-         on_crank: Callable[[float | None], None] | None = None):
+         on_crank: Callable[[float | None], None] | None = None, separators: str | None = None):
     """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns. Its
     toolbar saves it as ``filename``.svg or .png; ``labels`` name the buttons ("svg", "png",
     "fullscreen").
@@ -98,6 +98,10 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     rerun the control starts: with the angle in degrees when the student lets go of it, with
     None when they first touch it (to ask for the frames).
 
+    ``separators``: Plotly's decimal and thousands marks for the page's language (",." on
+    a Serbian page), put into the figure's layout in the browser so that a cached figure
+    serves every language.
+
     In a page's first run in a session the chart reports its first paint (trigger
     "painted"), and the rerun that follows sends what the page left out until then
     (ui/firstpaint.py)."""
@@ -106,7 +110,8 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     body = (f'{{"src": {json.dumps(bundle_url(fig))}, "filename": {json.dumps(filename)}, '
             f'"first": {json.dumps(first)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
-            f'"crank": {control}, "figure": {pio.to_json(fig, validate=False)}}}')
+            f'"crank": {control}, "separators": {json.dumps(separators)}, '
+            f'"figure": {pio.to_json(fig, validate=False)}}}')
     events = ({"on_drag_change": _ignore, "on_click_change": _ignore, "on_joint_change": _ignore}
               if editable else {})
     if first:
