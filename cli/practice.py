@@ -17,7 +17,7 @@ from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
 from methods import practice_steps
 from methods.plans import build
-from methods.practice import Progress, Step, Verdict, answer_of
+from methods.practice import Progress, Step, Verdict, answer_of, hint_keys
 from methods.scales import plan_scales, polygon_scale
 from solvers.balancing import balance
 from solvers.diagnostics import solve_instant
@@ -42,8 +42,7 @@ def steps_for(scene, method: str, at: float | None = None) -> list[Step]:
                          f"{type(scene).__name__.lower()}")
     if method == "compass":
         motion = solve(scene, cycle_values(scene, 12), order=0)
-        pin = next(n for n in scene.members[2].points if n not in scene.frame)
-        return practice_steps.compass(motion, [pin], plan_scales(scene, None)["L"])
+        return practice_steps.compass(motion, plan_scales(scene, None)["L"])
     if method == "willis":
         return practice_steps.willis(solve_train(scene))
     if method == "balance":
@@ -65,14 +64,11 @@ def _english() -> dict[str, str]:
         return tomllib.load(f)
 
 
-def hint(step: Step, verdict: Verdict, language: dict[str, str] | None = None) -> str:
-    """The hint for a diagnosis, in the strings table's words (English here)."""
-    table = language or _english()
-    text = table[f"practice.hint_{verdict.diagnosis.replace('-', '_')}"].format(
-        ratio=f"{verdict.ratio:.3g}" if verdict.ratio is not None else "",
-        term=verdict.term, turn=f"{verdict.turn:.0f}" if verdict.turn is not None else "")
-    if verdict.diagnosis in ("sense", "direction", "wrong", "length"):
-        text += " " + table[f"practice.rule_{step.rule}"]
+def hint(step: Step, verdict: Verdict) -> str:
+    """The hint for a diagnosis, in the English strings table's words."""
+    values = dict(ratio=f"{verdict.ratio:.3g}" if verdict.ratio is not None else "",
+                  term=verdict.term, turn=f"{verdict.turn:.0f}" if verdict.turn is not None else "")
+    text = " ".join(_english()[key].format(**values) for key in hint_keys(step, verdict))
     return text.replace("⟨", "").replace("⟩", "")
 
 

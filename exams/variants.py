@@ -29,6 +29,7 @@ from mechanisms.rotor import Rotor
 from mechanisms.schema import Scene
 from mechanisms.writer import to_text
 from methods.plans import build, readings
+from methods.scales import PRECISION_CM
 from reports.values import exact_values
 from solvers.balancing import balance, graphical_error
 from solvers.diagnostics import Unsolvable, solve_instant
@@ -40,7 +41,6 @@ TRIES = 30  # candidates per asked variant before the ranges are declared too ti
 CONDITION = 10.0  # a group worse than this (or than OWN × the task's own) is near a dead centre
 OWN = 3.0  # a class III group's condition number is tens already in the book's drawings
 STEPS = 4  # the walk from the task's numbers to a variant's, to see the branch kept
-PRECISION_CM = 0.05  # a line drawn and read to half a millimetre
 SMALL_CORRECTION = 0.05  # a correction under 5 % of the largest unbalance teaches nothing
 
 

@@ -43,12 +43,12 @@ class PlanDrawing:
     unit: str
 
 
-GREEK = {"\\omega": "ω", "\\varepsilon": "ε"}
+TEX = {"\\omega": "ω", "\\varepsilon": "ε", "\\cdot": "·"}  # LaTeX commands as plain characters
 
 
 def _parts(symbol: str) -> tuple[str, str, str]:
     """``a^n_{C_{4}B}`` → ("a", "n", "C4B"); ``b4`` → ("b", "", "4"); ``\\omega_{4}`` → ("ω", "", "4")."""
-    for tex, letter in GREEK.items():
+    for tex, letter in TEX.items():
         symbol = symbol.replace(tex, letter)
     m = re.fullmatch(r"(\w)(?:\^(\w))?(?:_\{(.*)\})?", symbol) or re.fullmatch(r"(\D)()(\d+)", symbol)
     if m is None:

@@ -32,16 +32,19 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
     arrows = [(s.tail / scale, (s.tail + complex(s.expected)) / scale, DONE)
               for s in earlier if s.kind == "vector" and s.rule != "sum"]
     if step.rule == "closing":  # the polygon's known sides, head to tail, up to the tail
-        end = 0j
+        end = 0j  # (the rotor's are earlier steps of the sheet, drawn already)
         for term in step.terms:
-            arrows.append((end / scale, (end - complex(term.value)) / scale, DONE))
+            side = (end / scale, (end - complex(term.value)) / scale, DONE)
+            if side not in arrows:
+                arrows.append(side)
             end -= complex(term.value)
     fig.add_raw(arrow_traces(arrows, 1.6 * look.line))
     points = [(complex(s.expected) / scale if s.kind == "point" else
                (s.tail + complex(s.expected)) / scale, s.symbol) for s in earlier
               if s.kind == "point" or s.rule == "sum"]
     start = step.tail / scale
-    points.append((start, t("practice.tail")) if step.kind == "vector" else (start, ""))
+    if step.kind == "vector":  # a point has no tail: only where it goes
+        points.append((start, t("practice.tail")))
     fig.add_raw([scatter(x=[z.real for z, _ in points], y=[z.imag for z, _ in points],
                          mode="markers+text", text=[html(n) if n else "" for _, n in points],
                          textposition="top right", hoverinfo="skip", showlegend=False,

@@ -17,7 +17,7 @@ from typing import Any
 
 from . import limits
 from .formula import formula_keys
-from .point_forms import FormError, form_of, local_point
+from .point_forms import FormError, form_of, from_distances, from_polar
 from .reader import Reader, SceneError, identity
 from .schema import DRIVER, FRAME, Driver, Fit, Force, Member, Moment, Pair, Scene, Travel
 
@@ -262,20 +262,19 @@ def _extra_point(value: Any, r: Reader, where: str, length: float | None, who: s
     if not isinstance(value, dict):
         return r.vector(value, where)
     form = form_of(value)
-    if form == "distances":
-        r.check_keys(value, {"distances", "side"}, where)
-        pair = r.vector(value["distances"], f"{where}.distances")
-        r.text(value, "side", where)
-    elif form == "polar":
-        r.check_keys(value, {"polar"}, where)
-        pair = r.vector(value["polar"], f"{where}.polar")
-    else:
-        raise r.fail(where, f"({who}) must be [along, left], {{ distances = [d1, d2], side = "
-                            f"\"left\" }} or {{ polar = [r, angle_deg] }}, got {value!r}")
     try:
-        return local_point({**value, form: [pair.real, pair.imag]}, length)
+        if form == "distances":
+            r.check_keys(value, {"distances", "side"}, where)
+            d = r.vector(value["distances"], f"{where}.distances")
+            return from_distances(d.real, d.imag, r.text(value, "side", where), length)
+        if form == "polar":
+            r.check_keys(value, {"polar"}, where)
+            p = r.vector(value["polar"], f"{where}.polar")
+            return from_polar(p.real, p.imag)
     except FormError as exc:
         raise r.fail(where, f"({who}): {exc}") from None
+    raise r.fail(where, f"({who}) must be [along, left], {{ distances = [d1, d2], side = "
+                        f"\"left\" }} or {{ polar = [r, angle_deg] }}, got {value!r}")
 
 
 def _member_ref(value: Any, r: Reader, where: str, members: dict[int, Member]) -> int:

@@ -182,7 +182,7 @@ def _extra_row(member: int, name: str, value: Any, spec: dict) -> dict:
     form = form_of(value)
     row = {"member": member, "point": name, "form": form if form in FORMS else "offset",
            **{k: None for k in COLUMNS["extra"][3:]}}
-    length = spec.get("length") if len(spec.get("points", [])) == 2 else None
+    length = _length(spec)
     try:
         row.update(every_form(local_point(value, length), length))
     except (FormError, TypeError, ValueError):
@@ -194,6 +194,12 @@ def _extra_row(member: int, name: str, value: Any, spec: dict) -> dict:
     elif isinstance(value, list):
         row["along"], row["left"] = _two(value)
     return row
+
+
+def _length(spec: dict) -> Any:
+    """A member's length as its row holds it, None for a one-point member (no second point
+    to measure a triangle's side from)."""
+    return spec.get("length") if len(spec.get("points", [])) == 2 else None
 
 
 def _two(value: Any) -> tuple[Any, Any]:
@@ -298,8 +304,7 @@ def _move_extra(spec: dict, name: str, local: complex) -> None:
     old = spec["extra"][name]
     form = form_of(old)
     if form in ("distances", "polar"):
-        length = spec.get("length") if len(spec.get("points", [])) == 2 else None
-        spec["extra"][name] = written(form, local, length, old.get("side", "left"))
+        spec["extra"][name] = written(form, local, _length(spec), old.get("side", "left"))
     else:
         spec["extra"][name] = [local.real, local.imag]
 

@@ -25,8 +25,19 @@ import cmath
 import math
 from dataclasses import dataclass
 
-DIAGNOSES = ("ok", "sense", "direction", "length", "scale", "missing-term", "wrong", "none")
-PRECISION_CM = 0.05  # a line drawn and read to half a millimetre (as the variants' keys)
+# each diagnosis and each kind of step, by the strings that say it (locales/*.toml); the pages
+# and the command line format them in their own language
+HINTS = {"ok": "practice.hint_ok", "sense": "practice.hint_sense",
+         "direction": "practice.hint_direction", "length": "practice.hint_length",
+         "scale": "practice.hint_scale", "missing-term": "practice.hint_missing_term",
+         "wrong": "practice.hint_wrong", "none": "practice.hint_none"}
+RULES = {"relative": "practice.rule_relative", "normal": "practice.rule_normal",
+         "tangential": "practice.rule_tangential", "coriolis": "practice.rule_coriolis",
+         "sliding": "practice.rule_sliding", "absolute": "practice.rule_absolute",
+         "sum": "practice.rule_sum", "point": "practice.rule_point", "rate": "practice.rule_rate",
+         "moment": "practice.rule_moment", "closing": "practice.rule_closing",
+         "balancing": "practice.rule_balancing", "stage": "practice.rule_stage",
+         "polygon": "practice.rule_polygon", "correction": "practice.rule_correction"}
 ANGLE_READ = math.radians(1.0)  # a direction read with a protractor (as the polygons' error)
 RELATIVE = 0.01  # a value computed from an equation by hand: ±1 %
 SLIP = 0.02  # an answer within 2 % of a slipped value is that slip
@@ -90,9 +101,13 @@ class Verdict:
         return self.diagnosis == "ok"
 
 
+def _real(value: complex | float) -> float:
+    return float(value.real if isinstance(value, complex) else value)
+
+
 def _out(value, kind: str):
     if kind == "scalar":
-        return float(value.real if isinstance(value, complex) else value)
+        return _real(value)
     return [float(value.real), float(value.imag)]
 
 
@@ -121,7 +136,7 @@ def grade(step: Step, answer: complex | float | None) -> Verdict:
     if answer is None or (isinstance(answer, float) and math.isnan(answer)):
         return Verdict("none")
     if step.kind == "scalar":
-        return _scalar(step, float(answer.real if isinstance(answer, complex) else answer))
+        return _scalar(step, _real(answer))
     return _vector(step, complex(answer))
 
 
@@ -175,12 +190,11 @@ def _slipped(step: Step, answer: complex, exact: complex) -> Verdict | None:
 
 
 def _scalar(step: Step, answer: float) -> Verdict:
-    exact, tol = float(step.expected.real if isinstance(step.expected, complex) else step.expected), \
-        step.tolerance
+    exact, tol = _real(step.expected), step.tolerance
     if abs(answer - exact) <= tol:
         return Verdict("ok")
     for term in step.missing:
-        if abs(answer - float(term.value.real if isinstance(term.value, complex) else term.value)) <= tol:
+        if abs(answer - _real(term.value)) <= tol:
             return Verdict("missing-term", term=term.name)
     if abs(exact) > tol and abs(answer + exact) <= tol:
         return Verdict("sense")
@@ -190,18 +204,27 @@ def _scalar(step: Step, answer: float) -> Verdict:
     return Verdict("wrong")
 
 
+def hint_keys(step: Step, verdict: Verdict) -> list[str]:
+    """The strings that say a verdict: its diagnosis, and for a step drawn the wrong way or
+    not at all the book's rule for that kind of step (without the answer)."""
+    keys = [HINTS[verdict.diagnosis]]
+    if verdict.diagnosis in ("sense", "direction", "length", "wrong"):
+        keys.append(RULES[step.rule])
+    return keys
+
+
 @dataclass
 class Progress:
-    """A student's run through a list of steps: tries, answers and diagnoses per step."""
+    """A student's run through a list of steps: answers and diagnoses per step (one of each
+    a try), and the steps revealed."""
 
-    tries: dict[str, int]
     answers: dict[str, list]
     verdicts: dict[str, list[Verdict]]
     revealed: set[str]
 
     @classmethod
     def start(cls) -> Progress:
-        return cls({}, {}, {}, set())
+        return cls({}, {}, set())
 
     def give(self, step: Step, answer) -> Verdict:
         """Grade one try (a step already right or revealed keeps its outcome)."""
@@ -209,10 +232,9 @@ class Progress:
             return self.verdicts[step.id][-1]
         verdict = grade(step, answer)
         if verdict.diagnosis != "none":
-            self.tries[step.id] = self.tries.get(step.id, 0) + 1
             self.answers.setdefault(step.id, []).append(answer)
             self.verdicts.setdefault(step.id, []).append(verdict)
-            if not verdict.ok and self.tries[step.id] >= TRIES:
+            if not verdict.ok and len(self.verdicts[step.id]) >= TRIES:
                 self.revealed.add(step.id)
         return verdict
 

@@ -13,10 +13,10 @@ polygon (chapter 7).
 
 from __future__ import annotations
 
-import math
+from itertools import accumulate
 
 from mechanisms.schema import DRIVER
-from solvers.balancing import Balance
+from solvers.balancing import Balance, unit as rotation
 from solvers.gears import TrainSolution
 from solvers.kinematics import Motion
 from solvers.kinetostatics import Kinetostatics
@@ -26,11 +26,15 @@ from .force_steps import steps as force_construction
 from .gear_steps import speed_steps
 from .lever_steps import construction as lever_construction
 from .plans import POLE, Plans, is_construction, readings
-from .practice import PRECISION_CM, RELATIVE, Step, Term
-from .scales import polygon_scale
+from .practice import RELATIVE, Step, Term
+from .scales import PRECISION_CM, polygon_scale
 
-METHODS = ("compass", "plans", "forces", "lever", "willis", "balance")
 UNITS = {"v": "m/s", "a": "m/s²"}
+
+
+def _by_hand(value: float, floor: float = 1e-12) -> float:
+    """The tolerance of a value computed by hand from an equation (never zero)."""
+    return max(RELATIVE * abs(value), floor)
 
 
 def _tex_image(image: str) -> str:
@@ -38,13 +42,12 @@ def _tex_image(image: str) -> str:
     return name[0] + (f"_{{{name[1:]}}}" if len(name) > 1 else "")
 
 
-def compass(motion: Motion, paths: list[str], scale_l: float) -> list[Step]:
+def compass(motion: Motion, scale_l: float) -> list[Step]:
     """The points of the 12 positions, as the compass construction places them (``motion``
-    solved at ``cycle(scene, 12)``); U_L in m per cm."""
+    solved at ``cycle(scene, 12)``); U_L in m per cm. The paths drawn through them at the
+    end are not asked."""
     out = []
-    for step in compass_construction(motion, paths):
-        if step.what == "path":
-            continue
+    for step in compass_construction(motion, []):
         for name, where in step.found.items():
             out.append(Step(f"compass.{name}", f"the point {name} of the construction (m)", name,
                             "point", "m", where, PRECISION_CM * scale_l, scale_l, "L",
@@ -108,10 +111,10 @@ def _rates(plans_: Plans, scales: dict[str, float]) -> list[Step]:
             continue
         for name, value, unit, symbol in (("omega", w, "s⁻¹", f"\\omega_{{{member}}}"),
                                           ("epsilon", e, "s⁻²", f"\\varepsilon_{{{member}}}")):
-            tol = error.get(symbol, RELATIVE * abs(value)) or 1e-12
+            tol = max(error.get(symbol, RELATIVE * abs(value)), 1e-12)
             out.append(Step(f"{name}.{member}", f"{symbol} of member {member}, signed "
                             f"({unit}, counter-clockwise positive)", symbol, "scalar", unit,
-                            value, max(tol, 1e-12), 1.0, "", rule="rate"))
+                            value, tol, 1.0, "", rule="rate"))
     return out
 
 
@@ -124,7 +127,7 @@ def forces(k: Kinetostatics, index: int, scale_f: float) -> list[Step]:
             out += _closing_steps(st, n, scale_f)
             continue
         for name, (value, unit) in st.found.items():
-            tol = max(RELATIVE * abs(value), PRECISION_CM * scale_f if unit == "N" else 0.0, 1e-12)
+            tol = _by_hand(value, max(PRECISION_CM * scale_f, 1e-12) if unit == "N" else 1e-12)
             out.append(Step(f"forces.{n}.{name}", f"{name} from the {st.kind} equation of "
                             f"members {st.members} ({unit})", name, "scalar", unit, value, tol,
                             scale_f if unit == "N" else 1.0, f"F{n}", rule="moment"))
@@ -167,20 +170,19 @@ def lever(k: Kinetostatics, index: int) -> list[Step]:
     for i, m in enumerate(construction.moments):
         out.append(Step(f"lever.{i}.{m.name}", f"the moment of {m.name} about the pole of the "
                         "turned plan, counter-clockwise positive (N·m/s)", f"{m.name}\\cdot h",
-                        "scalar", "N·m/s", m.value, max(RELATIVE * abs(m.value), 1e-12),
+                        "scalar", "N·m/s", m.value, _by_hand(m.value),
                         rule="moment"))
     arm = construction.balancing_arm
     missing = tuple(Term(m.name, construction.balancing + m.value / arm) for m in construction.moments)
     terms = tuple(Term(m.name, -m.value / arm) for m in construction.moments)
     out.append(Step("lever.F_p", "the balancing force F_p at the crank pin's image (N)", "F_p",
-                    "scalar", "N", construction.balancing,
-                    max(RELATIVE * abs(construction.balancing), 1e-12), 1.0, "", 0j, terms,
-                    missing, "balancing"))
+                    "scalar", "N", construction.balancing, _by_hand(construction.balancing), 1.0,
+                    "", 0j, terms, missing, "balancing"))
     if construction.torque is not None:
         length = k.motion.scene.members[DRIVER].length
         out.append(Step("lever.M_p", f"the driving torque M_p = F_p·{construction.crank} (N·m)",
                         "M_p", "scalar", "N·m", construction.torque,
-                        max(RELATIVE * abs(construction.torque), 1e-12), 1.0, "", 0j, (),
+                        _by_hand(construction.torque), 1.0, "", 0j, (),
                         tuple(Term(t.name, t.value * length) for t in missing), "balancing"))
     return out
 
@@ -189,7 +191,7 @@ def willis(solution: TrainSolution) -> list[Step]:
     """Each member's ω in the book's order (the inputs are given, not asked), signed."""
     return [Step(f"willis.{s.member}", f"ω{s.member}, signed (s⁻¹, counter-clockwise positive)",
                  f"\\omega_{{{s.member}}}", "scalar", "s⁻¹", s.omega,
-                 max(RELATIVE * abs(s.omega), 1e-9), rule="stage")
+                 _by_hand(s.omega, 1e-9), rule="stage")
             for s in speed_steps(solution) if s.kind != "input"]
 
 
@@ -199,13 +201,13 @@ def balance(result: Balance) -> list[Step]:
     U polygon closed by plane I's. Each polygon at a round scale that draws it about 8 cm
     long (kg·m and kg·m² per cm)."""
     rotor = result.rotor
-    us = [m.mass * m.radius * complex(math.cos(m.angle), math.sin(m.angle)) for m in rotor.masses]
-    scale_u = polygon_scale(_partial_sums(us))
+    us = [m.mass * m.radius * rotation(m.angle) for m in rotor.masses]
+    scale_u = polygon_scale(accumulate(us))
     out: list[Step] = []
     if rotor.mode == "dynamic":
         x2 = rotor.planes["II"]
         vs = [u * (m.x - x2) for u, m in zip(us, rotor.masses)]
-        scale_v = polygon_scale(_partial_sums(vs))
+        scale_v = polygon_scale(accumulate(vs))
         out += _polygon(vs, "V", "kg·m²", scale_v,
                         result.corrections["I"].u * (rotor.planes["I"] - x2), "I")
         u1 = result.corrections["I"].u
@@ -216,14 +218,6 @@ def balance(result: Balance) -> list[Step]:
                         extra=[("U_{I}", u1)])
     else:
         out += _polygon(us, "U", "kg·m", scale_u, result.corrections["I"].u, "I")
-    return out
-
-
-def _partial_sums(vectors) -> list[complex]:
-    out, total = [], 0j
-    for v in vectors:
-        total += v
-        out.append(total)
     return out
 
 

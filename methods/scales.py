@@ -9,6 +9,8 @@ from mechanisms.schema import Scene
 
 from .plans import Plans
 
+PRECISION_CM = 0.05  # a line drawn and read to half a millimetre (variants' keys, practice)
+
 
 def nice_scale(value: float) -> float:
     """A round drawing scale (1, 2 or 5 × 10ⁿ) at or above ``value``, as a student would pick."""

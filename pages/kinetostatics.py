@@ -4,7 +4,6 @@ over the cycle, with force polygons and Zhukovsky's lever."""
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
 
 import numpy as np
 import pandas as pd
@@ -18,7 +17,7 @@ from mechanisms.schema import Scene
 from methods import practice_steps
 from methods.force_steps import equation, steps as force_steps
 from methods.lever_steps import construction as lever_construction, latex as lever_latex
-from methods.scales import nice_scale
+from methods.scales import polygon_scale
 from reports.values import has_loads
 from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_resolution
 from solvers.kinetostatics import Action, Kinetostatics, analyse, free_body
@@ -168,7 +167,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
     if step.kind == "polygon":
         known = [(html(term.name), term.force) for term in step.terms]
         closing = [(html(name), force) for name, force in step.closing]
-        uf = st.session_state.get("UF") or auto_scale(f for _, f in known + closing)
+        uf = st.session_state.get("UF") or polygon_scale(f for _, f in known + closing)
         chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
                              (t("forces.legend_known"), t("forces.legend_closing")), look()),
               f"{k.motion.scene.id}-step-{number}", key="fig_step")
@@ -207,11 +206,6 @@ def loads_figure(k: Kinetostatics, i: int, at_label: str) -> RawFigure:
     return forces_figure(k, i, loads, t("forces.loads_title", at=at_label), t, look())
 
 
-def auto_scale(forces: Iterable[complex]) -> float:
-    """U_F [N/cm] that draws the biggest of a polygon's forces about 8 cm long."""
-    return nice_scale(max((abs(f) for f in forces), default=1.0) / 8)
-
-
 def polygon_figures(k: Kinetostatics, i: int, members: tuple[int, ...], actions: list[Action],
                     uf: float) -> dict[str, RawFigure]:
     """A group's free body (its ``actions`` at position ``i``) and its force polygon to the
@@ -242,7 +236,7 @@ def turn_frames(scene: Scene, values: tuple[float, ...], inertia: bool,
         if members is None:
             return {"loads": loads_figure(k, i, f"{num(values[i], 4)}°")}
         actions = free_body(k, members, i)
-        return polygon_figures(k, i, members, actions, uf or auto_scale(a.force for a in actions))
+        return polygon_figures(k, i, members, actions, uf or polygon_scale(a.force for a in actions))
 
     return crank_frames(draw, values)
 
@@ -311,7 +305,7 @@ if tabs[1].open:
         asked_uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
                                    bind="query-params")  # 0: a scale that fits each position
         actions = free_body(k, groups[choice], now)
-        uf = asked_uf or auto_scale(a.force for a in actions)
+        uf = asked_uf or polygon_scale(a.force for a in actions)
         figures = polygon_figures(k, now, groups[choice], actions, uf)
         frames = cranks(scene, ("free_body", "polygon"), "forces", values, lambda: turn_frames(
             scene.with_(at=0.0), values, st.session_state["inertia"], groups[choice], asked_uf,
@@ -334,7 +328,7 @@ if tabs[1].open:
 if tabs[2].open:
     with tabs[2]:
         if practice.toggle("pr_forces"):
-            uf = st.session_state.get("UF") or auto_scale(
+            uf = st.session_state.get("UF") or polygon_scale(
                 complex(r.force[now]) for r in k.reactions.values())
             practice.panel(practice_steps.forces(k, now, uf), "pr_forces",
                            t("practice.sheet_forces"))

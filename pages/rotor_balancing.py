@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from itertools import accumulate
 
 import pandas as pd
 import streamlit as st
@@ -11,7 +12,7 @@ from figures.balancing import end_view_figure, rotor_3d_figure
 from figures.polygon import polygon_figure, polygon_svg
 from mechanisms.rotor import PLANES, Correction, Mass, Rotor
 from methods import practice_steps
-from methods.scales import nice_scale
+from methods.scales import polygon_scale
 from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
 from ui import practice
 from ui.benchmarks import speed_panel
@@ -118,7 +119,7 @@ def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> Non
     x_ref = rotor.planes[reference]
     vs = [u * (m.x - x_ref) * MM for u, m in zip(us, rotor.masses)]  # kg·mm²
     v_fix = found[other] * (rotor.planes[other] - x_ref) * MM
-    scale = nice_scale(max(abs(sum(vs[:k + 1])) for k in range(len(vs))) / 8)
+    scale = polygon_scale(accumulate(vs))
     scale = st.number_input(t("rotor.scale_v"), min_value=1e-6, value=scale,
                             key=f"UV{reference}-{rotor.id}", format="%.4g")
     known, closing = [(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)]
@@ -177,8 +178,7 @@ with main:
     tab_v, tab_u, tab_end, tab_3d = st.tabs([t("rotor.tab_v"), t("rotor.tab_u"), t("rotor.tab_end"),
                                              t("rotor.tab_3d")], key="tab", on_change="rerun")
     scale_key = f"UU-{rotor.id}"
-    scale_u = st.session_state.get(scale_key) or nice_scale(
-        max(abs(sum(us[:k + 1])) for k in range(len(us))) / 8)
+    scale_u = st.session_state.get(scale_key) or polygon_scale(accumulate(us))
     if tab_u.open:
         with tab_u:
             scale_u = st.number_input(t("rotor.scale_u"), min_value=1e-6, value=scale_u,

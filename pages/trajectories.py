@@ -173,7 +173,7 @@ with main:
         figure_ms = (time.perf_counter() - started) * 1e3
         with tab_paths:
             if view == "compass" and practice.toggle("pr_compass"):
-                practice.panel(practice_steps.compass(construction, points,
+                practice.panel(practice_steps.compass(construction,
                                                       plan_scales(scene, None)["L"]),
                                "pr_compass", t("practice.sheet_compass"))
             else:

@@ -63,14 +63,14 @@ class PrecompressedStatic:
 
         await self.app(scope, receive, capture)
         headers = [(k.lower(), v) for k, v in start.get("headers", [])]
+        named = dict(headers)
         data = b"".join(body)
-        kind = dict(headers).get(b"content-type", b"")
-        if (start.get("status") != 200 or len(data) < SMALLEST or dict(headers).get(b"content-encoding")
-                or not kind.startswith(COMPRESSIBLE)):
+        if (start.get("status") != 200 or len(data) < SMALLEST or named.get(b"content-encoding")
+                or not named.get(b"content-type", b"").startswith(COMPRESSIBLE)):
             await send(start)
             await send({"type": "http.response.body", "body": data})
             return
-        key = (path, len(data), dict(headers).get(b"etag"), dict(headers).get(b"last-modified"))
+        key = (path, len(data), named.get(b"etag"), named.get(b"last-modified"))
         packed = self.cache.get(key)
         if packed is None:
             packed = gzip.compress(data, compresslevel=9, mtime=0)

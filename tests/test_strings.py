@@ -9,7 +9,8 @@ from mechanisms import load_preset, preset_ids
 from ui.i18n import LANGUAGES, member_labels, num, parse_number, t, table
 
 ROOT = Path(__file__).resolve().parents[1]
-SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *ROOT.glob("figures/*.py")]
+SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *ROOT.glob("figures/*.py"),
+           ROOT / "methods" / "practice.py"]  # (practice's hints, shared with the command line)
 
 
 def used_keys() -> set[str]:

@@ -13,22 +13,12 @@ import pandas as pd
 import streamlit as st
 
 from figures.practice import practice_figure
-from methods.practice import TRIES, Progress, Step, Verdict, polar
+from figures.plans import plain
+from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, polar
 from ui.export import chart
 from ui.i18n import num, t
 from ui.present import look
 
-HINTS = {"ok": "practice.hint_ok", "sense": "practice.hint_sense",
-         "direction": "practice.hint_direction", "length": "practice.hint_length",
-         "scale": "practice.hint_scale", "missing-term": "practice.hint_missing_term",
-         "wrong": "practice.hint_wrong", "none": "practice.hint_none"}
-RULES = {"relative": "practice.rule_relative", "normal": "practice.rule_normal",
-         "tangential": "practice.rule_tangential", "coriolis": "practice.rule_coriolis",
-         "sliding": "practice.rule_sliding", "absolute": "practice.rule_absolute",
-         "sum": "practice.rule_sum", "point": "practice.rule_point", "rate": "practice.rule_rate",
-         "moment": "practice.rule_moment", "closing": "practice.rule_closing",
-         "balancing": "practice.rule_balancing", "stage": "practice.rule_stage",
-         "polygon": "practice.rule_polygon", "correction": "practice.rule_correction"}
 PARTS = {"vector": "practice.part_vector", "point": "practice.part_point",
          "scalar": "practice.part_scalar"}
 OUTCOMES = {"first": "practice.first", "later": "practice.later",
@@ -42,17 +32,9 @@ def toggle(key: str) -> bool:
 
 def hint(step: Step, verdict: Verdict) -> str:
     """The diagnosis in words, and the book's rule for the step where it helps."""
-    text = t(HINTS[verdict.diagnosis],
-             ratio=num(verdict.ratio, 3) if verdict.ratio is not None else "",
-             term=_plain(verdict.term), turn=num(abs(verdict.turn), 2) if verdict.turn else "")
-    if verdict.diagnosis in ("sense", "direction", "length", "wrong"):
-        text += " " + t(RULES[step.rule])
-    return text
-
-
-def _plain(symbol: str) -> str:
-    return symbol.replace("{", "").replace("}", "").replace("\\omega", "ω").replace(
-        "\\varepsilon", "ε").replace("\\cdot", "·")
+    values = dict(ratio=num(verdict.ratio, 3) if verdict.ratio is not None else "",
+                  term=plain(verdict.term), turn=num(abs(verdict.turn), 2) if verdict.turn else "")
+    return " ".join(t(key, **values) for key in hint_keys(step, verdict))
 
 
 def _state(key: str, steps: list[Step]) -> dict:
@@ -192,7 +174,7 @@ def answers_table(steps: list[Step], progress: Progress) -> pd.DataFrame:
         return f"{float(v):.6g}"
 
     return pd.DataFrame([{
-        "step": s.id, "symbol": _plain(s.symbol), "unit": s.unit, "exact": value(s.expected),
+        "step": s.id, "symbol": plain(s.symbol), "unit": s.unit, "exact": value(s.expected),
         "tolerance": f"{s.tolerance:.3g}",
         "answers": " | ".join(value(a) for a in progress.answers.get(s.id, [])),
         "diagnoses": " | ".join(v.diagnosis for v in progress.verdicts.get(s.id, [])),
