@@ -22,7 +22,7 @@ from solvers.kinematics import Motion
 from solvers.kinetostatics import Kinetostatics
 
 from .compass import construction as compass_construction
-from .force_steps import steps as force_construction
+from .force_steps import latex_name, steps as force_construction
 from .gear_steps import speed_steps
 from .lever_steps import construction as lever_construction
 from .plans import POLE, Plans, is_construction, readings
@@ -129,7 +129,8 @@ def forces(k: Kinetostatics, index: int, scale_f: float) -> list[Step]:
         for name, (value, unit) in st.found.items():
             tol = _by_hand(value, max(PRECISION_CM * scale_f, 1e-12) if unit == "N" else 1e-12)
             out.append(Step(f"forces.{n}.{name}", f"{name} from the {st.kind} equation of "
-                            f"members {st.members} ({unit})", name, "scalar", unit, value, tol,
+                            f"members {st.members} ({unit})", latex_name(name), "scalar", unit,
+                            value, tol,
                             scale_f if unit == "N" else 1.0, f"F{n}", rule="moment"))
     return out
 
@@ -156,7 +157,8 @@ def _closing_steps(st, n: int, scale_f: float) -> list[Step]:
                 x, y = (rest.conjugate() * b).imag / det, (a.conjugate() * rest).imag / det
                 missing.append(Term(t.name, (x * a, y * b)[i]))
         out.append(Step(f"forces.{n}.{name}", f"the closing side {name} of the polygon of "
-                        f"members {st.members} (N)", name, "vector", "N", value, tol, scale_f,
+                        f"members {st.members} (N)", latex_name(name), "vector", "N", value, tol,
+                        scale_f,
                         f"F{n}", tail, adds, tuple(missing), "closing"))
         tail += value
     return out

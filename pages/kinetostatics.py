@@ -264,7 +264,7 @@ with main:
     now = 0  # k holds the instant only
     if not np.isfinite(k.driving[now]):
         st.warning(t("forces.singular"))
-    driving_metrics(k, now)
+    results = st.container()  # the driving torque: filled below, unless the student practises
     tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_steps"),
                     t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
 
@@ -325,9 +325,11 @@ if tabs[1].open:
                                      a.force.imag, a.force.real)) % 360, 4)} for a in actions])
         show_table(polygon, f"{scene.id}-polygon-{choice}.csv", "csv_polygon")
 
+practising = False
 if tabs[2].open:
     with tabs[2]:
-        if practice.toggle("pr_forces"):
+        practising = practice.toggle("pr_forces")
+        if practising:
             uf = st.session_state.get("UF") or polygon_scale(
                 complex(r.force[now]) for r in k.reactions.values())
             practice.panel(practice_steps.forces(k, now, uf), "pr_forces",
@@ -338,7 +340,8 @@ if tabs[2].open:
 if tabs[3].open:
     with tabs[3]:
         st.write(t("forces.lever_intro"))
-        if practice.toggle("pr_lever"):
+        practising = practice.toggle("pr_lever")
+        if practising:
             practice.panel(practice_steps.lever(k, now), "pr_lever", "", drawable=False)
         else:
             chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
@@ -350,6 +353,10 @@ if tabs[3].open:
             show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
             book_lever(k, now)
             method_doc("reduced-mechanism")
+
+if not practising:  # M_p and F_p are what the construction ends with
+    with results:
+        driving_metrics(k, now)
 
 if tabs[4].open:
     with tabs[4]:

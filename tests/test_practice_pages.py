@@ -106,3 +106,13 @@ def test_the_score_and_the_csv_come_when_every_step_is_done():
     n = len(steps)
     assert values[t("practice.first", "en")] == f"{n - 1} / {n}"
     assert values[t("practice.revealed", "en")] == f"1 / {n}"
+
+
+@pytest.mark.parametrize("tab", ["steps", "lever"])
+def test_practising_kinetostatics_hides_the_driving_torque_it_ends_with(tab):
+    state = {"scene": "zbirka-5.1", "tab": t(TABS[tab], "en")}
+    shown = page("pages/kinetostatics.py", lang="en", **state)
+    assert any(m.label.startswith("M_p") for m in shown.metric)  # the page shows it …
+    at = _open("pages/kinetostatics.py", {"scene": "zbirka-5.1", "tab": tab},
+               f"pr_{'forces' if tab == 'steps' else 'lever'}", "en")
+    assert not any(m.label.startswith("M_p") for m in at.metric)  # … the practice does not
