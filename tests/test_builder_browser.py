@@ -99,16 +99,18 @@ def type_cell(page, header: str, row: int, column: int, text: str, redraws: bool
 
 
 def open_tab(page, name: str, header: str) -> None:
-    """Open the tables' tab ``name`` and wait for its table (the one with column ``header``);
-    a click that lands while a rerun is redrawing the tabs is clicked again."""
+    """Open the tables' tab ``name`` and wait until its table (the one with column ``header``)
+    is there with the app idle: a click that lands while a rerun is redrawing the tabs, or
+    whose table the tab's own rerun (ui.builder.fold) then replaces, is checked again."""
     grid = page.locator("[data-testid='stDataFrame']").filter(has_text=header)
-    for _ in range(3):
+    for _ in range(4):
         wait_idle(page)
+        if grid.is_visible():
+            return
         page.get_by_role("tab", name=name, exact=True).click()
         try:
             grid.wait_for(state="visible", timeout=10_000)
-            return
-        except Exception:  # noqa: BLE001 (Playwright's timeout: try the click again)
+        except Exception:  # noqa: BLE001 (Playwright's timeout: look again, click again)
             continue
     grid.wait_for(state="visible", timeout=10_000)
 
