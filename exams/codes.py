@@ -14,6 +14,7 @@ import zlib
 from dataclasses import dataclass
 
 from mechanisms.loader import SceneError
+from mechanisms.messages import Text
 
 DEFAULT_SPREAD = 20  # ± % around the book's values
 CHECK_LETTERS = "ACDEFHJKLMNPRTUVWXY"  # no B/8, G/6, I/1, O/0, Q, S/5, Z/2 to confuse
@@ -69,20 +70,17 @@ def parse(text: str) -> tuple[Settings, int]:
     cleaned = text.strip()
     parts = cleaned.split("-")
     if len(parts) < 3 or not cleaned.isascii():
-        raise SceneError(f"variant code {text!r}: expected something like 3.1-S42-07K "
-                         "(task, set, number and a check letter)")
+        raise SceneError(Text("code.shape", code=text))
     task, settings, last = "-".join(parts[:-2]), parts[-2].upper(), parts[-1].upper()
     found = _SET.fullmatch(settings)
     number = re.fullmatch(r"(\d{1,3})([A-Z])", last)
     if not found or not number or not task:
-        raise SceneError(f"variant code {text!r}: expected something like 3.1-S42-07K "
-                         "(task, set, number and a check letter)")
+        raise SceneError(Text("code.shape", code=text))
     body = cleaned[:-1]
     if _check(body) != number.group(2):
-        raise SceneError(f"variant code {text!r} is damaged: its check letter does not match "
-                         "(compare it with your sheet)")
+        raise SceneError(Text("code.check", code=text))
     seed, spread, mask = found.groups()
     if int(seed) > MAX_SEED:
-        raise SceneError(f"variant code {text!r}: a seed is at most {MAX_SEED}")
+        raise SceneError(Text("code.seed", code=text, most=MAX_SEED))
     held = frozenset(i for i in range(64) if mask and int(mask, 16) >> i & 1)
     return Settings(_long(task), int(seed), int(spread or DEFAULT_SPREAD), held), int(number.group(1))

@@ -25,6 +25,7 @@ from exams.variation import Given, VariationError, apply, givens
 from mechanisms import SceneError
 from mechanisms.gears import GearTrain
 from mechanisms.loader import build_document, preset_document
+from mechanisms.messages import Text
 from mechanisms.rotor import Rotor
 from mechanisms.schema import Scene
 from mechanisms.writer import to_text
@@ -75,17 +76,17 @@ class VariantSet:
     asked: int = 0
 
     @property
-    def shortfall(self) -> str:
+    def shortfall(self) -> Text | str:
         """Why fewer variants than asked were made ('' when all were)."""
         if len(self.variants) >= self.asked:
             return ""
-        return (f"only {len(self.variants)} of {self.asked} variants in "
-                f"{self.asked * TRIES} candidates; {_most_often(self.rejected)}")
+        return Text("variants.short", made=len(self.variants), asked=self.asked,
+                    tried=self.asked * TRIES, why=_most_often(self.rejected))
 
 
-def _most_often(rejected: Counter) -> str:
-    reason, times = rejected.most_common(1)[0] if rejected else ("none was valid", 0)
-    return f"the constraint that failed most often: {reason} ({times} times)"
+def _most_often(rejected: Counter) -> Text:
+    reason, times = rejected.most_common(1)[0] if rejected else (Text("reject.none"), 0)
+    return Text("variants.most_often", reason=reason, times=times)
 
 
 @dataclass(frozen=True)
@@ -104,8 +105,7 @@ def task(preset_id: str) -> Task:
     doc = preset_document(preset_id)
     scene = build_document(doc, source=f"{preset_id}.toml", default_id=preset_id)
     if not scene.book:
-        raise VariantError(f"{preset_id} prints no answers ([book] is empty): its variants "
-                           "would have no key")
+        raise VariantError(Text("variants.no_book", task=preset_id))
     condition, cycle, drawn = 1.0, False, {}
     if isinstance(scene, Scene):
         motion = solve_instant(scene, None)
@@ -120,11 +120,11 @@ def generate(settings: Settings, count: int) -> VariantSet:
     """``count`` variants of the settings' task, in order; VariantError when none can be made
     or the count is out of range."""
     if not 1 <= count <= MAX_COUNT:
-        raise VariantError(f"count must be 1 … {MAX_COUNT}, got {count}")
+        raise VariantError(Text("variants.count", most=MAX_COUNT, value=count))
     if not 0 <= settings.seed <= MAX_SEED:
-        raise VariantError(f"the seed must be 0 … {MAX_SEED}, got {settings.seed}")
+        raise VariantError(Text("variants.seed", most=MAX_SEED, value=settings.seed))
     if not 1 <= settings.spread <= 50:
-        raise VariantError(f"the spread must be 1 … 50 %, got {settings.spread}")
+        raise VariantError(Text("variants.spread", value=settings.spread))
     base = task(settings.task)
     held = {i for i in settings.held if i < len(base.givens)}
     out = VariantSet(settings, [], asked=count)
@@ -134,7 +134,7 @@ def generate(settings: Settings, count: int) -> VariantSet:
         values = [g.value if i in held else g.draw(rng, settings.spread)
                   for i, g in enumerate(base.givens)]
         if tuple(values) in seen:
-            out.rejected["the same numbers as another variant (the ranges are too narrow)"] += 1
+            out.rejected[Text("reject.same")] += 1
             continue
         seen.add(tuple(values))
         try:
@@ -150,8 +150,8 @@ def generate(settings: Settings, count: int) -> VariantSet:
         if index == count:
             break
     if not out.variants:
-        raise VariantError(f"no valid variant of {settings.task} in {count * TRIES} candidates "
-                           f"at ± {settings.spread} %: {_most_often(out.rejected)}")
+        raise VariantError(Text("variants.none", task=settings.task, tried=count * TRIES,
+                                spread=settings.spread, why=_most_often(out.rejected)))
     return out
 
 
@@ -159,12 +159,10 @@ class Rejected(ValueError):
     """A candidate that solves but is not a good exercise."""
 
 
-def _reason(exc: Exception) -> str:
+def _reason(exc: Exception) -> Text:
     if isinstance(exc, Rejected):
-        return str(exc)
-    if isinstance(exc, VariationError):
-        return "the gears do not mesh"
-    return "does not assemble at the asked instant"
+        return exc.args[0]
+    return Text("reject.no_mesh" if isinstance(exc, VariationError) else "reject.no_assembly")
 
 
 def _checked(base: Task, values: list[float]):
@@ -177,7 +175,7 @@ def _checked(base: Task, values: list[float]):
         found = balance(scene)
         largest = max(m.mass * m.radius for m in scene.masses)
         if any(f.mass * f.radius < SMALL_CORRECTION * largest for f in found.corrections.values()):
-            raise Rejected("a correction mass is almost zero")
+            raise Rejected(Text("reject.zero_mass"))
         return scene, ended, {}
     exact_values(scene)  # a train that does not solve raises Unsolvable
     return scene, ended, {}
@@ -197,19 +195,19 @@ def _linkage(base: Task, doc: dict, values: list[float]) -> tuple[Scene, Motion]
         step["guess"] = drawn
         motion = solve_instant(build_document(step, source="variant"), None)
         if motion.condition[0] > 10 * bound:
-            raise Rejected("passes a dead centre on the way from the task's numbers")
+            raise Rejected(Text("reject.dead_centre_on_way"))
         drawn = _positions(motion)
     doc = dict(doc, guess=drawn) if base.scene.guess else doc
     scene = build_document(doc, source="variant")
     motion = solve_instant(scene, None)
     if max(abs(complex(*drawn[n]) - p.z[0]) for n, p in motion.points.items() if n in drawn) > 1e-6:
-        raise Rejected("ends on another branch than the task's")
+        raise Rejected(Text("reject.branch"))
     if motion.condition[0] > bound:
-        raise Rejected(f"a group is near a dead centre (condition number over {bound:.3g})")
+        raise Rejected(Text("reject.near_dead_centre", bound=float(f"{bound:.3g}")))
     if base.cycle:
         turn = solve(scene, np.linspace(0, 2 * math.pi, 360, endpoint=False), order=0)
         if not turn.feasible.all():
-            raise Rejected("the crank cannot turn the whole way, as the task's can")
+            raise Rejected(Text("reject.no_turn"))
     return scene, motion
 
 
@@ -333,7 +331,7 @@ def from_code(text: str) -> Variant:
     settings, index = parse(text)
     found = generate(settings, index)
     if len(found.variants) < index:
-        raise VariantError(f"code {text}: its set has only {len(found.variants)} variants")
+        raise VariantError(Text("variants.not_in_set", code=text, count=len(found.variants)))
     return found.variants[index - 1]
 
 
@@ -347,8 +345,8 @@ def held_indices(givens_: tuple[Given, ...], names: list[str]) -> frozenset[int]
         elif name in labels:
             out.add(labels.index(name))
         else:
-            raise VariantError(f"no given named {name!r}; the task's givens are "
-                               + ", ".join(f"{i + 1} {label}" for i, label in enumerate(labels)))
+            raise VariantError(Text("variants.no_given", name=name, givens=", ".join(
+                f"{i + 1} {label}" for i, label in enumerate(labels))))
     return frozenset(out)
 
 

@@ -18,6 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mechanisms.messages import Text
+
 ANGLE_PER_PERCENT = 0.5  # an angle varies by ± spread/2 degrees (± 10° at 20 %)
 MIN_TEETH = 10  # fewer teeth undercut; the book's smallest gears have 15
 
@@ -221,7 +223,7 @@ def _apply_gears(new: dict, found: list[Given], values: list[float]) -> tuple[di
             spec["radius"] = remap.get(spec["radius"], spec["radius"])
     small = [f"{m}" for (m, _), z in sizes.items() if z < MIN_TEETH]
     if small:
-        raise VariationError(f"gear {', '.join(small)} would have fewer than {MIN_TEETH} teeth")
+        raise VariationError(Text("vary.few_teeth", gears=", ".join(small), least=MIN_TEETH))
     ended = [sizes.get((g.path[1], g.path[2]), v) if g.path[0] == "rims" else v
              for g, v in zip(found, values)]
     return new, ended
@@ -272,8 +274,8 @@ def _close_stages(doc: dict, sizes: dict, old_axes: dict[int, float]) -> dict[in
                 if abs(axes[b] - axes[a]) != distance:
                     free = [r for r in rim if r not in placed]
                     if not free:
-                        raise VariationError(f"gears {a} and {b} cannot mesh: their axes are "
-                                             f"{abs(axes[b] - axes[a]) * unit:.4g} m apart")
+                        raise VariationError(Text("vary.no_mesh", a=a, b=b, distance=float(
+                            f"{abs(axes[b] - axes[a]) * unit:.4g}")))
                     _resize(sizes, free[-1], rim, abs(axes[b] - axes[a]), internal)
             else:
                 continue
@@ -292,5 +294,5 @@ def _resize(sizes: dict, rim, both: list, distance: int, internal) -> None:
     else:
         size = theirs - distance
     if size < MIN_TEETH:
-        raise VariationError(f"gear {rim[0]} would need {size} teeth (or mm) to close its stage")
+        raise VariationError(Text("vary.no_close", gear=rim[0], size=size))
     sizes[rim] = size

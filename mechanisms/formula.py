@@ -11,6 +11,8 @@ import operator
 import re
 from collections.abc import Mapping
 
+from .messages import Text
+
 KEY = re.compile(r"\b[a-z_]+\.[A-Za-z0-9_-]+\.[a-z_]+\b")
 OPERATORS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
              ast.Div: operator.truediv, ast.Pow: operator.pow, ast.USub: operator.neg}
@@ -25,7 +27,7 @@ def _tree(formula: str) -> tuple[ast.Expression, dict[str, str]]:
     try:
         return ast.parse(KEY.sub(name, formula), mode="eval"), names
     except SyntaxError:
-        raise ValueError(f"is not a formula: {formula!r}") from None
+        raise ValueError(Text("formula.syntax", formula=formula)) from None
 
 
 def formula_keys(formula: str) -> list[str]:
@@ -36,14 +38,14 @@ def formula_keys(formula: str) -> list[str]:
                    ast.Load, *OPERATORS)
         if not isinstance(node, allowed) or (isinstance(node, ast.Constant)
                                               and not isinstance(node.value, (int, float))):
-            raise ValueError(f"may use only numbers, result keys, + - * / ** and "
-                             f"{', '.join(FUNCTIONS)}(): {formula!r}")
+            raise ValueError(Text("formula.allowed", functions=", ".join(FUNCTIONS),
+                                  formula=formula))
         if isinstance(node, ast.Call) and not (isinstance(node.func, ast.Name)
                                                and node.func.id in FUNCTIONS and len(node.args) == 1):
-            raise ValueError(f"calls only {', '.join(FUNCTIONS)}() with one argument: {formula!r}")
+            raise ValueError(Text("formula.calls", functions=", ".join(FUNCTIONS),
+                                  formula=formula))
         if isinstance(node, ast.Name) and node.id not in names and node.id not in FUNCTIONS:
-            raise ValueError(f"uses {node.id!r}, which is not a result key such as "
-                             f"members.4.omega: {formula!r}")
+            raise ValueError(Text("formula.name", name=node.id, formula=formula))
     return list(names.values())
 
 

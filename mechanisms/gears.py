@@ -16,6 +16,7 @@ import dataclasses
 from dataclasses import dataclass, field
 
 from . import limits
+from .messages import Text, given
 from .reader import Reader, SceneError, identity
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "members", "meshes", "shafts",
@@ -73,8 +74,9 @@ class GearTrain:
 
 
 def _array(r: Reader, value, where: str, what: str) -> list:
+    """``value`` as a list; ``what`` names the ``scene.array.`` sentence of its items."""
     if not isinstance(value, list):
-        raise r.fail(where, f"must be an array of {what}, got {value!r}")
+        raise r.fail(where, "array_of", what=Text(f"scene.array.{what}"), value=given(value))
     return value
 
 
@@ -87,9 +89,7 @@ def _check_carriers(members: dict[int, GearMember], r: Reader) -> None:
         while carrier is not None:
             if carrier in seen:
                 chain = " → ".join(map(str, [*seen[seen.index(carrier):], carrier]))
-                raise r.fail(f"members.{start.number}.carrier",
-                             f"makes a cycle of carriers ({chain}): a carrier cannot ride on a "
-                             "member it carries")
+                raise r.fail(f"members.{start.number}.carrier", "carrier_cycle", chain=chain)
             seen.append(carrier)
             carrier = members[carrier].carrier
 
@@ -100,12 +100,12 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
     limits.count(raw, limits.GEARS, r.fail)
     table = raw.get("members")
     if not isinstance(table, dict) or not table:
-        raise r.fail("members", "is missing: list the members as [members.N] tables")
+        raise r.fail("members", "gear_members_missing")
     members = {}
     for key, spec in table.items():
         where = f"members.{key}"
         if not key.isdigit() or int(key) < 1:
-            raise r.fail(where, "must be numbered like the book's members (1, 2, 3, …)")
+            raise r.fail(where, "gear_number")
         spec = r.check_keys(spec, MEMBER_KEYS, where)
         carrier = spec.get("carrier")
         members[int(key)] = GearMember(
@@ -117,60 +117,59 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
 
     def member(value, where: str) -> int:
         if isinstance(value, bool) or not isinstance(value, int) or value not in known:
-            raise r.fail(where, f"must be one of the members {sorted(known)}, got {value!r}")
+            raise r.fail(where, "one_of_members", known=sorted(known), value=given(value))
         return value
 
     for m in members.values():
         if m.carrier is not None:
             member(m.carrier, f"members.{m.number}.carrier")
             if m.axis <= 0:
-                raise r.fail(f"members.{m.number}.axis", "must be > 0 for a planet (its axis "
-                                                          "turns with the carrier)")
+                raise r.fail(f"members.{m.number}.axis", "planet_axis")
     _check_carriers(members, r)
     meshes = []
-    for i, spec in enumerate(_array(r, raw.get("meshes", []), "meshes", "[[meshes]] tables")):
+    for i, spec in enumerate(_array(r, raw.get("meshes", []), "meshes", "meshes")):
         where = f"meshes[{i}]"
         spec = r.check_keys(spec, MESH_KEYS, where)
         pair = spec.get("members")
         if not isinstance(pair, list) or len(pair) != 2:
-            raise r.fail(f"{where}.members", f"must be two member numbers, got {pair!r}")
+            raise r.fail(f"{where}.members", "two_members", value=given(pair))
         a, b = (member(m, f"{where}.members") for m in pair)
         if "radii" in spec:
             radii = spec["radii"]
             if not isinstance(radii, list) or len(radii) != 2:
-                raise r.fail(f"{where}.radii", "must be two pitch radii [m, m]")
+                raise r.fail(f"{where}.radii", "two_radii")
             radii = tuple(r.number({"r": v}, "r", f"{where}.radii", positive=True) for v in radii)
         elif "teeth" in spec:
             module = r.number(spec, "module", where, default=0.001, positive=True)
             teeth = spec["teeth"]
             if not isinstance(teeth, list) or len(teeth) != 2 or not all(
                     isinstance(z, int) and not isinstance(z, bool) and z > 0 for z in teeth):
-                raise r.fail(f"{where}.teeth", f"must be two tooth counts, got {teeth!r}")
+                raise r.fail(f"{where}.teeth", "two_teeth", value=given(teeth))
             radii = tuple(module * z / 2 for z in teeth)
         else:
-            raise r.fail(where, "needs radii = [R_a, R_b] or teeth = [z_a, z_b]")
+            raise r.fail(where, "mesh_size")
         internal = spec.get("internal")
         if internal is not None:
             internal = member(internal, f"{where}.internal")
             if internal not in (a, b):
-                raise r.fail(f"{where}.internal", "must be one of the two meshing members")
+                raise r.fail(f"{where}.internal", "internal_member")
         bevel = spec.get("bevel", False)
         if not isinstance(bevel, bool):
-            raise r.fail(f"{where}.bevel", f"must be true or false, got {bevel!r}")
+            raise r.fail(f"{where}.bevel", "not_flag", value=given(bevel))
         meshes.append(Mesh((a, b), radii, internal, bevel))
     shafts = tuple(tuple(member(m, f"shafts[{i}]")
-                         for m in _array(r, group, f"shafts[{i}]", "member numbers"))
+                         for m in _array(r, group, f"shafts[{i}]", "members"))
                    for i, group in enumerate(_array(r, raw.get("shafts", []), "shafts",
-                                                    "arrays of member numbers")))
+                                                    "shafts")))
     fixed = tuple(member(m, "fixed") for m in _array(r, raw.get("fixed", []), "fixed",
-                                                       "member numbers"))
+                                                       "members"))
     inputs = []
-    for i, spec in enumerate(_array(r, raw.get("inputs", []), "inputs", "[[inputs]] tables")):
+    for i, spec in enumerate(_array(r, raw.get("inputs", []), "inputs", "inputs")):
         where = f"inputs[{i}]"
         spec = r.check_keys(spec, INPUT_KEYS, where)
         m = member(spec.get("member"), f"{where}.member")
         if m in fixed:
-            raise r.fail(f"{where}.member", f"is member {m}, which is fixed: it cannot be driven")
+            raise r.fail(f"{where}.member", "fixed_input", member=m)
         if "omega" in spec:
             inputs.append(Input(m, r.number(spec, "omega", where)))
         else:
@@ -180,10 +179,10 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
     points = {}
     table = raw.get("points", {})
     if not isinstance(table, dict):
-        raise r.fail("points", f"must be a table of [member, radius], got {table!r}")
+        raise r.fail("points", "gear_points", value=given(table))
     for name, value in table.items():
         if not (isinstance(value, list) and len(value) == 2):
-            raise r.fail(f"points.{name}", "must be [member, radius]")
+            raise r.fail(f"points.{name}", "gear_point")
         points[name] = (member(value[0], f"points.{name}"),
                         r.number({"r": value[1]}, "r", f"points.{name}", non_negative=True))
     return GearTrain(

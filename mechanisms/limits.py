@@ -10,23 +10,26 @@ from __future__ import annotations
 
 from typing import Any
 
-# (top-level key, what it lists, most allowed) per kind of scene
-LINKAGE = (("members", "moving members", 20), ("pairs", "pairs", 30), ("frame", "frame points", 30),
-           ("forces", "forces", 40), ("moments", "moments", 20), ("guess", "drawn points", 200))
+from .messages import Text
+
+# (top-level key, most allowed) per kind of scene; what a key lists is the sentence
+# ``scene.lists.<key>``
+LINKAGE = (("members", 20), ("pairs", 30), ("frame", 30), ("forces", 40), ("moments", 20),
+           ("guess", 200))
 POINTS = 200  # every point of every member, extra points included
-GEARS = (("members", "members", 40), ("meshes", "meshes", 60), ("shafts", "shafts", 40),
-         ("fixed", "fixed members", 40), ("inputs", "inputs", 40), ("points", "points", 100))
-ROTOR = (("masses", "unbalanced masses", 100),)
+GEARS = (("members", 40), ("meshes", 60), ("shafts", 40), ("fixed", 40), ("inputs", 40),
+         ("points", 100))
+ROTOR = (("masses", 100),)
 BOOK = 300  # printed values quoted from the book
 
 
 def count(raw: dict, limits, fail) -> None:
     """Refuse a table with more entries than its limit (``fail(key, rule)`` makes the error)."""
-    for key, what, most in (*limits, ("book", "printed values", BOOK)):
+    for key, most in (*limits, ("book", BOOK)):
         value: Any = raw.get(key)
         if isinstance(value, (list, dict)) and len(value) > most:
-            raise fail(key, f"lists {len(value):,} {what}; a scene may have at most {most} "
-                            "(no course mechanism comes near it)")
+            raise fail(key, "too_many", count=len(value), what=Text(f"scene.lists.{key}"),
+                       most=most)
 
 
 def count_points(raw: dict, fail) -> None:
@@ -38,4 +41,4 @@ def count_points(raw: dict, fail) -> None:
                 for spec in members.values() if isinstance(spec, dict)
                 and isinstance(spec.get("extra", {}), dict) and isinstance(spec.get("points", []), list))
     if total > POINTS:
-        raise fail("members", f"hold {total:,} points; a scene may have at most {POINTS}")
+        raise fail("members", "too_many_points", count=total, most=POINTS)

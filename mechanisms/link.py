@@ -18,6 +18,7 @@ import urllib.parse
 import zlib
 
 from .loader import MAX_BYTES, SceneError, parse_document
+from .messages import Text
 from .writer import to_text
 
 PARAMETER = "s"
@@ -54,7 +55,7 @@ def parameter(text: str) -> str:
         query = urllib.parse.parse_qs(text.split("?", 1)[-1], keep_blank_values=True)
         values = query.get(PARAMETER)
         if not values:
-            raise SceneError(f"link: it has no {PARAMETER}= parameter (a scene's link has one)")
+            raise SceneError(Text("link.no_parameter", parameter=PARAMETER))
         return values[0]
     return text
 
@@ -63,21 +64,19 @@ def decode(text: str, default_id: str = "link"):
     """The scene a link carries, checked like an uploaded file; SceneError says what is wrong."""
     value = parameter(text)
     if len(value) > MAX_CHARS:
-        raise SceneError(f"link: the {PARAMETER}= parameter is {len(value):,} characters; a "
-                         f"scene's link must be at most {MAX_CHARS:,}")
+        raise SceneError(Text("link.too_long", parameter=PARAMETER, size=len(value),
+                              most=MAX_CHARS))
     if not value or value[0] != VERSION:
-        raise SceneError(f"link: unknown format {value[:1]!r} (this app writes version "
-                         f"{VERSION}); the link may be cut or from a newer version")
+        raise SceneError(Text("link.format", found=repr(value[:1]), version=VERSION))
     body = value[1:]
     try:
         packed = base64.urlsafe_b64decode(body + "=" * (-len(body) % 4))
         unpacker = zlib.decompressobj(-15, zdict=_DICTIONARY)
         data = unpacker.decompress(packed, MAX_BYTES + 1)  # a bounded inflate: no zip bomb
     except (binascii.Error, ValueError, zlib.error):
-        raise SceneError("link: the parameter is damaged (it is not a scene this app wrote); "
-                         "copy the whole link again") from None
+        raise SceneError(Text("link.damaged")) from None
     if len(data) > MAX_BYTES:
-        raise SceneError(f"link: the scene it carries is over {MAX_BYTES:,} bytes")
+        raise SceneError(Text("link.too_big", most=MAX_BYTES))
     if not unpacker.eof:
-        raise SceneError("link: the parameter is cut short (copy the whole link)")
+        raise SceneError(Text("link.cut"))
     return parse_document(data, source="link", default_id=default_id)

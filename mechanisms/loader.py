@@ -11,12 +11,14 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import re
 import tomllib
 from pathlib import Path
 from typing import Any
 
 from . import limits
 from .formula import formula_keys
+from .messages import Text, given, text_of
 from .point_forms import FormError, form_of, from_distances, from_polar
 from .reader import Reader, SceneError, identity
 from .schema import DRIVER, FRAME, Driver, Fit, Force, Member, Moment, Pair, Scene, Travel
@@ -44,7 +46,7 @@ def load_scene(path: str | Path):
     try:
         data = path.read_bytes()
     except OSError as exc:
-        raise SceneError(f"{path}: cannot read file ({exc.strerror})") from None
+        raise SceneError(Text("scene.unreadable", source=str(path), reason=exc.strerror or "")) from None
     return parse_document(data, source=path.name, default_id=path.stem)
 
 
@@ -64,7 +66,7 @@ def _preset_path(preset_id: str) -> Path:
     path = PRESETS / f"{preset_id}.toml"
     if not path.is_file():
         known = ", ".join(preset_ids())
-        raise SceneError(f"no preset named {preset_id!r}; known presets: {known}")
+        raise SceneError(Text("scene.no_preset", name=preset_id, known=known))
     return path
 
 
@@ -131,19 +133,44 @@ def _read_toml(data: bytes | str, source: str) -> dict:
     if isinstance(data, str):
         data = data.encode("utf-8")
     if len(data) > MAX_BYTES:
-        raise SceneError(f"{source}: file is {len(data):,} bytes; a scene must be under "
-                         f"{MAX_BYTES:,} bytes")
+        raise SceneError(Text("scene.file_too_big", source=source, size=len(data), most=MAX_BYTES))
     try:
         text = data.decode("utf-8-sig")  # Windows Notepad starts UTF-8 with a byte-order mark
     except UnicodeDecodeError as exc:
-        raise SceneError(f"{source}: not UTF-8 text (byte {exc.start})") from None
+        raise SceneError(Text("scene.not_utf8", source=source, byte=exc.start)) from None
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"{source}: not valid TOML ({exc})") from None
+        raise SceneError(_toml_error(exc, source)) from None
     except RecursionError:
-        raise SceneError(f"{source}: tables nested too deeply") from None
+        raise SceneError(Text("scene.too_deep", source=source)) from None
     return raw
+
+
+# the TOML parser's reasons (Python 3.11's tomllib), by how they start, in the reader's words
+TOML_REASONS = {"Cannot overwrite a value": "overwrite", "Cannot declare": "twice",
+                "Cannot mutate immutable namespace": "twice", "Cannot redefine namespace": "twice",
+                "Duplicate inline table key": "twice", "Unterminated string": "unterminated",
+                "Unclosed array": "unclosed_array", "Unclosed inline table": "unclosed_table",
+                "Invalid value": "value", "Invalid statement": "statement",
+                "Expected '=' after a key": "equals", "Invalid initial character for a key part": "key",
+                "Illegal character": "character", "Found invalid character": "character",
+                "Expected ']]'": "brackets", "Expected ']'": "bracket", "Expected newline": "newline",
+                "Unescaped '\\'": "escape", "Invalid hex value": "escape",
+                "Escaped character is not": "escape", "Invalid date or datetime": "date",
+                "Expected": "expected"}
+
+
+def _toml_error(exc: tomllib.TOMLDecodeError, source: str) -> Text:
+    """The parser's message as a sentence in the reader's language, its place kept."""
+    message = str(exc)
+    place = re.search(r" \(at (?:line (\d+), column (\d+)|end of document)\)$", message)
+    reason = message[:place.start()] if place else message
+    known = next((key for start, key in TOML_REASONS.items() if reason.startswith(start)), None)
+    said = Text(f"toml.{known or 'other'}")
+    where = ("" if place is None else Text("toml.end") if place[1] is None
+             else Text("toml.at", line=int(place[1]), column=int(place[2])))
+    return Text("scene.not_toml", source=source, where=where, reason=said)
 
 
 def _build(raw: dict, r: Reader, default_id: str) -> Scene:
@@ -152,7 +179,7 @@ def _build(raw: dict, r: Reader, default_id: str) -> Scene:
     limits.count_points(raw, r.fail)
     kind = r.text(raw, "kind", "", default="linkage")
     if kind != "linkage":
-        raise r.fail("kind", f"must be 'linkage' for a linkage scene, got {kind!r}")
+        raise r.fail("kind", "not_linkage", kind=given(kind))
     frame = _frame(raw, r)
     members = _members(raw, r)
     pairs = _pairs(raw, r, frame, members)
@@ -188,32 +215,31 @@ def _build(raw: dict, r: Reader, default_id: str) -> Scene:
 def _frame(raw: dict, r: Reader) -> dict[str, complex]:
     table = raw.get("frame")
     if table is None:
-        raise r.fail("frame", "is missing (the fixed points of member 1)")
+        raise r.fail("frame", "frame_missing")
     if not isinstance(table, dict) or not table:
-        raise r.fail("frame", "must be a table of fixed points, e.g. O = [0.0, 0.0]")
+        raise r.fail("frame", "frame_table")
     frame = {name: r.vector(v, f"frame.{name}") for name, v in table.items()}
     names = list(frame)
     for i, a in enumerate(names):
         for b in names[i + 1:]:
             if frame[a] == frame[b]:
-                raise r.fail(f"frame.{b}", f"coincides with frame.{a}; two pivots cannot "
-                                           "share a position (use one point)")
+                raise r.fail(f"frame.{b}", "pivots_coincide", other=f"frame.{a}")
     return frame
 
 
 def _members(raw: dict, r: Reader) -> dict[int, Member]:
     table = raw.get("members")
     if not isinstance(table, dict) or not table:
-        raise r.fail("members", "is missing (the moving members 2, 3, …)")
+        raise r.fail("members", "members_missing")
     members = {}
     for key, spec in table.items():
         where = f"members.{key}"
         if not key.isdigit() or int(key) < 2:
-            raise r.fail(where, "must be numbered 2, 3, … (1 is the frame)")
+            raise r.fail(where, "member_number")
         spec = r.check_keys(spec, MEMBER_KEYS, where)
         members[int(key)] = _member(int(key), spec, r, where)
     if DRIVER not in members:
-        raise r.fail("members.2", "is missing: member 2 is the driving member")
+        raise r.fail("members.2", "driver_missing")
     return dict(sorted(members.items()))
 
 
@@ -221,27 +247,27 @@ def _member(number: int, spec: dict, r: Reader, where: str) -> Member:
     axis = spec.get("points")
     if (not isinstance(axis, list) or not 1 <= len(axis) <= 2
             or not all(isinstance(p, str) and p for p in axis) or len(set(axis)) != len(axis)):
-        raise r.fail(f"{where}.points", f"must list one or two point letters, e.g. "
-                                        f"[\"A\", \"B\"], got {axis!r}")
+        raise r.fail(f"{where}.points", "point_letters", value=given(axis))
     points = {axis[0]: 0j}
     if len(axis) == 2:
         points[axis[1]] = complex(r.number(spec, "length", where, positive=True))
     elif "length" in spec:
-        raise r.fail(f"{where}.length", "needs two points: a one-point member has no length")
+        raise r.fail(f"{where}.length", "one_point_length")
     extra = spec.get("extra", {})
     if not isinstance(extra, dict):
-        raise r.fail(f"{where}.extra", "must be a table of points, e.g. { B = [0.45, 0.0] }")
+        raise r.fail(f"{where}.extra", "extra_table")
     forms = {}
     for name, value in extra.items():
         length = points[axis[1]].real if len(axis) == 2 else None
-        z = _extra_point(value, r, f"{where}.extra.{name}", length, f"point {name} of member {number}")
+        z = _extra_point(value, r, f"{where}.extra.{name}", length, Text("scene.point_of_member", point=name,
+                                                                    member=number))
         if isinstance(value, dict):
             forms[name] = form_of(value)
         if name in points:
-            raise r.fail(f"{where}.extra.{name}", "repeats a point of the member")
+            raise r.fail(f"{where}.extra.{name}", "repeats_point")
         for other, w in points.items():
             if z == w:
-                raise r.fail(f"{where}.extra.{name}", f"coincides with point {other}")
+                raise r.fail(f"{where}.extra.{name}", "point_coincides", other=other)
         points[name] = z
     centre = spec.get("centre")
     return Member(
@@ -272,16 +298,15 @@ def _extra_point(value: Any, r: Reader, where: str, length: float | None, who: s
             p = r.vector(value["polar"], f"{where}.polar")
             return from_polar(p.real, p.imag)
     except FormError as exc:
-        raise r.fail(where, f"({who}): {exc}") from None
-    raise r.fail(where, f"({who}) must be [along, left], {{ distances = [d1, d2], side = "
-                        f"\"left\" }} or {{ polar = [r, angle_deg] }}, got {value!r}")
+        raise r.fail(where, "point_form", who=who, reason=text_of(exc)) from None
+    raise r.fail(where, "point_form", who=who, reason=Text("form.unknown", value=given(value)))
 
 
 def _member_ref(value: Any, r: Reader, where: str, members: dict[int, Member]) -> int:
     if isinstance(value, bool) or not isinstance(value, int):
-        raise r.fail(where, f"must be a member number, got {value!r}")
+        raise r.fail(where, "not_member_number", value=given(value))
     if value != 1 and value not in members:
-        raise r.fail(where, f"names member {value}, which is not defined")
+        raise r.fail(where, "no_member", member=value)
     return value
 
 
@@ -289,16 +314,14 @@ def _point_ref(value: Any, member: int, r: Reader, where: str, frame: dict,
                members: dict[int, Member]) -> str:
     own = frame if member == FRAME else members[member].points
     if not isinstance(value, str) or value not in own:
-        raise r.fail(where, f"must be a point of member {member} "
-                            f"({', '.join(own)}), got {value!r}")
+        raise r.fail(where, "not_point_of", member=member, points=", ".join(own), value=given(value))
     return value
 
 
 def _pairs(raw: dict, r: Reader, frame: dict, members: dict[int, Member]) -> tuple[Pair, ...]:
     specs = raw.get("pairs")
     if not isinstance(specs, list) or not specs:
-        raise r.fail("pairs", "is missing: list the kinematic pairs, e.g. "
-                              "{ type = \"revolute\", members = [1, 2], point = \"O\" }")
+        raise r.fail("pairs", "pairs_missing")
     pairs = []
     for i, spec in enumerate(specs):
         where = f"pairs[{i}]"
@@ -307,10 +330,10 @@ def _pairs(raw: dict, r: Reader, frame: dict, members: dict[int, Member]) -> tup
         if kind == "revolute":
             ms = spec.get("members")
             if not isinstance(ms, list) or len(ms) != 2:
-                raise r.fail(f"{where}.members", f"must be two member numbers, got {ms!r}")
+                raise r.fail(f"{where}.members", "two_members", value=given(ms))
             a, b = (_member_ref(m, r, f"{where}.members", members) for m in ms)
             if a == b:
-                raise r.fail(f"{where}.members", "must be two different members")
+                raise r.fail(f"{where}.members", "same_member")
             point = spec.get("point")
             for m in (a, b):
                 _point_ref(point, m, r, f"{where}.point", frame, members)
@@ -321,7 +344,7 @@ def _pairs(raw: dict, r: Reader, frame: dict, members: dict[int, Member]) -> tup
             guide = _member_ref(spec.get("guide"), r, f"{where}.guide", members)
             slider = _member_ref(spec.get("slider"), r, f"{where}.slider", members)
             if guide == slider:
-                raise r.fail(f"{where}.slider", "must differ from the guide member")
+                raise r.fail(f"{where}.slider", "slider_is_guide")
             pair = Pair(
                 "prismatic", (guide, slider),
                 point=_point_ref(spec.get("point"), slider, r, f"{where}.point", frame, members),
@@ -333,13 +356,12 @@ def _pairs(raw: dict, r: Reader, frame: dict, members: dict[int, Member]) -> tup
         elif kind == "circular":
             pair = _circular(spec, r, where, frame, members)
         else:
-            raise r.fail(f"{where}.type",
-                         f"must be 'revolute', 'prismatic' or 'circular', got {kind!r}")
+            raise r.fail(f"{where}.type", "pair_type", value=given(kind))
         pairs.append(pair)
     names = [p.name for p in pairs]
     for i, name in enumerate(names):
         if name in names[:i]:
-            raise r.fail(f"pairs[{i}].name", f"repeats the pair name {name!r}; give one a name")
+            raise r.fail(f"pairs[{i}].name", "pair_name", name=name)
     return tuple(pairs)
 
 
@@ -349,14 +371,13 @@ def _circular(spec: dict, r: Reader, where: str, frame: dict, members: dict[int,
     guide = _member_ref(spec.get("guide"), r, f"{where}.guide", members)
     slider = _member_ref(spec.get("slider"), r, f"{where}.slider", members)
     if slider == FRAME or guide == slider:
-        raise r.fail(f"{where}.slider", "must be a moving member other than the guide")
+        raise r.fail(f"{where}.slider", "slot_slider")
     point = _point_ref(spec.get("point"), slider, r, f"{where}.point", frame, members)
     centre = spec.get("centre")
     for m in (guide, slider):
         _point_ref(centre, m, r, f"{where}.centre", frame, members)
     if centre == point:
-        raise r.fail(f"{where}.centre", "must differ from the block's point: the distance "
-                                        "between them is the slot's radius")
+        raise r.fail(f"{where}.centre", "slot_centre")
     return Pair("revolute", (guide, slider), centre, on_slot=point,
                 name=r.text(spec, "name", where, default=f"{guide}-{slider}"))
 
@@ -364,18 +385,17 @@ def _circular(spec: dict, r: Reader, where: str, frame: dict, members: dict[int,
 def _driver(raw: dict, r: Reader, members: dict[int, Member], pairs: tuple[Pair, ...]) -> Driver:
     spec = r.check_keys(raw.get("driver"), DRIVER_KEYS, "driver") if "driver" in raw else None
     if spec is None:
-        raise r.fail("driver", "is missing (member 2 rotating with omega, or linear with velocity)")
+        raise r.fail("driver", "no_driver")
     member = spec.get("member", DRIVER)
     if member != DRIVER:
-        raise r.fail("driver.member", f"must be 2 (the course's driving member), got {member!r}")
+        raise r.fail("driver.member", "driver_member", value=given(member))
     kind = spec.get("type")
     if kind == "rotating":
         pair = next((p for p in pairs if p.kind == "revolute" and set(p.members) == {1, 2}), None)
         if pair is None:
-            raise r.fail("driver.type", "is 'rotating' but no revolute pair joins members 1 and 2")
+            raise r.fail("driver.type", "no_crank_pair")
         if members[DRIVER].points[pair.point] != 0:
-            raise r.fail("members.2.points", f"must start with the frame pivot {pair.point}, so "
-                                             "that φ₂ is the direction of the crank")
+            raise r.fail("members.2.points", "crank_start", point=pair.point)
         return Driver("rotating", DRIVER, pair.name,
                       at=math.radians(r.number(spec, "at", "driver", default=0.0)),
                       speed=r.number(spec, "omega", "driver"),
@@ -383,26 +403,25 @@ def _driver(raw: dict, r: Reader, members: dict[int, Member], pairs: tuple[Pair,
     if kind == "linear":
         pair = next((p for p in pairs if p.kind == "prismatic" and p.members == (1, 2)), None)
         if pair is None:
-            raise r.fail("driver.type", "is 'linear' but no prismatic pair has guide = 1 and "
-                                        "slider = 2")
+            raise r.fail("driver.type", "no_slide_pair")
         return Driver("linear", DRIVER, pair.name,
                       at=r.number(spec, "at", "driver", default=0.0),
                       speed=r.number(spec, "velocity", "driver"),
                       accel=r.number(spec, "acceleration", "driver", default=0.0))
-    raise r.fail("driver.type", f"must be 'rotating' or 'linear', got {kind!r}")
+    raise r.fail("driver.type", "driver_type", value=given(kind))
 
 
 def _assembly(raw: dict, r: Reader, members: dict[int, Member]) -> dict[tuple[int, int], int]:
     table = raw.get("assembly", {})
     if not isinstance(table, dict):
-        raise r.fail("assembly", "must be a table such as { \"3-4\" = 1 }")
+        raise r.fail("assembly", "assembly_table")
     out = {}
     for key, value in table.items():
         parts = key.split("-")
         if len(parts) != 2 or not all(p.isdigit() and int(p) in members for p in parts):
-            raise r.fail(f"assembly.{key}", "must name a group by its two members, e.g. \"3-4\"")
+            raise r.fail(f"assembly.{key}", "assembly_key")
         if value not in (1, -1) or isinstance(value, bool):
-            raise r.fail(f"assembly.{key}", f"must be 1 or -1, got {value!r}")
+            raise r.fail(f"assembly.{key}", "assembly_sign", value=given(value))
         out[tuple(sorted(int(p) for p in parts))] = value
     return out
 
@@ -411,7 +430,7 @@ def _tables(raw: dict, r: Reader, name: str, allowed: set[str]):
     """(where, spec) for each table of the array ``[[name]]``, keys checked."""
     specs = raw.get(name, [])
     if not isinstance(specs, list):
-        raise r.fail(name, f"must be an array of tables [[{name}]]")
+        raise r.fail(name, "array_of_tables", name=name)
     for i, spec in enumerate(specs):
         where = f"{name}[{i}]"
         yield where, r.check_keys(spec, allowed, where)
@@ -420,7 +439,7 @@ def _tables(raw: dict, r: Reader, name: str, allowed: set[str]):
 def _flag(table: dict, r: Reader, name: str, where: str = "") -> bool:
     value = table.get(name, False)
     if not isinstance(value, bool):
-        raise r.fail(f"{where}.{name}" if where else name, f"must be true or false, got {value!r}")
+        raise r.fail(f"{where}.{name}" if where else name, "not_flag", value=given(value))
     return value
 
 
@@ -452,16 +471,15 @@ def _fit(raw: dict, r: Reader, book: dict[str, float]) -> Fit:
     spec = r.check_keys(raw["fit"], FIT_KEYS, "fit")
     unknowns, start, used = (spec.get(k) for k in ("unknowns", "start", "used"))
     if not (isinstance(unknowns, list) and unknowns and all(isinstance(u, str) for u in unknowns)):
-        raise r.fail("fit.unknowns", "must list the fitted numbers' paths, e.g. [\"frame.G.0\"]")
+        raise r.fail("fit.unknowns", "fit_unknowns")
     if not (isinstance(start, list) and len(start) == len(unknowns)):
-        raise r.fail("fit.start", f"must give one starting value per unknown ({len(unknowns)})")
+        raise r.fail("fit.start", "fit_start", count=len(unknowns))
     if not (isinstance(used, list) and used and all(isinstance(k, str) and k in book for k in used)):
-        raise r.fail("fit.used", "must list keys of [book] the fit was made to")
+        raise r.fail("fit.used", "fit_used")
     chose = spec.get("chose", [])
     if not (isinstance(chose, list)
             and all(isinstance(k, str) and k in book and k not in used for k in chose)):
-        raise r.fail("fit.chose", "must list keys of [book], not used by the fit, that chose "
-                                  "among layouts fitting equally")
+        raise r.fail("fit.chose", "fit_chose")
     return Fit(tuple(unknowns), tuple(r.number({"v": v}, "v", "fit.start") for v in start),
                tuple(used), r.number(spec, "residual", "fit", non_negative=True), tuple(chose))
 
@@ -469,36 +487,34 @@ def _fit(raw: dict, r: Reader, book: dict[str, float]) -> Fit:
 def _slips(raw: dict, r: Reader, book: dict[str, float]) -> dict[str, str]:
     table = raw["book_slips"]
     if not isinstance(table, dict):
-        raise r.fail("book_slips", "must be a table of formulas keyed like [book], e.g. "
-                                   "\"members.4.epsilon\" = \"points.D.a / 0.91\"")
+        raise r.fail("book_slips", "slips_table")
     for key, formula in table.items():
         if key not in book:
-            raise r.fail(f"book_slips.{key}", "must be a key of [book]")
+            raise r.fail(f"book_slips.{key}", "slip_key")
         try:
             formula_keys(r.text(table, key, "book_slips"))
         except ValueError as error:
-            raise r.fail(f"book_slips.{key}", str(error)) from None
+            raise r.fail(f"book_slips.{key}", text_of(error)) from None
     return dict(table)
 
 
 def _guess(raw: dict, r: Reader) -> dict[str, complex]:
     table = raw.get("guess", {})
     if not isinstance(table, dict):
-        raise r.fail("guess", "must be a table of sketched points, e.g. { C = [0.3, 0.2] }")
+        raise r.fail("guess", "guess_table")
     return {name: r.vector(v, f"guess.{name}") for name, v in table.items()}
 
 
 def _special(raw: dict, r: Reader, members: dict[int, Member]) -> dict[str, tuple[int, int]]:
     table = raw.get("special", {})
     if not isinstance(table, dict):
-        raise r.fail("special", "must be a table such as { S = [3, 6] }")
+        raise r.fail("special", "special_table")
     out = {}
     for name, value in table.items():
         if (not isinstance(value, list) or len(value) != 2 or len(set(map(str, value))) != 2
                 or not all(isinstance(m, int) and not isinstance(m, bool) and m in members
                            for m in value)):
-            raise r.fail(f"special.{name}", "must name two binary members of a class III "
-                                            f"group whose lines meet there, e.g. [3, 6]; got {value!r}")
+            raise r.fail(f"special.{name}", "special_point", value=given(value))
         out[name] = (value[0], value[1])
     return out
 
@@ -506,7 +522,7 @@ def _special(raw: dict, r: Reader, members: dict[int, Member]) -> dict[str, tupl
 def _travel(raw: dict, r: Reader, driver: Driver) -> Travel:
     spec = r.check_keys(raw["travel"], TRAVEL_KEYS, "travel")
     if driver.kind != "rotating":
-        raise r.fail("travel", "needs a rotating driver (the crank is chain-driven)")
+        raise r.fail("travel", "travel_driver")
     return Travel(*(r.number(spec, k, "travel", positive=True)
                     for k in ("speed", "wheel_radius", "sprocket_wheel", "sprocket_crank")),
                   angle=math.radians(r.number(spec, "angle", "travel", default=0.0)))
@@ -529,16 +545,13 @@ def _check_shared_points_are_joints(scene: Scene, r: Reader) -> None:
                     grown = True
         loose = [m for m in members if m not in group]
         if loose:
-            raise r.fail(f"members.{loose[0]}.points",
-                         f"uses the letter {name} of member {members[0]} but no revolute pair at "
-                         f"{name} joins them; give the point its own letter")
+            raise r.fail(f"members.{loose[0]}.points", "loose_letter", point=name, member=members[0])
 
 
 def _check_every_member_is_joined(scene: Scene, r: Reader) -> None:
     for number in scene.members:
         if not any(number in p.members for p in scene.pairs):
-            raise r.fail(f"members.{number}", "is not joined to anything by a pair")
+            raise r.fail(f"members.{number}", "not_joined")
         if len(scene.members[number].axis) == 1 and not any(
                 p.kind == "prismatic" and number in p.members for p in scene.pairs):
-            raise r.fail(f"members.{number}.points", "has one point, so its orientation must "
-                                                     "come from a prismatic pair, and it has none")
+            raise r.fail(f"members.{number}.points", "one_point_member")

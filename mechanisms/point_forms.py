@@ -14,6 +14,8 @@ import cmath
 import math
 from typing import Any
 
+from .messages import Text, given
+
 FORMS = ("offset", "distances", "polar")
 SIDES = ("left", "right")
 DIGITS = 12  # written back to 12 significant digits: 0.2, not 0.19999999999999998
@@ -36,7 +38,7 @@ def _pair(value: Any, what: str) -> tuple[float, float]:
     ok = (isinstance(value, list) and len(value) == 2
           and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value))
     if not ok or not all(math.isfinite(v) for v in value):
-        raise FormError(f"{what} must be a pair of finite numbers, got {value!r}")
+        raise FormError(Text("form.pair", what=what, value=given(value)))
     return float(value[0]), float(value[1])
 
 
@@ -44,18 +46,14 @@ def from_distances(d1: float, d2: float, side: str, length: float | None) -> com
     """The point at ``d1`` from the first point and ``d2`` from the second, on ``side`` of
     first → second (law of cosines: along = (d1² − d2² + L²) / 2L)."""
     if length is None:
-        raise FormError("needs the member's two points: a triangle's sides are measured "
-                        "from both")
+        raise FormError(Text("form.two_points"))
     if d1 <= 0 or d2 <= 0:
-        raise FormError(f"distances must both be > 0, got [{d1!r}, {d2!r}]")
+        raise FormError(Text("form.distances_positive", value=[d1, d2]))
     if side not in SIDES:
-        raise FormError(f"side must be \"left\" or \"right\" (of the direction from the "
-                        f"member's first point to its second), got {side!r}")
+        raise FormError(Text("form.side", value=given(side)))
     c, b, a = sorted((d1, d2, length))
     if a - b - c > SLACK * a:
-        raise FormError(f"distances {d1:g} m and {d2:g} m cannot close a triangle with the "
-                        f"member's length {length:g} m (each side must be at most the sum of "
-                        "the other two)")
+        raise FormError(Text("form.no_triangle", d1=d1, d2=d2, length=length))
     along = (d1 * d1 - d2 * d2 + length * length) / (2 * length)
     # the height from the triangle's area, by Heron's formula in Kahan's stable order (the
     # plain √(d1² − along²) loses half its digits for a point near the member's line)
@@ -70,7 +68,7 @@ def from_polar(r: float, angle_deg: float) -> complex:
     """The point at ``r`` from the first point, ``angle_deg`` counter-clockwise from the
     direction first → second."""
     if r <= 0:
-        raise FormError(f"polar's distance must be > 0, got {r!r}")
+        raise FormError(Text("form.polar_positive", value=given(r)))
     return cmath.rect(r, math.radians(angle_deg))
 
 
@@ -78,23 +76,20 @@ def local_point(value: Any, length: float | None) -> complex:
     """The point a value of any form puts in the member's frame (FormError says why not)."""
     form = form_of(value)
     if form == "offset":
-        along, left = _pair(value, "a point")
+        along, left = _pair(value, Text("form.a_point"))
         return complex(along, left)
     if form == "distances":
         unknown = set(value) - {"distances", "side"}
         if unknown:
-            raise FormError(f"has {sorted(unknown)[0]!r}: a point by distances takes "
-                            "distances = [d1, d2] and side = \"left\" or \"right\"")
+            raise FormError(Text("form.distances_keys", key=sorted(unknown)[0]))
         d1, d2 = _pair(value["distances"], "distances")
         return from_distances(d1, d2, value.get("side", "?"), length)
     if form == "polar":
         unknown = set(value) - {"polar"}
         if unknown:
-            raise FormError(f"has {sorted(unknown)[0]!r}: a point by polar takes "
-                            "polar = [r, angle_deg] only")
+            raise FormError(Text("form.polar_keys", key=sorted(unknown)[0]))
         return from_polar(*_pair(value["polar"], "polar"))
-    raise FormError(f"must be [along, left], {{ distances = [d1, d2], side = \"left\" }} or "
-                    f"{{ polar = [r, angle_deg] }}, got {value!r}")
+    raise FormError(Text("form.unknown", value=given(value)))
 
 
 def _round(x: float) -> float:

@@ -12,11 +12,14 @@ import difflib
 import math
 from typing import Any
 
+from .messages import Text, given
+
 LARGEST = 1e9  # beyond this a number is a typo or an attack, and squares of it overflow
 
 
 class SceneError(ValueError):
-    """A scene file breaks a rule; the message names the file, the key and the rule."""
+    """A scene file breaks a rule; the message (a ``Text``) names the file, the key and the
+    rule."""
 
 
 class Reader:
@@ -25,18 +28,22 @@ class Reader:
     def __init__(self, source: str):
         self.source = source
 
-    def fail(self, key: str, rule: str) -> SceneError:
-        return SceneError(f"{self.source}: {key} {rule}")
+    def fail(self, key: str, rule: str | Text, **values) -> SceneError:
+        """The error for ``key``: ``rule`` is a ``Text`` or the name of a ``scene.`` sentence
+        filled with ``values``."""
+        if not isinstance(rule, Text):
+            rule = Text(f"scene.{rule}", **values)
+        return SceneError(Text("scene.at", source=self.source, key=key, rule=rule))
 
     def check_keys(self, table: Any, allowed: set[str], key: str) -> dict:
         if not isinstance(table, dict):
-            raise self.fail(key, f"must be a table, got {type(table).__name__}")
+            raise self.fail(key, "not_table", kind=type(table).__name__)
         for name in table:
             if name not in allowed:
                 near = difflib.get_close_matches(name, sorted(allowed), n=1)
-                hint = f" (did you mean {near[0]!r}?)" if near else ""
+                hint = Text("scene.did_you_mean", near=near[0]) if near else ""
                 where = f"{key}.{name}" if key else name
-                raise self.fail(where, f"is not a known key{hint}")
+                raise self.fail(where, "unknown_key", hint=hint)
         return table
 
     def number(self, table: dict, name: str, key: str, default: float | None = None,
@@ -44,45 +51,44 @@ class Reader:
         where = f"{key}.{name}" if key else name
         if name not in table:
             if default is None:
-                raise self.fail(where, "is missing")
+                raise self.fail(where, "missing")
             return default
         value = table[name]
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise self.fail(where, f"must be a number, got {value!r}")
+            raise self.fail(where, "not_number", value=given(value))
         if not math.isfinite(value):
-            raise self.fail(where, f"must be a finite number, got {value!r}")
+            raise self.fail(where, "not_finite", value=given(value))
         if abs(value) > LARGEST:
-            raise self.fail(where, f"is {value!r}: no mechanism needs a number beyond ±{LARGEST:g} "
-                                   "(SI units: metres, radians per second, kilograms, newtons)")
+            raise self.fail(where, "too_large", value=float(value), largest=LARGEST)
         if positive and value <= 0:
-            raise self.fail(where, f"must be > 0, got {value!r}")
+            raise self.fail(where, "not_positive", value=given(value))
         if non_negative and value < 0:
-            raise self.fail(where, f"must be >= 0, got {value!r}")
+            raise self.fail(where, "negative", value=given(value))
         return float(value)
 
     def text(self, table: dict, name: str, key: str, default: str | None = None) -> str:
         where = f"{key}.{name}" if key else name
         value = table.get(name, default)
         if value is None:
-            raise self.fail(where, "is missing")
+            raise self.fail(where, "missing")
         if not isinstance(value, str):
-            raise self.fail(where, f"must be a string, got {value!r}")
+            raise self.fail(where, "not_string", value=given(value))
         return value
 
     def integer(self, table: dict, name: str, key: str) -> int:
         where = f"{key}.{name}" if key else name
         value = table.get(name)
         if isinstance(value, bool) or not isinstance(value, int):
-            raise self.fail(where, f"must be a member number (integer), got {value!r}")
+            raise self.fail(where, "not_member_number", value=given(value))
         return value
 
     def vector(self, value: Any, key: str) -> complex:
         ok = (isinstance(value, list) and len(value) == 2
               and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value))
         if not ok:
-            raise self.fail(key, f"must be a pair of numbers [x, y], got {value!r}")
+            raise self.fail(key, "not_vector", value=given(value))
         if not all(math.isfinite(v) and abs(v) <= LARGEST for v in value):
-            raise self.fail(key, f"must be finite and within ±{LARGEST:g}, got {value!r}")
+            raise self.fail(key, "vector_range", largest=LARGEST, value=given(value))
         return complex(value[0], value[1])
 
 
@@ -91,10 +97,10 @@ def identity(raw: dict, r: Reader, default_id: str) -> dict:
     with the reasons some of them differ (``[book]``, ``[book_notes]``)."""
     book = raw.get("book", {})
     if not isinstance(book, dict):
-        raise r.fail("book", "must be a table of printed values, e.g. \"members.4.omega\" = 8.148")
+        raise r.fail("book", "book_table")
     notes = raw.get("book_notes", {})
     if not isinstance(notes, dict):
-        raise r.fail("book_notes", "must be a table of strings keyed like [book]")
+        raise r.fail("book_notes", "notes_table")
     return dict(id=r.text(raw, "id", "", default=default_id),
                 title=r.text(raw, "title", "", default=default_id),
                 title_sr=r.text(raw, "title_sr", "", default=""),

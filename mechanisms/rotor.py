@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass, field
 
 from . import limits
+from .messages import given
 from .reader import Reader, SceneError, identity
 
 PLANES = ("I", "II")
@@ -69,13 +70,13 @@ def parse_rotor(raw: dict, source: str, default_id: str) -> Rotor:
     limits.count(raw, limits.ROTOR, r.fail)
     mode = r.text(raw, "mode", "", default="dynamic")
     if mode not in ("dynamic", "static"):
-        raise r.fail("mode", f"must be 'dynamic' or 'static', got {mode!r}")
+        raise r.fail("mode", "rotor_mode", value=given(mode))
     planes_needed = PLANES if mode == "dynamic" else PLANES[:1]
     planes = r.check_keys(raw.get("planes", {}), set(PLANES), "planes")
     positions = {p: r.number(planes, p, "planes") for p in planes_needed}
     specs = raw.get("masses")
     if not isinstance(specs, list) or not specs:
-        raise r.fail("masses", "is missing: list the unbalanced masses as [[masses]] tables")
+        raise r.fail("masses", "masses_missing")
     masses = []
     for i, spec in enumerate(specs):
         where = f"masses[{i}]"
@@ -94,8 +95,7 @@ def parse_rotor(raw: dict, source: str, default_id: str) -> Rotor:
             known["angle"] = math.radians(known["angle"])
         corrections[plane] = Correction(**known)
         if len(corrections[plane].unknowns) != 2:
-            raise r.fail(where, "must give exactly one of mass, radius, angle (the other two "
-                                f"are found); it gives {sorted(spec) or 'none'}")
+            raise r.fail(where, "one_unknown_pair", given=", ".join(sorted(spec)) or "—")
     bearings = r.check_keys(raw.get("bearings", {}), {"A", "B"}, "bearings")
     omega = raw.get("omega")
     return Rotor(

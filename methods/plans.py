@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from mechanisms.messages import Text
 from mechanisms.schema import DRIVER, FRAME, Pair, Scene
 from solvers.kinematics import Motion, special_pairs
 from solvers.structure import Group, StructureError
@@ -379,9 +380,7 @@ def _triad(sheet: _Sheet, group: Group) -> None:
                          special_pairs(sheet.scene, [group]).items()), (None, 0, 0))
     special = sheet.m.special.get(name) if name else None
     if special is None or not np.isfinite(special.z[sheet.i]):
-        raise StructureError(f"{group.label()} has no special point S at this instant (the "
-                             "lines of its binary members are parallel, or a binary member "
-                             "slides on the ternary member): its plan cannot start from S")
+        raise StructureError(Text("structure.no_special", label=group.label()))
     ternary = group.members[0]
     target = Station(ternary, name)
     sheet.pos[target.name] = complex(special.z[sheet.i])

@@ -13,7 +13,7 @@ from mechanisms.schema import Scene
 from solvers.diagnostics import (
     TOLERANCES,
     Unsolvable,
-    format_range,
+    format_ranges,
     newton_accuracy,
     newton_iterations,
     sweep_values,
@@ -27,7 +27,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import first_run, waiting
-from ui.i18n import current as current_language, num, t, title_of
+from ui.i18n import current as current_language, message, num, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
@@ -174,7 +174,7 @@ with main:
     try:
         structure = decompose(scene)
     except StructureError as exc:
-        st.error(t("assur.no_structure", reason=str(exc)))
+        st.error(t("assur.no_structure", reason=message(exc)))
         st.stop()
     st.markdown(t("assur.formula", formula=structure.formula))
     try:
@@ -189,7 +189,7 @@ with main:
         st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
         upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
     if problem:
-        st.error(t("plans.unsolvable", reason=str(problem)))
+        st.error(t("plans.unsolvable", reason=message(problem)))
         st.stop()
     surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
     survey = cycle(surveyed, tol)
@@ -199,7 +199,7 @@ with main:
     chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
           f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
     for issue in survey.issues:
-        ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
+        ranges = message(format_ranges(scene, issue.ranges))
         key = "assur.open" if issue.problem == "open" else "assur.near_singular"
         st.warning(t(key, group=issue.group, ranges=ranges))
     if not waiting():

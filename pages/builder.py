@@ -10,6 +10,7 @@ from figures.builder import builder_figure
 from mechanisms import SceneError, preset_ids
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
+from mechanisms.messages import text_of
 from mechanisms.schema import Scene
 from mechanisms.sketch import (
     COLUMNS,
@@ -27,7 +28,7 @@ from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
 from ui.export import chart
 from ui.firstpaint import waiting
-from ui.i18n import t, title_of
+from ui.i18n import message, t, title_of
 from ui.present import look
 from ui.scenes import read_upload, scene_download
 
@@ -162,7 +163,7 @@ def upload() -> None:
     try:
         scene = read_upload(file, "linkage")
     except SceneError as exc:
-        st.session_state["build_message"] = str(exc)
+        st.session_state["build_message"] = text_of(exc)
         return
     builder.start_from(scene)
 
@@ -229,7 +230,7 @@ st.title(f"{BUILDER.icon} {t(BUILDER.title)}")
 st.caption(t("build.intro"))
 start_controls()
 if st.session_state.get("build_message"):
-    st.error(st.session_state["build_message"])
+    st.error(message(st.session_state["build_message"]))
 
 base = builder.base()
 drawing_col, tables_col = st.columns([3, 2], gap="large")
@@ -244,7 +245,7 @@ try:
     solved = builder.drawing(scene)
     st.session_state["build_last"] = doc, solved
 except (SceneError, StructureError, Unsolvable) as exc:
-    problem = str(exc)
+    problem = message(exc)
 last_doc, last = st.session_state.get("build_last", (None, None))
 
 with drawing_col:
@@ -276,7 +277,7 @@ with drawing_col:
         st.error(t("build.flip_failed", group=st.session_state.pop("build_flip_error")))
     if st.session_state.get("build_drag_error"):
         point, to, why = st.session_state.pop("build_drag_error")
-        st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=why))
+        st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=message(why)))
     if not waiting():  # on a fresh visit, after the drawing is painted (ui/firstpaint.py)
         checks(doc, scene, problem, solved, last_doc)
 

@@ -19,7 +19,7 @@ from methods.force_steps import equation, steps as force_steps
 from methods.lever_steps import construction as lever_construction, latex as lever_latex
 from methods.scales import polygon_scale
 from reports.values import has_loads
-from solvers.diagnostics import Unsolvable, format_range, sweep_values, torque_resolution
+from solvers.diagnostics import Unsolvable, format_ranges, sweep_values, torque_resolution
 from solvers.kinetostatics import Action, Kinetostatics, analyse, free_body
 from solvers.structure import StructureError
 from ui import practice
@@ -31,7 +31,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import waiting
-from ui.i18n import current, num, scaled_title, t, title_of
+from ui.i18n import current, message, num, scaled_title, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
@@ -259,7 +259,7 @@ with main:
         instant(scene)  # raises with the reason when the mechanism cannot be in this position
         k = at_instant(scene, st.session_state["inertia"])
     except (Unsolvable, StructureError) as exc:
-        st.error(t("plans.unsolvable", reason=str(exc)))
+        st.error(t("plans.unsolvable", reason=message(exc)))
         st.stop()
     now = 0  # k holds the instant only
     if not np.isfinite(k.driving[now]):
@@ -383,7 +383,7 @@ if tabs[4].open:
         if not feasible.all():
             st.caption(t("forces.part_cycle", share=num(100 * feasible.mean(), 3)))
         for issue in c.motion.issues:
-            ranges = "; ".join(format_range(scene, lo, hi) for lo, hi in issue.ranges)
+            ranges = message(format_ranges(scene, issue.ranges))
             if issue.problem == "near-singular":
                 st.warning(t("forces.dead_point", group=issue.group, ranges=ranges))
         pairs = [(f"|F_{p}{q}|", r.magnitude, "y") for (p, q), r in sorted(c.reactions.items())

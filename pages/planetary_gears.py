@@ -17,7 +17,7 @@ from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import waiting
-from ui.i18n import num, t
+from ui.i18n import message, num, t
 from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -83,17 +83,17 @@ with main:
                    for (_, r), old in zip(table.iterrows(), base.meshes))
     train: GearTrain = base.with_(inputs=tuple(inputs), meshes=meshes)
     for note in geometry_notes(train):
-        st.info(note)
+        st.info(message(note))
     try:
         solution = solve_train(train)
     except TrainError as exc:
-        st.error(str(exc))
+        st.error(message(exc))
         st.stop()
     st.caption(t("gears.dof", dof=solution.dof, inputs=len(train.inputs)))
     if solution.status == "solved" and solution.message:
-        st.info(solution.message)  # the input at rest: the ratios still hold
+        st.info(message(solution.message))  # the input at rest: the ratios still hold
     if solution.status != "solved":
-        st.error(solution.message)
+        st.error(message(solution.message))
         chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
         st.stop()
 

@@ -19,7 +19,7 @@ from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import waiting
-from ui.i18n import num, scaled_title, t
+from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -103,10 +103,10 @@ with main, st.container(key="later_masses"):  # on a phone, after the polygons (
     try:
         result = balance(rotor)
     except BalanceError as exc:
-        st.error(str(exc))
+        st.error(message(exc))
         st.stop()
     for note in result.notes:
-        st.info(note)
+        st.info(message(note))
 
 with controls:
     scene_download(rotor)

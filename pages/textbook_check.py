@@ -6,25 +6,26 @@ import pandas as pd
 import streamlit as st
 
 from mechanisms import load_preset, preset_ids
+from mechanisms.messages import Text, text_of
 from reports.textbook import BookRow, check
 from solvers.diagnostics import Unsolvable
 from ui.book import COUNTED, VERDICTS, book_table, coverage_table, fit_summary, tasks_table
 from ui.chapters import page_for
 from ui.export import csv_button
-from ui.i18n import t, title_of
+from ui.i18n import message, t, title_of
 
 
 @st.cache_data(max_entries=4)
-def all_checks() -> dict[str, list[BookRow] | str]:
+def all_checks() -> dict[str, list[BookRow] | Text]:
     """Every preset that quotes the book: its rows, or why it cannot be solved."""
-    out: dict[str, list[BookRow] | str] = {}
+    out: dict[str, list[BookRow] | Text] = {}
     for pid in preset_ids():
         scene = load_preset(pid)
         if scene.book:
             try:
                 out[pid] = check(scene)
             except Unsolvable as exc:
-                out[pid] = str(exc)
+                out[pid] = text_of(exc)
     return out
 
 
@@ -56,8 +57,8 @@ for pid in sorted(checks, key=order):
     st.page_link(page_for(pid), label=t("check.open"), icon=":material/open_in_new:",
                  query_params={"scene": pid})
     rows = checks[pid]
-    if isinstance(rows, str):
-        st.error(rows)
+    if not isinstance(rows, list):
+        st.error(message(rows))
         continue
     fit_summary(scene, rows)
     st.dataframe(book_table(rows), hide_index=True)

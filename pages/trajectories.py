@@ -14,7 +14,7 @@ from mechanisms.schema import Scene, Travel
 from methods import practice_steps
 from methods.compass import construction as compass_steps
 from methods.scales import plan_scales
-from solvers.diagnostics import dead_zones, format_range
+from solvers.diagnostics import dead_zones, format_ranges
 from solvers.paths import (
     animation_order,
     cycle_time,
@@ -33,7 +33,7 @@ from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.export import chart, csv_button, show_table
 from ui.firstpaint import waiting
-from ui.i18n import current, num, t, title_of
+from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -156,7 +156,7 @@ solve_ms = (time.perf_counter() - started) * 1e3
 
 with main:
     for zone in dead_zones(scene):
-        where = "; ".join(format_range(scene, lo, hi) for lo, hi in zone.ranges)
+        where = message(format_ranges(scene, zone.ranges))
         st.warning(t("traj.dead_zone", group=zone.group, where=where))
     tabs = [t("traj.tab_paths"), t("traj.tab_animation")] + ([t("traj.tab_field")] if scene.travel else [])
     tab_paths, tab_anim, *tab_field = st.tabs(tabs, key="tab", on_change="rerun")

@@ -23,7 +23,7 @@ from exams.variants import (
 )
 from mechanisms import load_preset, preset_ids
 from ui.chapters import VARIANTS, page_for
-from ui.i18n import current, num, t, title_of
+from ui.i18n import current, message, num, t, title_of
 
 
 @st.cache_resource(max_entries=8, show_spinner=False)
@@ -66,13 +66,13 @@ if st.button(t("var.make"), type="primary", icon=":material/casino:"):
             st.session_state["var_made"] = (settings, int(count), made(settings, int(count)))
     except VariantError as exc:
         st.session_state.pop("var_made", None)
-        st.error(t("var.none", reason=str(exc)))
+        st.error(t("var.none", reason=message(exc)))
 
 result = st.session_state.get("var_made")
 if result is not None and result[:2] == (settings, int(count)):
     found = result[2]
     if found.shortfall:
-        st.warning(t("var.short", reason=found.shortfall))
+        st.warning(t("var.short", reason=message(found.shortfall)))
     page = page_for(choice).removeprefix("pages/").removesuffix(".py")
     st.dataframe(pd.DataFrame([{
         t("var.col_code"): v.code,

@@ -28,7 +28,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import first_run, waiting
-from ui.i18n import current, num, t, title_of
+from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
@@ -94,7 +94,7 @@ try:
     plans = solved_plans(scene)
 except Unsolvable as exc:
     with main:
-        st.error(t("plans.unsolvable", reason=str(exc)))
+        st.error(t("plans.unsolvable", reason=message(exc)))
     st.stop()
 except StructureError:  # a class III group without its special point S at this instant
     with main:

@@ -19,6 +19,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from mechanisms.loader import SceneError, build_document, preset_document
+from mechanisms.messages import Text
 from mechanisms.schema import Fit
 from solvers.budget import Unsolvable
 from solvers.structure import StructureError
@@ -36,7 +37,7 @@ class Found:
 
 
 def set_path(doc: dict, path: str, value: float) -> None:
-    """doc["frame"]["G"][0] = value for "frame.G.0" (an index where the table is a list)."""
+    """doc["frame"]["G"][0] = value for frame.G.0 (an index where the table is a list)."""
     *where, last = path.split(".")
     table = doc
     for key in where:
@@ -67,7 +68,7 @@ def refit(preset_id: str) -> Found:
     scene = build_document(doc, source=preset_id)
     fit = scene.fit
     if fit is None:
-        raise SceneError(f"{preset_id} has no [fit]")
+        raise SceneError(Text("scene.no_fit", task=preset_id))
     result = least_squares(lambda x: misfits(doc, fit, scene.book, x), np.array(fit.start),
                            x_scale="jac", xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=2000)
     residual = float(np.sqrt(np.mean(result.fun ** 2)))

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from mechanisms.messages import Text
 from mechanisms.schema import Scene
 
 from .kinematics import bodies_before, solve
@@ -31,7 +32,7 @@ def closures(scene: Scene, group_name: str) -> list[dict[str, complex]]:
     structure = decompose(scene)
     index = next((i for i, g in enumerate(structure.groups) if g.name == group_name), None)
     if index is None:
-        raise StructureError(f"no Assur group {group_name!r} in this mechanism")
+        raise StructureError(Text("structure.no_group", group=group_name))
     group = structure.groups[index]
     at = scene.driver.at if scene.guess_at is None else scene.guess_at
     known = bodies_before(scene, structure.groups[:index], at)

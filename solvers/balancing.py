@@ -13,6 +13,7 @@ import cmath
 import math
 from dataclasses import dataclass
 
+from mechanisms.messages import Text
 from mechanisms.rotor import PLANES, Correction, Rotor
 
 
@@ -41,7 +42,7 @@ class Balance:
     u_needed: dict[str, complex]  # the U each plane must add (kg·m)
     residual_force: float  # |Σ U| after correction (kg·m)
     residual_moment: float  # |Σ U·(x − x_II)| after correction (kg·m²)
-    notes: tuple[str, ...] = ()
+    notes: tuple[Text, ...] = ()
 
     def bearing_forces(self, corrected: bool) -> dict[str, float] | None:
         """|F| on bearings A and B at ω (N): the rotating inertia forces ω²·U carried by the
@@ -72,8 +73,7 @@ def normalised(angle: float) -> float:
 def balance(rotor: Rotor) -> Balance:
     """The corrections that balance the rotor, or ``BalanceError`` with the reason."""
     if not rotor.masses or all(m.mass * m.radius == 0 for m in rotor.masses):
-        raise BalanceError("all unbalanced masses are zero (or at radius zero): the rotor is "
-                           "already balanced and needs no correction")
+        raise BalanceError(Text("balance.nothing"))
     us = [m.mass * m.radius * unit(m.angle) for m in rotor.masses]
     total = sum(us)
     notes = []
@@ -85,11 +85,9 @@ def balance(rotor: Rotor) -> Balance:
         span = x1 - x2
         scale = max(abs(m.x - x2) for m in rotor.masses) or 1.0
         if abs(span) <= 1e-9 * scale:
-            raise BalanceError(f"correction planes I and II are at the same axial position "
-                               f"(x = {x1} m): two planes are needed for dynamic balance")
+            raise BalanceError(Text("balance.same_plane", x=float(x1)))
         if abs(span) < 1e-3 * scale:
-            notes.append(f"planes I and II are only {abs(span):.3g} m apart: the corrections "
-                         "grow as 1/distance and become very large")
+            notes.append(Text("balance.close_planes", span=float(f"{abs(span):.3g}")))
         moment = sum(u * (m.x - x2) for u, m in zip(us, rotor.masses))
         u1 = -moment / span
         needed = {"I": u1, "II": -total - u1}
@@ -106,7 +104,7 @@ def _complete(plane: str, known: Correction, u: complex, notes: list) -> Found:
     """Fill in the two unknowns of a correction so that m·r·e^{iφ} = u."""
     size = abs(u)
     if size == 0:
-        notes.append(f"plane {plane} needs no correction (its U is zero)")
+        notes.append(Text("balance.no_correction", plane=plane))
         return Found(0.0, known.radius or 0.0, known.angle or 0.0)
     angle = normalised(cmath.phase(u))
     unknown = set(known.unknowns)
@@ -118,15 +116,12 @@ def _complete(plane: str, known: Correction, u: complex, notes: list) -> Found:
     # points along (or against) the given angle
     along = (u * unit(-known.angle))
     if abs(along.imag) > 1e-9 * size:
-        raise BalanceError(f"plane {plane}: with the angle fixed at "
-                           f"{math.degrees(known.angle):.2f}° the correction cannot balance the "
-                           f"rotor; it must point at {math.degrees(angle):.2f}°")
+        raise BalanceError(Text("balance.wrong_angle", plane=plane,
+                                given=round(math.degrees(known.angle), 2),
+                                needed=round(math.degrees(angle), 2)))
     if along.real < 0:
-        raise BalanceError(f"plane {plane}: the correction must point opposite to the given "
-                           f"angle ({math.degrees(angle):.2f}°); a mass or radius cannot be negative")
-    raise BalanceError(f"plane {plane}: with only the angle given, mass and radius are not "
-                       f"determined separately — only their product m·r = {size:.6g} kg·m; "
-                       "give the mass or the radius")
+        raise BalanceError(Text("balance.opposite", plane=plane, needed=round(math.degrees(angle), 2)))
+    raise BalanceError(Text("balance.product", plane=plane, product=float(f"{size:.6g}")))
 
 
 def graphical_error(value: float, scale: float, precision: float = 0.5e-3,

@@ -14,6 +14,8 @@ import functools
 import time
 from contextvars import ContextVar
 
+from mechanisms.messages import Text
+
 SECONDS = 5.0
 _deadline: ContextVar[float | None] = ContextVar("solve_deadline", default=None)
 
@@ -44,5 +46,4 @@ def check() -> None:
     """Stop with OverBudget once the running solve is past its budget."""
     deadline = _deadline.get()
     if deadline is not None and time.monotonic() > deadline:
-        raise OverBudget(f"solving this scene takes longer than {SECONDS:g} s, the most a page "
-                         "may spend on one scene; it is far larger than any course mechanism")
+        raise OverBudget(Text("budget.over", seconds=float(SECONDS)))

@@ -7,6 +7,7 @@ import time
 
 import numpy as np
 
+from mechanisms.messages import Joined, Text
 from mechanisms.schema import Scene
 
 from .kinematics import SINGULAR, GroupIssue, Motion, solve
@@ -16,28 +17,27 @@ from .kinetostatics import analyse
 from .structure import Structure, decompose
 from .budget import Unsolvable  # defined there, where the time budget needs it; imported from here
 
-WHY_OPEN = {
-    "RRR": "the two links cannot reach each other: the distance between the group's outer "
-           "joints is larger than the sum, or smaller than the difference, of their lengths",
-    "RRP": "the link cannot reach the slider's guide line",
-    "RPR": "the guide line cannot pass through the joint it must slide over",
-    "PRP": "the two guides are parallel, so the common joint has no intersection to sit on",
-    "RPP": "the two guides are parallel, so the slider has no intersection to sit on",
-}
+# the dyads whose failure to close has a sentence of its own (``why_open.<kind>``)
+WHY_OPEN = {"RRR", "RRP", "RPR", "PRP", "RPP"}
 
 
-def format_driver(scene: Scene, value: float) -> str:
+def format_driver(scene: Scene, value: float) -> Text:
     if scene.driver.kind == "rotating":
-        return f"φ₂ = {math.degrees(value):.6g}°"
-    return f"s = {value:.6g} m"
+        return Text("driver.angle", angle=math.degrees(value))
+    return Text("driver.stroke", s=value)
 
 
-def format_range(scene: Scene, lo: float, hi: float) -> str:
+def format_range(scene: Scene, lo: float, hi: float) -> Text:
     if lo == hi:
         return format_driver(scene, lo)
     if scene.driver.kind == "rotating":
-        return f"φ₂ ∈ [{math.degrees(lo):.1f}°, {math.degrees(hi):.1f}°]"
-    return f"s ∈ [{lo:.4g} m, {hi:.4g} m]"
+        return Text("driver.angles", lo=round(math.degrees(lo), 1), hi=round(math.degrees(hi), 1))
+    return Text("driver.strokes", lo=float(f"{lo:.4g}"), hi=float(f"{hi:.4g}"))
+
+
+def format_ranges(scene: Scene, ranges: list[tuple[float, float]]) -> Joined:
+    """Several driver ranges in one place of a sentence."""
+    return Joined(format_range(scene, lo, hi) for lo, hi in ranges)
 
 
 def sweep_values(scene: Scene, steps: int = 3600) -> np.ndarray:
@@ -60,15 +60,15 @@ def explain_open(scene: Scene, at: float, issue: GroupIssue,
     """Why the group fails at ``at``, and the driver ranges where the mechanism cannot go."""
     structure = structure or decompose(scene)
     zones = [z for z in dead_zones(scene, structure) if z.group == issue.group]
-    where = "; ".join(format_range(scene, lo, hi) for z in zones for lo, hi in _wrap(scene, z.ranges))
-    text = (f"group II({issue.group}) {issue.kind} cannot close at {format_driver(scene, at)}: "
-            f"{WHY_OPEN.get(issue.kind, 'its loop does not close')}.")
-    if where:
+    ranges = [r for z in zones for r in _wrap(scene, z.ranges)]
+    why = Text(f"why_open.{issue.kind}" if issue.kind in WHY_OPEN else "why_open.other")
+    where = ""
+    if ranges:
         rotating = scene.driver.kind == "rotating"
-        what = "over the whole cycle the crank cannot pass" if rotating else "the slider cannot reach"
-        survey = " (surveyed in 0.1° steps)" if rotating else ""
-        text += f" Roughly, {what} {where}{survey}."
-    return text
+        where = Text("open.crank_cannot" if rotating else "open.slider_cannot",
+                     ranges=format_ranges(scene, ranges))
+    return Text("open.group", group=issue.group, kind=issue.kind, at=format_driver(scene, at),
+                why=why, where=where)
 
 
 def _wrap(scene: Scene, ranges: list[tuple[float, float]]) -> list[tuple[float, float]]:
@@ -82,10 +82,9 @@ def _wrap(scene: Scene, ranges: list[tuple[float, float]]) -> list[tuple[float, 
     return ranges
 
 
-def explain_singular(scene: Scene, at: float, group: str, condition: float) -> str:
-    return (f"group II({group}) is at or near a dead centre at {format_driver(scene, at)} "
-            f"(condition number {condition:.3g}): velocities and accelerations grow without "
-            "bound there")
+def explain_singular(scene: Scene, at: float, group: str, condition: float) -> Text:
+    return Text("open.dead_centre", group=group, at=format_driver(scene, at),
+                condition=float(f"{condition:.3g}"))
 
 
 def _driver_value(scene: Scene, at: float | None) -> float:

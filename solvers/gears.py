@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mechanisms.gears import GearTrain
+from mechanisms.messages import Text
 
 
 class TrainError(ValueError):
@@ -30,7 +31,7 @@ class TrainSolution:
     dof: int  # degrees of freedom of the train without its inputs
     status: str  # "solved", "under" (missing inputs), "over" (inconsistent inputs)
     undetermined: tuple[int, ...] = ()
-    message: str = ""
+    message: Text | str = ""  # why not solved, or a remark on the solution
     # the speeds for a unit input, when the input is at rest (ratios do not depend on its speed)
     unit: dict[int, float] | None = None
 
@@ -66,8 +67,7 @@ def mesh_carrier(train: GearTrain, a: int, b: int) -> int | None:
     """The carrier holding both axes of a mesh (None: both axes fixed in the frame)."""
     carriers = {train.members[m].carrier for m in (a, b)} - {None}
     if len(carriers) > 1:
-        raise TrainError(f"gears {a} and {b} mesh but ride on different carriers "
-                         f"{sorted(carriers)}; a mesh needs both axes on one carrier")
+        raise TrainError(Text("train.carriers", a=a, b=b, carriers=sorted(carriers)))
     return carriers.pop() if carriers else None
 
 
@@ -93,7 +93,7 @@ def willis_table(train: GearTrain) -> list[Willis]:
             for mesh in train.meshes]
 
 
-def geometry_notes(train: GearTrain, tolerance: float = 0.02) -> list[str]:
+def geometry_notes(train: GearTrain, tolerance: float = 0.02) -> list[Text]:
     """Meshes whose pitch radii do not fit the distance between their axes (where both axes
     are known in one frame: both fixed, or both on the same carrier)."""
     notes = []
@@ -106,9 +106,14 @@ def geometry_notes(train: GearTrain, tolerance: float = 0.02) -> list[str]:
         distance = abs(ma.axis - mb.axis)
         expected = abs(ra - rb) if mesh.internal is not None else ra + rb
         if abs(distance - expected) > tolerance * max(expected, 1e-12):
-            notes.append(f"mesh {a}–{b}: the axes are {distance:.4g} m apart, but the pitch radii "
-                         f"{ra:.4g} m and {rb:.4g} m need {expected:.4g} m")
+            notes.append(Text("train.axes", a=a, b=b, distance=_g4(distance), ra=_g4(ra),
+                              rb=_g4(rb), expected=_g4(expected)))
     return notes
+
+
+def _g4(value: float) -> float:
+    """Four significant digits, as a message shows a length."""
+    return float(f"{value:.4g}")
 
 
 def equations(train: GearTrain, with_inputs: bool = True) -> tuple[np.ndarray, np.ndarray, list[str]]:
@@ -172,23 +177,20 @@ def solve_train(train: GearTrain) -> TrainSolution:
         x, *_ = np.linalg.lstsq(a, b, rcond=None) if len(a) else (np.zeros(len(members)),)
         known = {m: float(x[i]) for i, m in enumerate(members) if m not in free}
         return TrainSolution(train, known, dof, "under", free,
-                             f"the train has {dof} degree(s) of freedom but {len(train.inputs)} "
-                             f"input(s): members {', '.join(map(str, free))} stay undetermined; "
-                             f"give {dof - len(train.inputs)} more input(s)")
+                             Text("train.under", dof=dof, inputs=len(train.inputs),
+                                  free=", ".join(map(str, free)), more=dof - len(train.inputs)))
     x, *_ = np.linalg.lstsq(a, b, rcond=None)
     residual = float(np.abs(a @ x - b).max())
     if residual > 1e-9 * scale:
         return TrainSolution(train, {}, dof, "over", (),
-                             f"the train has {dof} degree(s) of freedom but {len(train.inputs)} "
-                             "input(s), and they contradict each other")
+                             Text("train.over", dof=dof, inputs=len(train.inputs)))
     x[np.abs(x) <= 1e-12 * scale] = 0.0  # a member at rest is at rest, not at 1e-15 rad/s
     omega = {m: float(x[i]) + 0.0 for i, m in enumerate(members)}
     if dof == 1 and train.inputs and not any(omega.values()):
         unit = solve_train(train.with_(inputs=tuple(
             dataclasses.replace(i, omega=1.0, velocity=None) for i in train.inputs[:1])))
         return TrainSolution(train, omega, dof, "solved", unit=unit.omega,
-                             message="the input is at rest, so every member is at rest; the "
-                                     "ratios are the train's own (the same for any input speed)")
+                             message=Text("train.at_rest"))
     return TrainSolution(train, omega, dof, "solved")
 
 

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from mechanisms.messages import Text
 from mechanisms.schema import DRIVER, FRAME, Scene
 
 from .budget import bounded, check
@@ -234,9 +235,8 @@ class _Solved:
         if prepared is None:
             start = assemble(scene, group, known_at(np.array([a0])), size)
             if start is None:
-                raise StructureError(
-                    f"group {group.label()} ({group.kind}) cannot be assembled at the scene's "
-                    "own instant: its links do not reach (check the lengths and the [guess] points)")
+                raise StructureError(Text("structure.no_assembly", label=group.label(),
+                                          kind=group.kind))
             start = (a0, *start)
             prepared = start, prepare_march(scene, group, np.array(span), start, known_at, size)
             _remember(_PREPARED, key, prepared, PREPARED_MAX)

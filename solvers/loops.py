@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mechanisms.messages import Text
 from mechanisms.schema import Pair, Scene
 
 from .state import Body, cplx
@@ -115,8 +116,8 @@ def build_loop(scene: Scene, group: Group, branch: int | None = None) -> DyadLoo
     """Lay the vector loop of a class II group (independent of the cycle) on ``branch``
     (±1; default: the scene's ``[assembly]`` sign for the group, else 1)."""
     if group.cls != 2:
-        raise StructureError(f"class {group.cls} group {group.label()} ({group.kind}) is "
-                             "recognised but not yet supported by the kinematics core")
+        raise StructureError(Text("structure.unsupported", cls=group.cls, label=group.label(),
+                                  kind=group.kind))
     j, _ = group.members
     outer_j = group.pairs[0]
     body = outer_j.other(j)

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from itertools import combinations
 
+from mechanisms.messages import Joined, Text
 from mechanisms.schema import DRIVER, FRAME, Pair, Scene
 
 from .budget import bounded, check
@@ -90,8 +91,7 @@ def decompose(scene: Scene) -> Structure:
     known = {FRAME, DRIVER}
     extra = [p for p in scene.pairs if set(p.members) <= known and p is not driver]
     if extra:
-        raise StructureError(f"the driving member 2 is joined to the frame twice "
-                             f"(pairs {driver.name} and {extra[0].name}), so it cannot move")
+        raise StructureError(Text("structure.driver_twice", first=driver.name, second=extra[0].name))
     remaining = set(scene.members) - known
     groups = []
     while remaining:
@@ -120,8 +120,7 @@ def _find_dyad(scene: Scene, known: set[int], remaining: set[int]) -> Group | No
             if kind not in DYAD_KINDS:
                 j, k, pairs, kind = k, j, pairs[::-1], kind[::-1]
             if kind not in DYAD_KINDS:
-                raise StructureError(f"members {j} and {k} are joined only by prismatic pairs "
-                                     f"({kind}); such a dyad cannot fix their orientation")
+                raise StructureError(Text("structure.only_prismatic", first=j, second=k, kind=kind))
             return Group((j, k), pairs, kind, cls=2, order=2)
     return None
 
@@ -155,36 +154,31 @@ def _find_triad(scene: Scene, known: set[int], remaining: set[int]) -> Group | N
     return None
 
 
-def _dof_message(scene: Scene, dof: int) -> str:
+def _dof_message(scene: Scene, dof: int) -> Text:
     n, p = len(scene.members), len(scene.pairs)
-    head = f"W = 3·{n} − 2·{p} = {dof}, but the scene has one driver (member 2)"
     if dof > 1:
-        return (f"{head}: {dof - 1} motion(s) are not driven, so some members can move "
-                f"freely. {_loose(scene)}")
-    return (f"{head}: the members are over-constrained ({1 - dof} pair(s) too many), so the "
-            f"mechanism cannot move. {_loose(scene)}")
+        return Text("structure.free", n=n, p=p, dof=dof, free=dof - 1, loose=_loose(scene))
+    return Text("structure.locked", n=n, p=p, dof=dof, extra=1 - dof, loose=_loose(scene))
 
 
-def _loose(scene: Scene) -> str:
+def _loose(scene: Scene) -> Text:
     counts = {m: sum(m in p.members for p in scene.pairs) for m in scene.members}
     single = [str(m) for m, c in counts.items() if c < 2 and m != DRIVER]
     if single:
-        return f"Member(s) {', '.join(single)} are joined by a single pair."
-    return "Pairs per member: " + ", ".join(f"{m}: {c}" for m, c in counts.items()) + "."
+        return Text("structure.single_pair", members=", ".join(single))
+    return Text("structure.pairs_per_member",
+                counts=", ".join(f"{m}: {c}" for m, c in counts.items()))
 
 
-def _stuck_message(scene: Scene, known: set[int], remaining: set[int]) -> str:
-    details = []
-    for m in sorted(remaining):
-        to_known = len(_pairs_between(scene, {m}, known))
-        to_rest = len(_pairs_between(scene, {m}, remaining - {m}))
-        details.append(f"member {m}: {to_known} pair(s) to solved members, {to_rest} to unsolved")
-    quads = len(remaining) >= 4
-    hint = (" They may form an Assur group of class higher than III, which is not supported."
-            if quads else "")
-    return (f"after {', '.join(map(str, sorted(known)))} the members "
-            f"{', '.join(map(str, sorted(remaining)))} do not form a class II or III Assur "
-            f"group ({'; '.join(details)}).{hint}")
+def _stuck_message(scene: Scene, known: set[int], remaining: set[int]) -> Text:
+    details = [Text("structure.member_pairs", member=m,
+                    solved=len(_pairs_between(scene, {m}, known)),
+                    unsolved=len(_pairs_between(scene, {m}, remaining - {m})))
+               for m in sorted(remaining)]
+    return Text("structure.stuck", known=", ".join(map(str, sorted(known))),
+                remaining=", ".join(map(str, sorted(remaining))),
+                details=Joined(details),
+                hint=Text("structure.higher_class") if len(remaining) >= 4 else "")
 
 
 def loose_joints(scene: Scene) -> list[tuple[str, int]]:

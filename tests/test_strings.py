@@ -10,13 +10,36 @@ from ui.i18n import LANGUAGES, member_labels, num, parse_number, t, table
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *ROOT.glob("figures/*.py"),
-           ROOT / "methods" / "practice.py"]  # (practice's hints, shared with the command line)
+           ROOT / "methods" / "practice.py",  # (practice's hints, shared with the command line)
+           *ROOT.glob("mechanisms/*.py"), *ROOT.glob("solvers/*.py"), *ROOT.glob("exams/*.py"),
+           ROOT / "methods" / "plans.py", ROOT / "reports" / "fitting.py"]  # (their messages)
+
+
+def message_families() -> set[str]:
+    """The messages' keys made from a name (``Text(f"why_open.{kind}")``): each family from
+    the table in the code that names its members."""
+    from mechanisms import limits
+    from mechanisms.loader import TOML_REASONS
+    from solvers.diagnostics import WHY_OPEN
+    gears = (ROOT / "mechanisms" / "gears.py").read_text()
+    return ({f"scene.lists.{key}" for key, _ in (*limits.LINKAGE, *limits.GEARS, *limits.ROTOR,
+                                                  ("book", 0))}
+            | {f"scene.array.{what}" for what in re.findall(
+                r'_array\((?:[^()]|\([^()]*\))*?"(\w+)"\)', gears)}
+            | {f"why_open.{kind}" for kind in (*WHY_OPEN, "other")}
+            | {f"toml.{key}" for key in (*TOML_REASONS.values(), "other")})
 
 
 def used_keys() -> set[str]:
-    """Every quoted string in the app's code that looks like a key ("area.name")."""
+    """Every quoted string in the app's code that looks like a key ("area.name"), the rules
+    a scene's reader fails with (``r.fail(key, "missing")`` is ``scene.missing``), and the
+    messages' families."""
     text = "\n".join(p.read_text() for p in SOURCES)
-    return set(re.findall(r"""["']([a-z][a-z0-9]*\.[A-Za-z0-9_]+)["']""", text)) - {"app.py", "labels.toml", "package.json"}  # file names
+    keys = set(re.findall(r"""["']([a-z][a-z0-9_]*\.[A-Za-z0-9_.]+)["']""", text))
+    rules = {f"scene.{rule}" for rule in re.findall(r'fail\([^()]*?, "(\w+)"', text)}
+    places = set(re.findall(r'fail\("([^"]+)"', text))  # a scene file's keys: "driver.type"
+    files = {k for k in keys if k.endswith((".py", ".toml", ".js", ".json"))}
+    return (keys - places - files) | rules | message_families()
 
 
 def test_every_language_has_the_same_keys():
@@ -75,7 +98,7 @@ def test_every_preset_has_a_serbian_title_and_cyrillic_keeps_its_notation():
 def test_units_in_brackets_hold_no_words():
     """[…] stays Latin in Cyrillic, so it may hold units only, never a Serbian word."""
     for key, text in table("sr").items():
-        for inside in re.findall(r"\[([^\]]*)\]", text):
+        for inside in re.findall(r"\[([^\]]*)\]", re.sub(r"⟨[^⟩]*⟩", "", text)):
             rest = re.sub(r"\{\w+\}|(?<![A-Za-z])(rad|cm|mm|kg|ms|m|s|N|W)(?![A-Za-z])", "", inside)
             assert not re.search(r"[A-Za-zčćšđžČĆŠĐŽ]", rest), (key, inside)
 

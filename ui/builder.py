@@ -18,6 +18,7 @@ import streamlit as st
 from mechanisms import Scene, SceneError
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
+from mechanisms.messages import Text, text_of
 from mechanisms.sketch import add_point, drag, drawn, from_scene, snap, template
 from solvers.assembly import closures
 from solvers.diagnostics import Unsolvable, dead_zones, solve_instant, sweep_values
@@ -99,7 +100,7 @@ def start_from(scene: Scene) -> None:
         st.session_state.pop("build_message", None)
     except (StructureError, Unsolvable) as exc:
         positions = {}
-        st.session_state["build_message"] = str(exc)
+        st.session_state["build_message"] = text_of(exc)
     replace(from_scene(scene, positions))
 
 
@@ -133,12 +134,12 @@ def template_scene(name: str) -> Scene:
     return build_scene(template(name), source=f"{name}.toml")
 
 
-def _solves(doc: dict) -> str | None:
+def _solves(doc: dict) -> Text | str | None:
     """Why the document does not solve at its instant, or None."""
     try:
         drawing(build_scene(doc))
     except (SceneError, StructureError, Unsolvable) as exc:
-        return str(exc)
+        return text_of(exc)
     return None
 
 

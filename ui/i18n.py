@@ -18,6 +18,7 @@ from pathlib import Path
 import cyrtranslit
 import streamlit as st
 
+from mechanisms.messages import Text, text_of
 from ui.url import url_choice
 
 LOCALES = Path(__file__).resolve().parents[1] / "locales"
@@ -77,6 +78,18 @@ def t(key: str, language: str | None = None, **values) -> str:
         values["member_label"] = KEEP.sub(r"\1", member_labels(language).get(label, label))
     return text.format(**{k: num(v, language=language) if isinstance(v, float) else v
                           for k, v in values.items()})
+
+
+def message(said: BaseException | Text | str, language: str | None = None) -> str:
+    """An error, or a solver's sentence (``mechanisms.messages.Text``), in the reader's
+    language; an error raised with a plain string shows that string."""
+    language = language or current()
+    if isinstance(said, BaseException):
+        said = text_of(said)
+    if not isinstance(said, Text):
+        return str(said)
+    return said.render(lambda key: KEEP.sub(r"\1", table(language)[key]),
+                       comma=language.startswith("sr"))
 
 
 def num(value: float, digits: int = 4, language: str | None = None) -> str:

@@ -13,11 +13,12 @@ from exams.variants import VariantError, from_code
 from mechanisms import Scene, SceneError, parse_document, preset_ids
 from mechanisms.gears import GearTrain
 from mechanisms.link import PARAMETER, decode, encode
+from mechanisms.messages import text_of
 from mechanisms.rotor import Rotor
 from mechanisms.writer import to_text
 from ui.cache import preset
 from ui.chapters import page_for
-from ui.i18n import current, note_of, source_of, t, title_of
+from ui.i18n import current, message, note_of, source_of, t, title_of
 from ui.url import url_choice
 
 UPLOADED = "upload"
@@ -72,7 +73,7 @@ def _open_variant(kind: str) -> None:
         with st.spinner(t("var.opening", code=code)):
             text, page = variant_link(code)
     except (SceneError, VariantError) as exc:
-        st.session_state["code_error"] = str(exc)
+        st.session_state["code_error"] = text_of(exc)
         return
     try:
         of_kind(from_link(text), kind, code)
@@ -97,7 +98,7 @@ def _linked(kind: str):
     except SceneError as exc:
         st.session_state.pop("linked_text", None)
         st.query_params.pop(PARAMETER, None)
-        st.session_state["link_error"] = str(exc)
+        st.session_state["link_error"] = text_of(exc)
         return None
     opened = bool(in_url) and st.session_state.get("linked_text") != in_url
     st.session_state["linked_text"] = text
@@ -119,7 +120,7 @@ def _read_upload(kind: str) -> None:
         st.session_state["upload_error"] = None
         st.session_state["scene"] = UPLOADED
     except SceneError as exc:
-        st.session_state["upload_error"] = str(exc)
+        st.session_state["upload_error"] = text_of(exc)
 
 
 @st.cache_resource(max_entries=16, show_spinner=False)
@@ -153,9 +154,9 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
         return titles[pid]
 
     if st.session_state.get("link_error"):
-        st.error(t("scene.bad_link", reason=st.session_state["link_error"]))
+        st.error(t("scene.bad_link", reason=message(st.session_state["link_error"])))
     if st.session_state.get("code_error"):
-        st.error(t("var.bad_code", reason=st.session_state["code_error"]))
+        st.error(t("var.bad_code", reason=message(st.session_state["code_error"])))
     choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", default=default,
                         format_func=label, on_change=_forget_errors)
     if linked is not None and choice == linked[0]:
@@ -172,7 +173,7 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
             st.file_uploader(t("scene.upload"), type=["toml"], key="upload_file",
                              on_change=_read_upload, args=(kind,))
             if st.session_state.get("upload_error"):
-                st.error(st.session_state["upload_error"])
+                st.error(message(st.session_state["upload_error"]))
     return scene
 
 
