@@ -20,7 +20,8 @@ from .messages import Text, given
 from .reader import Reader, SceneError, identity
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "members", "meshes", "shafts",
-            "fixed", "inputs", "points", "book", "book_notes"}
+            "fixed", "inputs", "points", "book", "book_notes",
+            "book_notes_sr"}
 MEMBER_KEYS = {"label", "carrier", "axis", "x"}
 MESH_KEYS = {"members", "radii", "teeth", "module", "internal", "bevel"}
 INPUT_KEYS = {"member", "omega", "velocity", "radius"}
@@ -65,6 +66,7 @@ class GearTrain:
     points: dict[str, tuple[int, float]] = field(default_factory=dict)  # name → (member, radius)
     book: dict[str, float] = field(default_factory=dict)
     book_notes: dict[str, str] = field(default_factory=dict)
+    book_notes_sr: dict[str, str] = field(default_factory=dict)  # the same in Serbian
     title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
     note_sr: str = ""  # the note and the source in Serbian (Latin), likewise
     source_sr: str = ""

@@ -12,23 +12,23 @@ from typing import Any
 
 from .messages import Text
 
-# (top-level key, most allowed) per kind of scene; what a key lists is the sentence
-# ``scene.lists.<key>``
-LINKAGE = (("members", 20), ("pairs", 30), ("frame", 30), ("forces", 40), ("moments", 20),
-           ("guess", 200))
+# (top-level key, what it lists: the sentence ``scene.lists.<what>``, most allowed) per kind
+# of scene
+LINKAGE = (("members", "moving_members", 20), ("pairs", "pairs", 30), ("frame", "frame", 30),
+           ("forces", "forces", 40), ("moments", "moments", 20), ("guess", "guess", 200))
 POINTS = 200  # every point of every member, extra points included
-GEARS = (("members", 40), ("meshes", 60), ("shafts", 40), ("fixed", 40), ("inputs", 40),
-         ("points", 100))
-ROTOR = (("masses", 100),)
+GEARS = (("members", "members", 40), ("meshes", "meshes", 60), ("shafts", "shafts", 40),
+         ("fixed", "fixed", 40), ("inputs", "inputs", 40), ("points", "points", 100))
+ROTOR = (("masses", "masses", 100),)
 BOOK = 300  # printed values quoted from the book
 
 
 def count(raw: dict, limits, fail) -> None:
     """Refuse a table with more entries than its limit (``fail(key, rule)`` makes the error)."""
-    for key, most in (*limits, ("book", BOOK)):
+    for key, what, most in (*limits, ("book", "book", BOOK)):
         value: Any = raw.get(key)
         if isinstance(value, (list, dict)) and len(value) > most:
-            raise fail(key, "too_many", count=len(value), what=Text(f"scene.lists.{key}"),
+            raise fail(key, "too_many", count=len(value), what=Text(f"scene.lists.{what}"),
                        most=most)
 
 

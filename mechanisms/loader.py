@@ -27,7 +27,7 @@ PRESETS = Path(__file__).parent / "presets"
 MAX_BYTES = 100_000  # the largest preset is 4 kB; refused before parsing (800 kB took 0.25 s)
 
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "pairs", "frame",
-            "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes",
+            "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes", "book_notes_sr",
             "scales", "guess", "special", "layout_assumed", "fit", "book_slips"}
 FIT_KEYS = {"unknowns", "start", "used", "residual", "chose"}
 SCALE_KEYS = {"L", "v", "a", "F"}

@@ -94,13 +94,18 @@ class Reader:
 
 def identity(raw: dict, r: Reader, default_id: str) -> dict:
     """What every kind of scene has: id, titles, source, note, and the book's printed values
-    with the reasons some of them differ (``[book]``, ``[book_notes]``)."""
+    with the reasons some of them differ, in English and Serbian (``[book]``, ``[book_notes]``,
+    ``[book_notes_sr]``)."""
     book = raw.get("book", {})
     if not isinstance(book, dict):
         raise r.fail("book", "book_table")
-    notes = raw.get("book_notes", {})
-    if not isinstance(notes, dict):
-        raise r.fail("book_notes", "notes_table")
+    notes, notes_sr = raw.get("book_notes", {}), raw.get("book_notes_sr", {})
+    for name, table in (("book_notes", notes), ("book_notes_sr", notes_sr)):
+        if not isinstance(table, dict):
+            raise r.fail(name, "notes_table")
+    for key in notes_sr:
+        if key not in notes:
+            raise r.fail(f"book_notes_sr.{key}", "note_sr_key")
     return dict(id=r.text(raw, "id", "", default=default_id),
                 title=r.text(raw, "title", "", default=default_id),
                 title_sr=r.text(raw, "title_sr", "", default=""),
@@ -109,4 +114,5 @@ def identity(raw: dict, r: Reader, default_id: str) -> dict:
                 note_sr=r.text(raw, "note_sr", "", default=""),
                 source_sr=r.text(raw, "source_sr", "", default=""),
                 book={k: r.number(book, k, "book") for k in book},
-                book_notes={k: r.text(notes, k, "book_notes") for k in notes})
+                book_notes={k: r.text(notes, k, "book_notes") for k in notes},
+                book_notes_sr={k: r.text(notes_sr, k, "book_notes_sr") for k in notes_sr})

@@ -18,7 +18,8 @@ from .reader import Reader, SceneError, identity
 PLANES = ("I", "II")
 QUANTITIES = ("mass", "radius", "angle")
 TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "omega", "mode", "planes",
-            "masses", "corrections", "bearings", "book", "book_notes"}
+            "masses", "corrections", "bearings", "book", "book_notes",
+            "book_notes_sr"}
 
 
 @dataclass(frozen=True)
@@ -56,6 +57,7 @@ class Rotor:
     bearings: dict[str, float] = field(default_factory=dict)  # axial positions A, B, m
     book: dict[str, float] = field(default_factory=dict)
     book_notes: dict[str, str] = field(default_factory=dict)
+    book_notes_sr: dict[str, str] = field(default_factory=dict)  # the same in Serbian
     title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
     note_sr: str = ""  # the note and the source in Serbian (Latin), likewise
     source_sr: str = ""

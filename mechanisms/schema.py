@@ -180,6 +180,7 @@ class Scene:
     book: dict[str, float] = field(default_factory=dict)  # the book's printed values
     travel: Travel | None = None
     book_notes: dict[str, str] = field(default_factory=dict)  # why a printed value is off
+    book_notes_sr: dict[str, str] = field(default_factory=dict)  # the same in Serbian
     title_sr: str = ""  # the title in Serbian (Latin); Cyrillic is made from it
     note_sr: str = ""  # the note and the source in Serbian (Latin), likewise
     source_sr: str = ""

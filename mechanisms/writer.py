@@ -132,21 +132,22 @@ def to_toml(scene: Scene) -> str:
                 "used = [" + ", ".join(map(_s, f.used)) + "]", f"residual = {_n(f.residual)}"]
         if f.chose:
             out.append("chose = [" + ", ".join(map(_s, f.chose)) + "]")
-    out += _book(scene.book, scene.book_notes)
+    out += _book(scene.book, scene.book_notes, scene.book_notes_sr)
     if scene.book_slips:
         out.append("\n[book_slips]")
         out += [f"{_s(k)} = {_s(v)}" for k, v in scene.book_slips.items()]
     return "\n".join(out) + "\n"
 
 
-def _book(book: dict[str, float], notes: dict[str, str]) -> list[str]:
+def _book(book: dict[str, float], notes: dict[str, str], notes_sr: dict[str, str]) -> list[str]:
     out = []
     if book:
         out.append("\n[book]")
         out += [f"{_s(k)} = {_n(v)}" for k, v in book.items()]
-    if notes:
-        out.append("\n[book_notes]")
-        out += [f"{_s(k)} = {_s(v)}" for k, v in notes.items()]
+    for name, table in (("book_notes", notes), ("book_notes_sr", notes_sr)):
+        if table:
+            out.append(f"\n[{name}]")
+            out += [f"{_s(k)} = {_s(v)}" for k, v in table.items()]
     return out
 
 
@@ -168,7 +169,7 @@ def rotor_to_toml(rotor: Rotor) -> str:
     if rotor.bearings:
         out.append("\n[bearings]")
         out += [f"{k} = {_n(v)}" for k, v in rotor.bearings.items()]
-    out += _book(rotor.book, rotor.book_notes)
+    out += _book(rotor.book, rotor.book_notes, rotor.book_notes_sr)
     return "\n".join(out) + "\n"
 
 
@@ -203,7 +204,7 @@ def gears_to_toml(train: GearTrain) -> str:
     if train.points:
         out.append("\n[points]")
         out += [f"{name} = [{m}, {_n(r)}]" for name, (m, r) in train.points.items()]
-    out += _book(train.book, train.book_notes)
+    out += _book(train.book, train.book_notes, train.book_notes_sr)
     return "\n".join(out) + "\n"
 
 

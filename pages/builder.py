@@ -21,7 +21,7 @@ from mechanisms.sketch import (
     template,
     template_ids,
 )
-from solvers.diagnostics import Unsolvable, format_range
+from solvers.diagnostics import Unsolvable, format_ranges
 from solvers.structure import StructureError, decompose, degrees_of_freedom, loose_joints
 from ui import builder
 from ui.cache import preset
@@ -190,7 +190,7 @@ def checks(doc: dict, scene: Scene | None, problem: str | None,
         return  # the message is the problem above
     st.success(t("build.formula", formula=structure.formula))
     for zone in solved.zones if solved is not None else []:
-        where = "; ".join(format_range(scene, lo, hi) for lo, hi in zone.ranges)
+        where = message(format_ranges(scene, zone.ranges))
         st.info(t("build.dead_zone", group=zone.group, kind=zone.kind, where=where))
     if solved is not None and not problem:
         assemblies(structure, solved, last_doc)

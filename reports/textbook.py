@@ -36,6 +36,7 @@ class BookRow:
     exact: float | None  # None when the scene does not produce that value
     verdict: str  # "agrees", "close", "slip", "differs", "layout" or "missing"
     note: str = ""
+    note_sr: str = ""  # the note in Serbian (Latin, notation in ⟨⟩)
     # with a fitted figure: "fitted" (the fit was made to it), "chose" (it picked the layout
     # among equal fits) or "predicted" (a test of the reconstruction); "" without a fit
     role: str = ""
@@ -66,7 +67,7 @@ def verdict(key: str, book: float, exact: float) -> str:
 def check(scene) -> list[BookRow]:
     """Every printed value of the preset against the exact solution of its data."""
     exact = exact_values(scene)
-    notes = getattr(scene, "book_notes", {})
+    notes, notes_sr = getattr(scene, "book_notes", {}), getattr(scene, "book_notes_sr", {})
     fit = getattr(scene, "fit", None)
     slips = getattr(scene, "book_slips", {})
     rows = []
@@ -79,7 +80,8 @@ def check(scene) -> list[BookRow]:
         unfitted = fit is not None and fit.residual > PRECISION
         if found == "differs" and (getattr(scene, "layout_assumed", False) or unfitted):
             found = "layout"
-        rows.append(BookRow(key, book, value, found, notes.get(key, ""), _role(fit, key), slip))
+        rows.append(BookRow(key, book, value, found, notes.get(key, ""), notes_sr.get(key, ""),
+                            _role(fit, key), slip))
     return rows
 
 

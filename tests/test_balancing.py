@@ -85,7 +85,7 @@ def test_planes_at_the_same_place_are_refused_with_the_reason():
 
 def test_nearly_coinciding_planes_are_flagged():
     result = balance(rotor([(0.1, 0.1, 0.0, 0.2)], {"I": 0.3, "II": 0.3 + 1e-5}))
-    assert any("only" in note for note in result.notes)
+    assert any("only" in str(note) for note in result.notes)
     assert result.residual_force <= 1e-9
 
 

@@ -28,9 +28,9 @@ def test_the_explanation_names_group_condition_and_range():
     scene = load_preset("analitika-2.1")
     at = math.radians(140)
     (issue,) = solve(scene, at).issues
-    text = explain_open(scene, at, issue)
+    text = str(explain_open(scene, at, issue))
     assert "II(3-4) RRR" in text and "cannot reach" in text
-    assert "106." in text and "177." in text
+    assert "106.3°" in text and "177°" in text
 
 
 def test_assembly_mode_is_kept_across_the_dead_zone():

@@ -22,8 +22,8 @@ def message_families() -> set[str]:
     from mechanisms.loader import TOML_REASONS
     from solvers.diagnostics import WHY_OPEN
     gears = (ROOT / "mechanisms" / "gears.py").read_text()
-    return ({f"scene.lists.{key}" for key, _ in (*limits.LINKAGE, *limits.GEARS, *limits.ROTOR,
-                                                  ("book", 0))}
+    return ({f"scene.lists.{what}" for _, what, _ in (*limits.LINKAGE, *limits.GEARS,
+                                                      *limits.ROTOR, ("", "book", 0))}
             | {f"scene.array.{what}" for what in re.findall(
                 r'_array\((?:[^()]|\([^()]*\))*?"(\w+)"\)', gears)}
             | {f"why_open.{kind}" for kind in (*WHY_OPEN, "other")}
@@ -141,3 +141,34 @@ def test_every_preset_member_label_has_its_serbian_words():
     assert t("fig.member", language="sr-cyrl", number=3, member_label="slider C") == "3 клизач C"
     assert t("fig.member", language="sr", number=3, member_label="my part") == "3 my part"
     assert t("fig.member", language="en", number=2, member_label="crank") == "2 crank"
+
+
+def test_every_book_note_has_its_serbian_note_with_notation_and_decimals_kept():
+    """The textbook check's "why" column: each English note of every preset has a Serbian
+    one, its notation in ⟨⟩ (Cyrillic keeps it Latin) and its decimals written with a comma."""
+    noted = 0
+    for pid in preset_ids():
+        scene = load_preset(pid)
+        notes, serbian = getattr(scene, "book_notes", {}), getattr(scene, "book_notes_sr", {})
+        assert set(serbian) == set(notes), pid
+        for key, text in serbian.items():
+            noted += 1
+            prose = KEEP_OUT.sub("", text)
+            assert not re.search(r"\d\.\d", prose.replace("3.3", "")), (pid, key, text)  # task 3.3
+            for word in re.findall(r"[^\s⟨⟩(]+", re.sub(r"(^|[.:;]\s+)(U|I|A|O|K|S)\s", r"\1", prose)):
+                assert not NOTATION.fullmatch(word), (pid, key, word)
+    assert noted >= 60
+
+
+def test_a_serbian_note_must_translate_an_english_one():
+    from mechanisms.loader import parse_document
+    from ui.i18n import message
+
+    text = (ROOT / "mechanisms/presets/zbirka-6.2.toml").read_text()
+    with pytest.raises(Exception) as caught:
+        parse_document(text + '\n[book_notes_sr.x]\n', source="6.2.toml")
+    bad = text.replace("[book_notes_sr]", '[book_notes_sr]\n"members.9.omega" = "bez para"')
+    with pytest.raises(Exception) as caught:
+        parse_document(bad, source="6.2.toml")
+    assert "book_notes_sr.members.9.omega" in str(caught.value)
+    assert "nema englesku napomenu" in message(caught.value, "sr")

@@ -8,7 +8,7 @@ import streamlit as st
 from mechanisms.coverage import tasks
 from reports.textbook import PRECISION, BookRow, check
 from ui.export import show_table
-from ui.i18n import current, num, t
+from ui.i18n import current, in_language, num, t
 
 VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs", "slip": "check.slip",
             "layout": "check.layout", "missing": "check.missing"}
@@ -25,8 +25,8 @@ def book_table(rows: list[BookRow]) -> pd.DataFrame:
         t("check.col_exact"): "—" if r.exact is None else num(r.exact, 6),
         t("check.col_difference"): "—" if r.difference is None else num(r.difference, 3),
         t("check.col_verdict"): t(VERDICTS[r.verdict]),
-        t("check.col_note"): r.note if r.slip is None else
-        f"{r.note} {t('check.slip_value', value=num(r.slip, 4))}".strip()}
+        t("check.col_note"): in_language(r.note, r.note_sr) if r.slip is None else
+        f"{in_language(r.note, r.note_sr)} {t('check.slip_value', value=num(r.slip, 4))}".strip()}
         for r in rows])
 
 

@@ -113,14 +113,18 @@ def language_picker() -> str:
                       label_visibility="collapsed")
 
 
-def _in_language(scene, field: str, language: str | None = None) -> str:
-    """A scene's text field in the language (default the current one): its Serbian version
-    (data in the preset, notation in ⟨⟩ kept Latin) for sr and sr-cyrl, else the English one."""
+def in_language(english: str, serbian: str, language: str | None = None) -> str:
+    """A text a scene gives in two languages, in the reader's (default the current one): the
+    Serbian one (notation in ⟨⟩ kept Latin) for sr and sr-cyrl where there is one."""
     language = language or current()
-    serbian = getattr(scene, f"{field}_sr", "")
     if not language.startswith("sr") or not serbian:
-        return getattr(scene, field)
+        return english
     return KEEP.sub(r"\1", _to_cyrillic(serbian) if language == "sr-cyrl" else serbian)
+
+
+def _in_language(scene, field: str, language: str | None = None) -> str:
+    """A scene's text field (``title``, ``note``, ``source``) in the language."""
+    return in_language(getattr(scene, field), getattr(scene, f"{field}_sr", ""), language)
 
 
 def title_of(scene, language: str | None = None) -> str:
