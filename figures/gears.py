@@ -97,7 +97,8 @@ def velocity_figure(solution: TrainSolution, pole: float, title: str, t: Text,
             reach = max(rim[n], default=0.0)
             ys = [m.axis - reach, m.axis + reach]
         vs = [solution.velocity(n, y) for y in ys]
-        traces.append(scatter(x=vs, y=ys, mode="lines", name=f"{n}: ω = {solution.omega[n]:.4g} s⁻¹",
+        traces.append(scatter(x=vs, y=ys, mode="lines", name=t("fig.omega_line", member=n,
+                                                                 omega=float(solution.omega[n])),
                               line=dict(color=member_colour(n), width=2.5 * look.line)))
         traces.append(scatter(x=[0, solution.omega[n] * pole], y=[-pole, 0], mode="lines+text",
                               text=["", str(n)], textposition="top center", showlegend=False,

@@ -73,7 +73,7 @@ def forces_figure(k: Kinetostatics, index: int, forces: list[tuple[str, complex,
     if biggest > 0:
         arrows(fig, [p for _, p, _ in forces], [p + f / biggest * reach for _, p, f in forces],
                [LOAD_COLOURS[_kind(n)] for n, *_ in forces],
-               [f"{html(n)} = {abs(f):.4g} N" for n, _, f in forces], look,
+               [t("fig.force_value", name=html(n), value=float(abs(f))) for n, _, f in forces], look,
                {colour: t(LEGEND_KEYS[kind]) for kind, colour in LOAD_COLOURS.items()})
     for name, z in (marks or {}).items():
         fig.add_raw([scatter(x=[z.real], y=[z.imag], mode="markers+text", text=[name],

@@ -136,8 +136,8 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         length = abs(d.head - d.tail)
         hover_x.append(mid.real)
         hover_y.append(mid.imag)
-        hover_text.append(t("plans.hover", name=html(d.arrow.symbol), cm=f"{length:.2f}",
-                            value=f"{length * drawing.scale:.4g}", unit=drawing.unit,
+        hover_text.append(t("plans.hover", name=html(d.arrow.symbol), cm=round(float(length), 2),
+                            value=float(length * drawing.scale), unit=drawing.unit,
                             kind=t(KIND_KEYS[d.arrow.kind])))
     traces = [scatter(x=hover_x, y=hover_y, mode="markers", hoverinfo="text",
                       hovertext=hover_text, showlegend=False,

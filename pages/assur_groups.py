@@ -27,7 +27,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import first_run, waiting
-from ui.i18n import current as current_language, message, num, t, title_of
+from ui.i18n import current as current_language, latex, message, num, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
@@ -70,7 +70,7 @@ def counts(scene: Scene) -> None:
     cols[1].metric(t("assur.p5"), p5)
     cols[2].metric(t("assur.p4"), 0)
     cols[3].metric(t("assur.dof"), dof)
-    st.latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {dof}")
+    st.latex(latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {dof}"))
 
 
 def groups_table(structure) -> pd.DataFrame:

@@ -28,7 +28,7 @@ from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
 from ui.export import chart
 from ui.firstpaint import waiting
-from ui.i18n import message, t, title_of
+from ui.i18n import latex, message, t, title_of
 from ui.present import look
 from ui.scenes import read_upload, scene_download
 
@@ -59,6 +59,8 @@ CLICKS = {"nothing": "build.click_nothing", "frame": "build.click_frame"}
 FORM_LABELS = {"offset": "build.form_offset", "distances": "build.form_distances",
                "polar": "build.form_polar"}
 SIDE_LABELS = {"left": "build.side_left", "right": "build.side_right"}
+TYPE_LABELS = {"revolute": "build.type_revolute", "prismatic": "build.type_prismatic",
+               "circular": "build.type_circular"}
 UNITS = {"x": "m", "y": "m", "length": "m", "mass": "kg", "centre_along": "m",
          "centre_left": "m", "gyration": "m", "along": "m", "left": "m", "angle": "°",
          "d1": "m", "d2": "m", "r": "m", "theta": "°",
@@ -70,7 +72,8 @@ def column(name: str):
     if name in UNITS:
         label = f"{label} [{UNITS[name]}]"
     if name == "type":
-        return st.column_config.SelectboxColumn(label, options=["revolute", "prismatic", "circular"])
+        return st.column_config.SelectboxColumn(label, options=list(TYPE_LABELS),
+                                                format_func=lambda k: t(TYPE_LABELS[k]))
     if name == "form":
         return st.column_config.SelectboxColumn(label, options=list(FORM_LABELS), default="offset",
                                                 format_func=lambda f: t(FORM_LABELS[f]))
@@ -173,7 +176,7 @@ def checks(doc: dict, scene: Scene | None, problem: str | None,
     """What a student needs to hear while building, in words."""
     n, p5 = len(doc.get("members", {})), len(doc.get("pairs", []))
     w = 3 * n - 2 * p5 if scene is None else degrees_of_freedom(scene)
-    st.latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {w}")
+    st.latex(latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {w}"))
     if w > 1:
         st.warning(t("build.too_free", extra=w - 1))
     elif w < 1:

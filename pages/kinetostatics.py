@@ -31,7 +31,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import waiting
-from ui.i18n import current, message, num, scaled_title, t, title_of
+from ui.i18n import current, latex, message, num, scaled_title, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
@@ -162,7 +162,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
         what = t("forces.step_special", members=members)
     st.markdown(f"**{number}/{count} · {group_name(step.group)}** — {what}")
     for line in equation(step):
-        st.latex(line)
+        st.latex(latex(line))
     st.caption(t("forces.step_units"))
     if step.kind == "polygon":
         known = [(html(term.name), term.force) for term in step.terms]
@@ -191,7 +191,7 @@ def book_lever(k: Kinetostatics, now: int) -> None:
     lever = lever_construction(k, now)
     proportions, moments = lever_latex(lever, k.rotating)
     for line in proportions + moments:
-        st.latex(line)
+        st.latex(latex(line))
     if k.rotating:
         st.success(t("forces.lever_compare", symbol="M_p", lever=num(lever.torque, 5),
                      groups=num(float(k.driving[now]), 5), unit="N·m"))

@@ -17,7 +17,7 @@ from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import waiting
-from ui.i18n import message, num, t
+from ui.i18n import latex, message, num, t
 from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
@@ -138,18 +138,18 @@ def results() -> None:
             for w in willis_table(train)]), f"{train.id}-willis.csv", "csv_willis")
         st.markdown(f"**{t('gears.stages_title')}**")
         for stage in stages(solution):
-            st.latex(stage.latex(t("gears.from_radii")))
+            st.latex(latex(stage.latex(t("gears.from_radii"))))
             st.caption(t("gears.stage_fixed") if stage.carrier is None
                        else t("gears.stage_carrier", carrier=stage.carrier))
         steps = speed_steps(solution)
         if steps:
             st.markdown(f"**{t('gears.chain_title')}**")
             for step in steps:
-                st.latex(step.latex)
+                st.latex(latex(step.latex))
                 st.caption(t(STEP_WORDS[step.kind, step.carrier is None], carrier=step.carrier))
             total = total_ratio(steps, a, b)
             if total:
-                st.latex(total)
+                st.latex(latex(total))
                 st.caption(t("gears.total_ratio"))
         method_doc("willis")
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")

@@ -11,7 +11,7 @@ from reports.textbook import BookRow, check
 from solvers.diagnostics import Unsolvable
 from ui.book import COUNTED, VERDICTS, book_table, coverage_table, fit_summary, tasks_table
 from ui.chapters import page_for
-from ui.export import csv_button
+from ui.export import csv_button, dataframe
 from ui.i18n import message, t, title_of
 
 
@@ -44,11 +44,11 @@ for col, verdict in zip(cols, COUNTED):
     col.metric(t(VERDICTS[verdict]), sum(r.verdict == verdict for r in everything))
 
 st.header(t("check.coverage_title"))
-st.dataframe(coverage_table(checks), hide_index=True)
+dataframe(coverage_table(checks), hide_index=True)
 box = st.expander(t("check.tasks_title"), key="tasks_open", on_change="rerun")
 if box.open:  # filled only while open
     with box:
-        st.dataframe(tasks_table(), hide_index=True)
+        dataframe(tasks_table(), hide_index=True)
 
 table = []
 for pid in sorted(checks, key=order):
@@ -61,7 +61,7 @@ for pid in sorted(checks, key=order):
         st.error(message(rows))
         continue
     fit_summary(scene, rows)
-    st.dataframe(book_table(rows), hide_index=True)
+    dataframe(book_table(rows), hide_index=True)
     table += [dict(preset=pid, key=r.key, book=r.book, exact=r.exact, verdict=r.verdict,
                    note=r.note) for r in rows]
 csv_button(pd.DataFrame(table), "textbook-check.csv", key="csv")

@@ -23,6 +23,7 @@ from exams.variants import (
 )
 from mechanisms import load_preset, preset_ids
 from ui.chapters import VARIANTS, page_for
+from ui.export import dataframe
 from ui.i18n import current, message, num, t, title_of
 
 
@@ -74,7 +75,7 @@ if result is not None and result[:2] == (settings, int(count)):
     if found.shortfall:
         st.warning(t("var.short", reason=message(found.shortfall)))
     page = page_for(choice).removeprefix("pages/").removesuffix(".py")
-    st.dataframe(pd.DataFrame([{
+    dataframe(pd.DataFrame([{
         t("var.col_code"): v.code,
         **{g.label: f"{num(value, 6)} {g.unit}".strip() for g, value in v.given},
         t("var.col_link"): f"/{page}?v={v.code}"} for v in found.variants]),
@@ -85,7 +86,7 @@ if result is not None and result[:2] == (settings, int(count)):
     box = st.expander(t("var.key"), key="var_key_open", on_change="rerun")
     if box.open:  # filled only while open
         with box:
-            st.dataframe(key.assign(quantity=key["quantity"].map(symbol)), hide_index=True)
+            dataframe(key.assign(quantity=key["quantity"].map(symbol)), hide_index=True)
     stem = f"{choice}-S{settings.seed}"
     d1, d2, d3 = st.columns(3)
     d1.download_button(t("var.sheets"), lambda: sheets_html(found, title, language).encode("utf-8"),

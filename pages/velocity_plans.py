@@ -28,7 +28,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import first_run, waiting
-from ui.i18n import current, message, num, t, title_of
+from ui.i18n import current, latex, message, num, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
@@ -179,8 +179,8 @@ elif tab_plans.open:
         index = step - 1
         later = first_run()  # on a fresh visit the charts below come first (ui/firstpaint.py)
         if not later:
-            st.latex(steps[index].latex)
-            st.latex(plans.acceleration.steps[index].latex)
+            st.latex(latex(steps[index].latex))
+            st.latex(latex(plans.acceleration.steps[index].latex))
             if any(a.kind == "coriolis" for _, side in plans.acceleration.steps[index].sides for a in side):
                 st.caption(t("plans.extension", point=steps[index].target.upper()))
             if any(g.cls == 3 for g in instant(scene).structure.groups):
@@ -214,18 +214,18 @@ if tab_loops.open:
             eq = equations(scene, group)
             st.markdown(f"**{eq.group} · {eq.kind}** — {t('plans.unknowns')}: "
                         + ", ".join(f"${u}$" for u in eq.unknowns))
-            st.latex(eq.position)
+            st.latex(latex(eq.position))
             st.caption(t("plans.derivation"))
             for line in derivation(instant(scene), group, words=root_words()):
-                st.latex(line)
-            st.latex(r"\text{B:}\ " + eq.velocity)
-            st.latex(r"\text{C:}\ " + eq.acceleration)
+                st.latex(latex(line))
+            st.latex(latex(r"\text{B:}\ " + eq.velocity))
+            st.latex(latex(r"\text{C:}\ " + eq.acceleration))
         for name in free_points(scene):
             chain = contour(scene, name)
             if chain is not None:
                 st.markdown(t("plans.final_contour", point=name))
                 for line in contour_latex(instant(scene), chain):
-                    st.latex(line)
+                    st.latex(latex(line))
         units = {"member": ("°", "s⁻¹", "s⁻²"), "slide": ("m", "m/s", "m/s²")}
         names = {"member": "plans.row_member", "slide": "plans.row_slide"}
         rows = [{t("plans.col_quantity"): t(names[r["kind"]], name=r["name"]),

@@ -15,7 +15,7 @@ import pandas as pd
 import streamlit as st
 
 from ui.export import show_table
-from ui.i18n import current, t
+from ui.i18n import decimals, t
 
 DOC = Path(__file__).resolve().parents[1] / "docs/performance.md"
 # a chapter's benchmark: its title and its columns ("a; b; c") in the page's language
@@ -46,7 +46,9 @@ def parse(text: str, name: str) -> Measured | None:
             for line in lines if line.startswith("|")]
     if len(rows) < 2:
         return None
-    header, body = rows[0], [r for r in rows[2:] if len(r) == len(rows[0])]
+    header = rows[0]
+    body = [r for r in rows[2:] if len(r) == len(header) and r != header  # a second table's
+            and not all(set(c) <= set("-:") for c in r)]                  # header is no row
     return Measured(caption, pd.DataFrame(body, columns=header))
 
 
@@ -62,6 +64,16 @@ def measured(name: str) -> Measured | None:
         return _read(name, DOC.stat().st_mtime)
     except OSError:
         return None
+
+
+# what a peer's call computes, as the benchmark writes it in a row's name
+ROW_WORDS = {"(positions)": "bench.row_positions", "(pos + vel + acc)": "bench.row_all"}
+
+
+def _words(cell: str) -> str:
+    for english, key in ROW_WORDS.items():
+        cell = cell.replace(english, t(key))
+    return cell
 
 
 def page_row(name: str, page: str) -> list[str] | None:
@@ -85,10 +97,10 @@ def speed_panel(page: str, scene_id: str, chapter_tables: tuple[str, ...] = ()) 
         cols = st.columns(3)
         server, browser = page_row("pages", page), page_row("browser", page)
         if server:
-            cols[0].metric(t("bench.rerun"), f"{server[0]} ms")
-            cols[1].metric(t("bench.sent"), f"{server[1]} kB")
+            cols[0].metric(t("bench.rerun"), f"{decimals(server[0])} ms")
+            cols[1].metric(t("bench.sent"), f"{decimals(server[1])} kB")
         if browser:
-            cols[2].metric(t("bench.browser"), f"{browser[0]} ms")
+            cols[2].metric(t("bench.browser"), f"{decimals(browser[0])} ms")
         for name in chapter_tables:
             found = measured(name)
             if found is None:
@@ -100,9 +112,10 @@ def speed_panel(page: str, scene_id: str, chapter_tables: tuple[str, ...] = ()) 
                 if len(own) == 0:
                     st.caption(t("bench.other_scenes"))
                 table = own if len(own) else table
-            if current().startswith("sr"):  # decimal comma in the numbers (not in the ids)
-                table = pd.concat([table.iloc[:, :1], table.iloc[:, 1:].map(
-                    lambda cell: re.sub(r"(?<=\d)\.(?=\d)", ",", cell))], axis=1)
+            # decimal comma in the numbers (not in the ids of the first column), and the
+            # first column's words in the page's language
+            table = pd.concat([table.iloc[:, :1].map(_words), table.iloc[:, 1:].map(decimals)],
+                              axis=1)
             names = t(columns).split("; ")
             st.markdown(f"**{t(title)}**")
             show_table(table.set_axis(names if len(names) == table.shape[1] else table.columns,

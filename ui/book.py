@@ -8,7 +8,7 @@ import streamlit as st
 from mechanisms.coverage import tasks
 from reports.textbook import PRECISION, BookRow, check
 from ui.export import show_table
-from ui.i18n import current, in_language, num, t
+from ui.i18n import in_language, num, t
 
 VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs", "slip": "check.slip",
             "layout": "check.layout", "missing": "check.missing"}
@@ -76,9 +76,9 @@ def coverage_table(checks: dict[str, list[BookRow] | str]) -> pd.DataFrame:
 
 def tasks_table() -> pd.DataFrame:
     """Every task and worked example of the course's texts, with its preset or why it has none."""
-    serbian = current() != "en"
     return pd.DataFrame([{
-        t("check.col_text"): task.text_sr if serbian else task.text,
+        t("check.col_text"): in_language(task.text, task.text_sr),
         t("check.col_task"): task.number,
         t("check.col_preset"): task.preset if task.covered else "—",
-        t("check.col_why_none"): task.reason.get("sr" if serbian else "en", "")} for task in tasks()])
+        t("check.col_why_none"): in_language(task.reason.get("en", ""), task.reason.get("sr", ""))}
+        for task in tasks()])

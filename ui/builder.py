@@ -25,6 +25,7 @@ from solvers.diagnostics import Unsolvable, dead_zones, solve_instant, sweep_val
 from solvers.kinematics import GroupIssue, solve
 from solvers.structure import StructureError, decompose
 from ui.cache import BY_REPR
+from ui.i18n import KEEP, current, member_labels
 from ui.scenes import link_choice
 
 START = "four-bar"
@@ -83,6 +84,7 @@ def replace(doc: dict) -> None:
 def start(doc: dict) -> None:
     """Start from a document, its points drawn where it solves (so that every group keeps
     the assembly it shows); one that does not solve starts as it is, to be mended."""
+    doc = in_words(doc)
     try:
         solved = drawing(build_scene(doc, source=doc.get("id", "builder")))
         doc = {**doc, "guess": drawn(doc, solved.positions)}
@@ -101,7 +103,16 @@ def start_from(scene: Scene) -> None:
     except (StructureError, Unsolvable) as exc:
         positions = {}
         st.session_state["build_message"] = text_of(exc)
-    replace(from_scene(scene, positions))
+    replace(in_words(from_scene(scene, positions)))
+
+
+def in_words(doc: dict) -> dict:
+    """The members' labels in the reader's language (a template's "crank" is "krivaja" in
+    the Serbian tables, and in the file the student saves)."""
+    words = member_labels(current())
+    members = {number: {**spec, "label": KEEP.sub(r"\1", words.get(spec["label"], spec["label"]))}
+               if spec.get("label") else spec for number, spec in doc.get("members", {}).items()}
+    return {**doc, "members": members}
 
 
 def fold() -> None:

@@ -7,7 +7,7 @@ import streamlit as st
 
 from figures.raw import RawFigure
 from ui.crank import LIVE, Crank
-from ui.i18n import current, t
+from ui.i18n import current, num, t
 from ui.plot import plot
 
 
@@ -49,5 +49,21 @@ def print_button(svg: str, filename: str, key: str) -> None:
 
 def show_table(table: pd.DataFrame, filename: str, key: str) -> None:
     """A table on the page with its CSV download under it."""
-    st.dataframe(table, hide_index=True)
+    dataframe(table, hide_index=True)
     csv_button(table, filename, key)
+
+
+def dataframe(table: pd.DataFrame, **options) -> None:
+    """``st.dataframe`` in the page's language: on a Serbian page every number is written
+    with a decimal comma. A Styler changes only what is shown, so a column still sorts by
+    value and the CSV download keeps its decimal point."""
+    if current().startswith("sr"):
+        st.dataframe(table.style.format(_cell), **options)
+    else:
+        st.dataframe(table, **options)
+
+
+def _cell(value) -> str:
+    if isinstance(value, float):
+        return "—" if value != value else num(value, 6)
+    return "" if value is None else str(value)

@@ -92,6 +92,21 @@ def message(said: BaseException | Text | str, language: str | None = None) -> st
                        comma=language.startswith("sr"))
 
 
+DECIMAL = re.compile(r"(?<=\d)\.(?=\d)")
+
+
+def decimals(text: str, language: str | None = None) -> str:
+    """Numbers already written in a text (a benchmark's cell) with the language's decimal
+    sign. Only for texts that hold no identifiers such as task numbers (2.1)."""
+    return DECIMAL.sub(",", text) if (language or current()).startswith("sr") else text
+
+
+def latex(text: str, language: str | None = None) -> str:
+    """A LaTeX equation with the language's decimal sign: Serbian's comma written ``{,}``,
+    which LaTeX sets as a decimal sign, not as punctuation followed by a space."""
+    return DECIMAL.sub("{,}", text) if (language or current()).startswith("sr") else text
+
+
 def num(value: float, digits: int = 4, language: str | None = None) -> str:
     """A number with ``digits`` significant digits and the language's decimal separator (a
     value that rounds to zero prints as 0, not −0)."""

@@ -1,0 +1,284 @@
+"""Serbian throughout: every page rendered in Serbian (Latin) and in Cyrillic with each of its
+tabs, every expander and every practice switch opened, plus the failing cases a student
+meets (a damaged link, a scene that cannot close, a negative length typed in the builder, a
+variant code out of range), shows no English sentence and no number with a decimal point.
+
+What is read: every text element (markdown, captions, LaTeX, headers, metrics, messages),
+every label (widgets, tabs, expanders, buttons), the tables as shown (a Serbian table's
+display values) and the charts' own texts (titles, legends, labels). A chart's ticks and
+hover numbers are the browser's (Plotly's ``separators``: tests/test_phone.py reads them).
+Widgets' own numbers (a slider's value, a number box) are the browser's too: Streamlit
+writes them with a point, in every language (docs/i18n.md).
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import re
+from pathlib import Path
+
+import pyarrow as pa
+import pytest
+from streamlit.testing.v1 import AppTest
+
+from ui.i18n import t
+
+ROOT = Path(__file__).resolve().parents[1]
+# English words a Serbian sentence never holds (whole words, any case): a sentence in English
+# has some of them
+ENGLISH = {"the", "and", "of", "with", "which", "from", "must", "this", "that", "are", "is",
+           "be", "by", "for", "into", "when", "where", "its", "has", "have", "would", "than",
+           "cannot", "does", "not", "only", "each", "every", "or", "at", "it", "an", "as", "in",
+           "if", "you", "your", "can", "will", "there", "then", "here", "press", "shows", "see",
+           "click", "step", "points", "member", "group", "scale", "drawn", "read"}
+WORD = re.compile(r"[^\W\d_]+")
+# an identifier is no number: a task (zadatak 2.1, zadaci 1.1–1.3), a preset (zbirka-2.1), a
+# code (3.1-S42-07K), a version (3.11.7), a file (docs/sr/x.md)
+TASKS = re.compile(r"(?i)(zadat\w*|zadac\w*|задат\w*|задац\w*|zbirk\w*|збирк\w*|task\w*)"
+                   r"\s+\d+\.\d+(\s*[–-]\s*\d+\.\d+)?")
+POINT = re.compile(r"(?<![\w.\-–/])\d+\.\d+(?![\w.\-–/])")
+# columns of identifiers: a task's number (2.1), a result's key (points.M.x)
+IDENTIFIERS = {t("check.col_task", language=lang) for lang in ("sr", "sr-cyrl")}
+SKIP = re.compile(r"`[^`]*`|https?://\S+|\S+\.(?:md|py|toml|csv|svg|html)\b"
+                  r"|\b[a-z]\w*(?:\.[\w-]+)+|\b\w+_\w+")  # a result's key, a file's key
+
+
+def run(path: str, language: str, **state) -> AppTest:
+    at = AppTest.from_file(str(ROOT / "app.py"), default_timeout=120)
+    at.session_state["lang"] = language
+    for key, value in state.items():
+        at.session_state[key] = value
+    at.run()
+    if path != "app.py":
+        at.switch_page(path).run()
+    assert not at.exception, [e.message for e in at.exception]
+    return at
+
+
+def _table(element) -> list[str]:
+    """A table's cells as the reader sees them (a Styler's display values when there is one)."""
+    data = element.proto.arrow_data
+    raw = data.styler.display_values if data.HasField("styler") else data.data
+    if not raw:
+        return []
+    frame = pa.ipc.open_stream(io.BytesIO(raw)).read_all().to_pandas()
+    config = json.loads(element.proto.columns or "{}")  # the labels a column is shown with
+    names = {str(c): (config.get(str(c)) or {}).get("label") or str(c) for c in frame.columns}
+    for c in frame.columns:  # a choice's cell shows the choice's label
+        options = (config.get(str(c)) or {}).get("type_config", {}).get("options") or []
+        shown = {o["value"]: o["label"] for o in options if isinstance(o, dict) and "label" in o}
+        if shown:
+            frame[c] = frame[c].map(lambda v: shown.get(v, v))
+    tasks = [c for c in frame.columns if names[str(c)] in IDENTIFIERS]
+    cells = frame.drop(columns=tasks).to_numpy().ravel()
+    return list(names.values()) + [str(v) for v in cells if isinstance(v, str)]
+
+
+def _chart(element) -> list[str]:
+    """What a chart writes: titles, legend names, texts beside points, annotations."""
+    spec = json.loads(element.proto.bytes).get("figure", {})
+    out = []
+
+    def title(node) -> None:
+        if isinstance(node, dict):
+            text = node.get("text") if isinstance(node.get("text"), str) else None
+            if text:
+                out.append(text)
+            for key, value in node.items():
+                if key in ("title", "xaxis", "yaxis", "xaxis2", "yaxis2", "legend"):
+                    title(value)
+        elif isinstance(node, str):
+            out.append(node)
+
+    title(spec.get("layout", {}))
+    for annotation in spec.get("layout", {}).get("annotations", []):
+        out.append(str(annotation.get("text", "")))
+    for trace in spec.get("data", []):
+        out.append(str(trace.get("name", "")))
+        text = trace.get("text")
+        out += [str(x) for x in text] if isinstance(text, list) else [str(text or "")]
+    for frame in spec.get("frames", [])[:1]:
+        for trace in frame.get("data", []):
+            text = trace.get("text")
+            out += [str(x) for x in text] if isinstance(text, list) else []
+    return out
+
+
+def shown(at: AppTest) -> list[str]:
+    """Every text the page shows."""
+    out = []
+    for node in _walk(at._tree):
+        kind = getattr(node, "type", "")
+        proto = getattr(node, "proto", None)
+        if kind == "dataframe":
+            out += _table(node)
+        elif kind == "bidi_component" and proto is not None and proto.component_name == "mehanizmi_plot":
+            out += _chart(node)
+        for attribute in ("value", "label", "body", "help", "placeholder"):
+            value = getattr(proto, attribute, None) if proto is not None else None
+            if isinstance(value, str) and value:
+                out.append(value)
+        if kind in ("metric",):
+            out += [proto.body, proto.delta]
+        if kind == "radio" or kind == "selectbox":
+            out += list(getattr(node, "options", []))
+    return out
+
+
+def _walk(node):
+    yield node
+    for child in getattr(node, "children", {}).values():
+        yield from _walk(child)
+
+
+def keyed(at: AppTest, kind: str) -> dict[str, list[str]]:
+    """The keyed tab groups (key → labels) or expanders (key → [label]) of the page."""
+    out = {}
+    for node in _walk(at._tree):
+        if getattr(node, "type", "") == kind:
+            ident = node.proto.id if kind == "tab_container" else node.proto.id
+            key = ident.rsplit("-", 1)[-1] if ident.startswith("$$ID-") else None
+            if key:
+                out[key] = [c.label for c in node.children.values()] if kind == "tab_container" \
+                    else [node.label]
+    return out
+
+
+# on a Cyrillic page no word of three Latin letters or more is left, except units and the
+# names of programs
+LATIN = re.compile(r"\b[a-z]{3,}\b")
+NAMES = {"rad", "pylinkage", "mechanism", "sin", "cos", "tan", "arccos", "atan", "latinica"}
+CODE = re.compile(r"\\(?:begin|end)\{\w+\}|\\[A-Za-z]+|<[^>]*>|:material/\S*"
+                  r"|\b\w+(?:-\w+)+")  # LaTeX, HTML, icons, ids
+
+
+def english_in(text: str, language: str) -> list[str]:
+    prose = CODE.sub(" ", SKIP.sub(" ", text))
+    words = {w for w in WORD.findall(prose) if w.lower() in ENGLISH and not w.isupper()}
+    if language == "sr-cyrl":
+        words |= set(LATIN.findall(prose)) - NAMES
+    return sorted(words)
+
+
+def points_in(text: str) -> list[str]:
+    return POINT.findall(TASKS.sub(" ", SKIP.sub(" ", text)))
+
+
+def problems(texts: list[str], language: str = "sr") -> list[tuple[str, str]]:
+    """(text, what is wrong) for each shown text with an English word or a decimal point."""
+    found = []
+    for text in texts:
+        if text.startswith("<style>"):  # the page's CSS, never shown
+            continue
+        english, points = english_in(text, language), points_in(text)
+        if english or points:
+            found.append((text[:160], f"English {english}" if english else f"point {points}"))
+    return found
+
+
+def opened(at: AppTest) -> dict:
+    """The state that opens every keyed expander and turns on every practice switch."""
+    return ({key: True for key in keyed(at, "expander")}
+            | {w.key: True for w in at.toggle if w.key and w.key.startswith("pr_")})
+
+
+def explore(path: str, language: str, **state) -> list[str]:
+    """The page with every keyed expander open and every practice switch on, then again for
+    each tab of each keyed tab group: every text shown on the way."""
+    first = run(path, language, **state)
+    base = {**state, **opened(first)}
+    texts, seen, todo = shown(first), set(), [None]
+    while todo:
+        tab = todo.pop(0)
+        at = run(path, language, **base, **(dict([tab]) if tab else {}))
+        more = opened(at)
+        if set(more) - set(base):  # a tab with expanders or switches of its own
+            at = run(path, language, **{**base, **more}, **(dict([tab]) if tab else {}))
+        texts += shown(at)
+        for key, labels in keyed(at, "tab_container").items():
+            todo += [(key, label) for label in labels if (key, label) not in seen]
+            seen |= {(key, label) for label in labels}
+    return texts
+
+
+PAGES = [("pages/trajectories.py", {}), ("pages/trajectories.py", {"view": "compass"}),
+         ("pages/velocity_plans.py", {}), ("pages/velocity_plans.py", {"scene": "zbirka-4.1"}),
+         ("pages/assur_groups.py", {}), ("pages/assur_groups.py", {"scene": "triad-full-turn"}),
+         ("pages/kinetostatics.py", {}), ("pages/planetary_gears.py", {}),
+         ("pages/rotor_balancing.py", {}), ("pages/builder.py", {}), ("pages/variants.py", {}),
+         ("pages/textbook_check.py", {}), ("app.py", {})]
+
+
+@pytest.mark.parametrize("language", ["sr", "sr-cyrl"])
+@pytest.mark.parametrize("path, state", [
+    pytest.param(p, s, id="-".join([Path(p).stem, *map(str, s.values())])) for p, s in PAGES])
+def test_every_page_reads_serbian_with_everything_open(path, state, language):
+    texts = explore(path, language, **state)
+    assert len(texts) > 20
+    assert not problems(texts, language), problems(texts, language)
+
+
+def _linked(path: str, language: str, **query) -> AppTest:
+    at = AppTest.from_file(str(ROOT / "app.py"), default_timeout=120)
+    at.session_state["lang"] = language
+    for key, value in query.items():
+        at.query_params[key] = value
+    at.run()
+    at.switch_page(path).run()
+    assert not at.exception, [e.message for e in at.exception]
+    return at
+
+
+def _open_linkage() -> str:
+    """A four-bar whose coupler is too short to close at its own instant (a link to it)."""
+    from mechanisms.link import encode
+    from mechanisms.loader import build_document
+    from mechanisms.sketch import template
+
+    doc = template("four-bar")
+    doc["members"]["3"]["length"] = 0.05
+    return encode(build_document(doc, source="link"))
+
+
+def _far_seed() -> str:
+    """A variant code whose check letter is right but whose seed is past the largest."""
+    from exams.codes import MAX_SEED, Settings, code
+    return code(Settings("zbirka-2.1", MAX_SEED + 1), 1)
+
+
+@pytest.mark.parametrize("language", ["sr", "sr-cyrl"])
+@pytest.mark.parametrize("case", ["damaged link", "cut link", "cannot close", "negative length",
+                                  "seed out of range", "bad check letter"])
+def test_every_failing_case_says_why_in_serbian(case, language):
+    from mechanisms import load_preset
+    from mechanisms.link import encode
+    from mechanisms.sketch import template
+
+    if case == "negative length":
+        doc = template("four-bar")
+        doc["members"]["3"]["length"] = -0.2
+        at = run("pages/builder.py", language, build_doc=doc)
+        wanted = "0,2"  # the value typed, written the Serbian way
+    else:
+        query = {"damaged link": {"s": "1garbage"},
+                 "cut link": {"s": encode(load_preset("zbirka-2.1"))[:-30]},
+                 "cannot close": {"s": _open_linkage()},
+                 "seed out of range": {"v": _far_seed()},
+                 "bad check letter": {"v": "2.1-S42-07Q"}}[case]
+        at = _linked("pages/velocity_plans.py", language, **query)
+        wanted = {"cannot close": "°", "seed out of range": "1000000000"}.get(case, "")
+    errors = [e.value for e in at.error]
+    assert errors, case
+    assert not problems(errors, language), problems(errors, language)
+    assert any(wanted in e.replace("\u202f", "") for e in errors), errors
+
+
+def test_the_reader_finds_english_words_and_decimal_points():
+    """The checks above can fail: an English reason, a number with a point, a Latin word on a
+    Cyrillic page are found; task numbers, keys, files, notation and LaTeX are not."""
+    assert problems(["grupa ne može da se zatvori: the two links cannot reach each other"])
+    assert problems(["ω₃ = 7.84 s⁻¹"])
+    assert problems(["група не може да се затвори: veza je oštećena"], "sr-cyrl")
+    assert not problems(["Задатак 2.1: ⟨v_B⟩ = 7,84 m/s (задаци 1.1–1.3, zbirka-2.3, "
+                         "points.M.x, docs/sr/willis.md)", "F_23^t \\frac{1}{2}"], "sr-cyrl")
