@@ -226,7 +226,8 @@ def _named(scene, task_scene, name: str):
                if task_scene.title_sr else "")
     fitted = {"fit": None, "book_slips": {}} if isinstance(scene, Scene) else {}  # the book's numbers
     return dataclasses.replace(scene, id=f"variant-{name}", title=title, title_sr=title_sr,
-                               note=note, note_sr=note_sr, book={}, book_notes={}, **fitted)
+                               note=note, note_sr=note_sr, book={}, book_notes={}, book_notes_sr={},
+                               **fitted)
 
 
 UNITS = {"omega": "s⁻¹", "epsilon": "s⁻²", "v": "m/s", "a": "m/s²", "s": "m", "x": "m", "y": "m",

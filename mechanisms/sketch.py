@@ -66,7 +66,8 @@ def from_scene(scene: Scene, positions: Mapping[str, complex]) -> dict:
     book's printed values stay behind (they belong to the task, not to a changed mechanism),
     and the drawing replaces the ±1 signs."""
     doc = tomllib.loads(to_toml(scene))
-    for key in ("book", "book_notes", "book_slips", "layout_assumed", "fit", "assembly", "travel"):
+    for key in ("book", "book_notes", "book_notes_sr", "book_slips", "layout_assumed", "fit",
+                "assembly", "travel"):
         doc.pop(key, None)
     doc["guess"] = drawn(doc, positions)
     return doc

@@ -27,7 +27,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import first_run, waiting
-from ui.i18n import current as current_language, latex, message, num, t, title_of
+from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
@@ -106,8 +106,8 @@ def newton_table(scene: Scene, tol: float) -> None:
         if not iterates:
             st.warning(t("assur.iterations_unreachable", group=name))
             continue
-        rows = pd.DataFrame([{"k": k, t("assur.col_residual"): f"{it.residual:.2e}",
-                              t("assur.col_correction"): f"{it.correction:.2e}",
+        rows = pd.DataFrame([{"k": k, t("assur.col_residual"): sci(it.residual, 2),
+                              t("assur.col_correction"): sci(it.correction, 2),
                               **{f"θ{m} [°]": num(round(float(np.degrees(a)), 9) + 0.0, 8)
                                  for m, a in it.angles.items()}}
                              for k, it in enumerate(iterates)])
@@ -115,7 +115,7 @@ def newton_table(scene: Scene, tol: float) -> None:
         last = iterates[-1].residual
         if last <= tol * 10 or last < 1e-12:
             st.caption(t("assur.iterations_done", group=name, count=len(iterates) - 1,
-                         residual=f"{last:.1e}"))
+                         residual=sci(last, 1)))
         else:
             st.warning(t("assur.iterations_failed", group=name, count=len(iterates) - 1))
 
@@ -132,13 +132,13 @@ def about_the_survey(base: Scene, scene: Scene, current: Motion, survey: Motion,
             st.caption(t("assur.accuracy_hint"))
             report = next(iter(current.newton.values()))
             st.write(t("assur.instant_newton", iterations=int(report.iterations[0]),
-                       residual=f"{report.residual[0]:.1e}"))
+                       residual=sci(report.residual[0], 1)))
             table = measured(base, "newton", lambda done: newton_accuracy(
                 base, sweep_values(base, CYCLE), progress=done), t("app.measuring"))
-            rows = pd.DataFrame([{t("assur.col_tol"): f"{r['tol']:.0e}",
+            rows = pd.DataFrame([{t("assur.col_tol"): sci(r['tol'], 0),
                                   t("assur.col_iter"): f"{num(r['iterations_mean'], 2)} / {r['iterations_max']}",
                                   t("assur.col_ms"): num(r["solve_ms"], 1),
-                                  t("assur.col_error"): f"{r['error_m']:.1e}"}
+                                  t("assur.col_error"): sci(r['error_m'], 1)}
                                  for r in table])
             show_table(rows, f"{base.id}-newton-tolerance.csv", "csv_newton")
         with st.expander(t("assur.iterations"), expanded=False):
@@ -165,7 +165,7 @@ with controls:
          st.session_state["scene"])
     scene = driver_position(base)
     tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
-                           key="tol", format_func=lambda v: f"{v:.0e}", bind="query-params")
+                           key="tol", format_func=lambda v: sci(v, 0), bind="query-params")
     scene_download(scene)
 
 with main:

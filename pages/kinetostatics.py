@@ -31,7 +31,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import waiting
-from ui.i18n import current, latex, message, num, scaled_title, t, title_of
+from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
@@ -135,8 +135,8 @@ def driving_metrics(k: Kinetostatics, i: int) -> None:
     cols[1].metric(f"{t('forces.by_lever', symbol=symbol)} [{unit}]", num(k.driving_lever[i], 5))
     cols[2].metric(f"{t('forces.by_power', symbol=symbol)} [{unit}]", num(k.driving_power[i], 5))
     cols[3].metric(f"{t('forces.power')} [W]", num(k.power[i], 5))
-    st.caption(t("forces.agreement", spread=f"{k.disagreement[i]:.1e}",
-                 residual=f"{k.power_residual[i]:.1e}"))
+    st.caption(t("forces.agreement", spread=sci(k.disagreement[i], 1),
+                 residual=sci(k.power_residual[i], 1)))
     if k.crank_force is not None:
         st.caption(t("forces.crank_force", value=num(k.crank_force[i], 4)))
 

@@ -28,7 +28,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import chart, print_button, show_table
 from ui.firstpaint import first_run, waiting
-from ui.i18n import current, latex, message, num, t, title_of
+from ui.i18n import current, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
@@ -234,8 +234,8 @@ if tab_loops.open:
                  t("plans.col_acc"): f"{num(r['acceleration'], 6)} {units[r['kind']][2]}"}
                 for r in solved_values(instant(scene))]
         show_table(pd.DataFrame(rows), f"{scene.id}-analytic.csv", "csv_analytic")
-        st.success(t("plans.agreement", v=f"{plans.velocity.closure():.1e}",
-                     a=f"{plans.acceleration.closure():.1e}"))
+        st.success(t("plans.agreement", v=sci(plans.velocity.closure(), 1),
+                     a=sci(plans.acceleration.closure(), 1)))
         method_doc("complex-number")
 
 values = readings(plans, scales, scales["precision_cm"])

@@ -37,7 +37,7 @@ WORD = re.compile(r"[^\W\d_]+")
 # code (3.1-S42-07K), a version (3.11.7), a file (docs/sr/x.md)
 TASKS = re.compile(r"(?i)(zadat\w*|zadac\w*|задат\w*|задац\w*|zbirk\w*|збирк\w*|task\w*)"
                    r"\s+\d+\.\d+(\s*[–-]\s*\d+\.\d+)?")
-POINT = re.compile(r"(?<![\w.\-–/])\d+\.\d+(?![\w.\-–/])")
+POINT = re.compile(r"(?<![\w.\-–/])\d+\.\d+(?:e[+-]?\d+)?(?![\w.\-–/])")
 # columns of identifiers: a task's number (2.1), a result's key (points.M.x)
 IDENTIFIERS = {t("check.col_task", language=lang) for lang in ("sr", "sr-cyrl")}
 SKIP = re.compile(r"`[^`]*`|https?://\S+|\S+\.(?:md|py|toml|csv|svg|html)\b"

@@ -107,6 +107,11 @@ def latex(text: str, language: str | None = None) -> str:
     return DECIMAL.sub("{,}", text) if (language or current()).startswith("sr") else text
 
 
+def sci(value: float, digits: int = 1, language: str | None = None) -> str:
+    """A small number in scientific notation (a residual, an error: 3,6e-16 in Serbian)."""
+    return decimals(f"{value:.{digits}e}", language)
+
+
 def num(value: float, digits: int = 4, language: str | None = None) -> str:
     """A number with ``digits`` significant digits and the language's decimal separator (a
     value that rounds to zero prints as 0, not −0)."""
