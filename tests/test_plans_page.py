@@ -5,8 +5,8 @@ import pytest
 from mechanisms import load_preset
 from solvers.kinematics import solve
 
-from .test_pages import arrows as drawn_arrows
-from .test_pages import chart, charts, page
+from .test_gears_page import read
+from .test_pages import arrows as drawn_arrows, chart, charts, page
 from .test_plans import LINKAGES
 
 PAGE = "pages/velocity_plans.py"
@@ -134,7 +134,7 @@ def test_a_coincident_point_is_named_with_the_method_of_extension(lang, words):
 def test_the_complex_number_tab_solves_each_loop_by_squaring_and_adding(lang, tab, chosen):
     at = page(PAGE, lang=lang, scene="analitika-2.1", tab=tab)
     assert not at.exception
-    equations = [x.value for x in at.latex]
+    equations = [read(x.value, lang) for x in at.latex]
     assert any(r"\cos\varphi_{4}" in e and r"\sin\varphi_{4}" in e for e in equations)  # A cos + B sin = C
     assert any(f"{chosen}: " in e and "275.13" in e for e in equations)  # the drawn root of φ₄
     assert any(r"s_{56}^2" in e for e in equations)  # the RPR group's quadratic in the slide
@@ -157,7 +157,7 @@ def test_the_complex_number_tab_ends_with_the_final_contour_of_a_coupler_point(l
     at = page(PAGE, lang=lang, scene="four-bar-crank-rocker", tab=tab)
     assert not at.exception
     assert any(words in m.value and "E" in m.value for m in at.markdown)
-    lines = [x.value for x in at.latex]
+    lines = [read(x.value, lang) for x in at.latex]
     assert any(r"\vec v_{E} = 0.1\,i\omega_{2}" in line for line in lines)
     motion = solve(load_preset("four-bar-crank-rocker"))
     assert any(f"|v_{{E}}| = {abs(motion.points['E'].v[0]):.5g}" in line for line in lines)
