@@ -57,7 +57,8 @@ def run(path: str, language: str, **state) -> AppTest:
 
 
 def _table(element) -> list[str]:
-    """A table's cells as the reader sees them (a Styler's display values when there is one)."""
+    """A table's cells as the reader sees them (a Styler's display values when there is one;
+    the app writes a Serbian table's numbers as text, ui.export.dataframe)."""
     data = element.proto.arrow_data
     raw = data.styler.display_values if data.HasField("styler") else data.data
     if not raw:
