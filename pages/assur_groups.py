@@ -127,8 +127,13 @@ def about_the_survey(base: Scene, scene: Scene, current: Motion, survey: Motion,
         st.caption(t("assur.special_hint"))
         table = special_table(current, 0)
         show_table(table, f"{scene.id}-special-points.csv", "special_csv")
-    if survey.newton:
-        with st.expander(t("assur.accuracy"), expanded=False):
+    if survey.newton:  # the two panels are filled only while open: closed, a rerun skips
+        # Newton's iterations (a third of the page's rerun) and the accuracy table
+        accuracy = st.expander(t("assur.accuracy"), key="newton_accuracy", on_change="rerun")
+        iterations = st.expander(t("assur.iterations"), key="newton_iterations",
+                                 on_change="rerun")
+    if survey.newton and accuracy.open:
+        with accuracy:
             st.caption(t("assur.accuracy_hint"))
             report = next(iter(current.newton.values()))
             st.write(t("assur.instant_newton", iterations=int(report.iterations[0]),
@@ -141,8 +146,10 @@ def about_the_survey(base: Scene, scene: Scene, current: Motion, survey: Motion,
                                   t("assur.col_error"): sci(r['error_m'], 1)}
                                  for r in table])
             show_table(rows, f"{base.id}-newton-tolerance.csv", "csv_newton")
-        with st.expander(t("assur.iterations"), expanded=False):
+    if survey.newton and iterations.open:
+        with iterations:
             newton_table(scene, tol)
+    if survey.newton:
         method_doc("complex-number")
 
 

@@ -128,30 +128,34 @@ def results() -> None:
     cols[2].metric(f"i {a},{b} = ω{a}/ω{b}", t("gears.infinite") if ratio == float("inf") else num(ratio, 5))
     for name, (m, r) in train.points.items():
         st.metric(t("gears.point_velocity", point=name, member=m), f"{num(solution.velocity(m, r), 5)} m/s")
-    with st.expander(t("gears.willis_title")):
-        show_table(pd.DataFrame([{
-            t("gears.col_mesh"): f"{w.a}–{w.b}",
-            t("gears.col_carrier"): t("gears.frame") if w.carrier is None else str(w.carrier),
-            t("gears.col_equation"): (f"(ω{w.a} − ω{w.carrier})/(ω{w.b} − ω{w.carrier})"
-                                      if w.carrier is not None else f"ω{w.a}/ω{w.b}"),
-            t("gears.col_radii"): num(w.ratio, 5), t("gears.col_solved"): num(w.check(solution.omega), 5)}
-            for w in willis_table(train)]), f"{train.id}-willis.csv", "csv_willis")
-        st.markdown(f"**{t('gears.stages_title')}**")
-        for stage in stages(solution):
-            st.latex(latex(stage.latex(t("gears.from_radii"))))
-            st.caption(t("gears.stage_fixed") if stage.carrier is None
-                       else t("gears.stage_carrier", carrier=stage.carrier))
-        steps = speed_steps(solution)
-        if steps:
-            st.markdown(f"**{t('gears.chain_title')}**")
-            for step in steps:
-                st.latex(latex(step.latex))
-                st.caption(t(STEP_WORDS[step.kind, step.carrier is None], carrier=step.carrier))
-            total = total_ratio(steps, a, b)
-            if total:
-                st.latex(latex(total))
-                st.caption(t("gears.total_ratio"))
-        method_doc("willis")
+    # filled only while open: closed, a rerun skips its tables and LaTeX (most of the page's)
+    willis = st.expander(t("gears.willis_title"), key="willis_open", on_change="rerun")
+    if willis.open:
+        with willis:
+            show_table(pd.DataFrame([{
+                t("gears.col_mesh"): f"{w.a}–{w.b}",
+                t("gears.col_carrier"): t("gears.frame") if w.carrier is None else str(w.carrier),
+                t("gears.col_equation"): (f"(ω{w.a} − ω{w.carrier})/(ω{w.b} − ω{w.carrier})"
+                                          if w.carrier is not None else f"ω{w.a}/ω{w.b}"),
+                t("gears.col_radii"): num(w.ratio, 5),
+                t("gears.col_solved"): num(w.check(solution.omega), 5)}
+                for w in willis_table(train)]), f"{train.id}-willis.csv", "csv_willis")
+            st.markdown(f"**{t('gears.stages_title')}**")
+            for stage in stages(solution):
+                st.latex(latex(stage.latex(t("gears.from_radii"))))
+                st.caption(t("gears.stage_fixed") if stage.carrier is None
+                           else t("gears.stage_carrier", carrier=stage.carrier))
+            steps = speed_steps(solution)
+            if steps:
+                st.markdown(f"**{t('gears.chain_title')}**")
+                for step in steps:
+                    st.latex(latex(step.latex))
+                    st.caption(t(STEP_WORDS[step.kind, step.carrier is None], carrier=step.carrier))
+                total = total_ratio(steps, a, b)
+                if total:
+                    st.latex(latex(total))
+                    st.caption(t("gears.total_ratio"))
+            method_doc("willis")
     answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")
 
 

@@ -71,7 +71,9 @@ def test_newton_is_shown_iteration_by_iteration(lang, done):
     """Task 4.1 from the pose 5° earlier: a row per iterate, the residual ending below the
     tolerance, and the last angles equal to the page's own solution; a start too far away
     says so instead of showing a wrong pose."""
-    at = page("pages/assur_groups.py", lang=lang, scene="triad-full-turn")
+    closed = page("pages/assur_groups.py", lang=lang, scene="triad-full-turn")
+    assert not any("k" in d.value.columns for d in closed.dataframe)  # closed: not computed
+    at = page("pages/assur_groups.py", lang=lang, scene="triad-full-turn", newton_iterations=True)
     assert not at.exception and not at.error
     table = at.dataframe[-1].value
     residuals = [parse_number(r) for r in table.iloc[:, 1]]  # 1,74e-02 in Serbian

@@ -144,7 +144,7 @@ def test_closed_panels_cost_a_rerun_nothing(chapter):
     ("pages/velocity_plans.py", {"scene": "zbirka-4.1"}, "triad-plans.md"),
     ("pages/kinetostatics.py", {"tab": "Step by step"}, "graphical-kinetostatics.md"),
     ("pages/kinetostatics.py", {"tab": "Zhukovsky's lever"}, "reduced-mechanism.md"),
-    ("pages/planetary_gears.py", {}, "willis.md"),
+    ("pages/planetary_gears.py", {"willis_open": True}, "willis.md"),
     ("pages/assur_groups.py", {"scene": "triad-full-turn"}, "complex-number.md"),
 ])
 def test_each_method_links_its_page_of_the_docs(path, query, doc):

@@ -11,6 +11,7 @@ transliteration, with the language's decimal separator (the book writes 0,25 m).
 from __future__ import annotations
 
 import re
+import threading
 import tomllib
 from functools import cache
 from pathlib import Path
@@ -54,8 +55,14 @@ def _to_cyrillic(text: str) -> str:
                    for i, p in enumerate(parts))
 
 
+_RUN = threading.local()  # the language of the script run on this thread (language_picker)
+
+
 def current() -> str:
-    return st.session_state.get("lang") or default_language()
+    """The page's language. Read from the session once per run, by ``language_picker``: a
+    page asks about a hundred times a run, and each session-state read costs about 50 µs
+    (a tenth of a rerun, measured with py-spy; docs/performance.md)."""
+    return getattr(_RUN, "language", None) or st.session_state.get("lang") or default_language()
 
 
 def default_language() -> str:
@@ -127,10 +134,14 @@ def parse_number(text: str) -> float:
 
 
 def language_picker() -> str:
-    """The language choice in the sidebar, kept in the URL as ``?lang=``."""
-    return url_choice(st.sidebar.selectbox, "Language · Jezik · Језик", list(LANGUAGES), "lang",
-                      default=default_language(), format_func=LANGUAGES.get,
-                      label_visibility="collapsed")
+    """The language choice in the sidebar, kept in the URL as ``?lang=``; the run's language
+    from here on (a session's reruns share one script thread, and each run passes here
+    before its page)."""
+    _RUN.language = None
+    _RUN.language = url_choice(st.sidebar.selectbox, "Language · Jezik · Језик", list(LANGUAGES),
+                               "lang", default=default_language(), format_func=LANGUAGES.get,
+                               label_visibility="collapsed")
+    return _RUN.language
 
 
 def in_language(english: str, serbian: str, language: str | None = None) -> str:
