@@ -213,6 +213,20 @@ with main:
                   key="3d")
 
 
+def analytic_steps(rotor: Rotor) -> pd.DataFrame:
+    """Each mass's y, z, its arm L from plane II and the products the moments sum."""
+    x_ref = rotor.planes.get("II", 0.0)
+
+    def row(i: int, m) -> dict:
+        y, z = m.radius * math.sin(m.angle) * MM, m.radius * math.cos(m.angle) * MM
+        arm = (m.x - x_ref) * MM
+        return {"i": i + 1, "y = r·sin φ [mm]": num(y, 5), "z = r·cos φ [mm]": num(z, 5),
+                "L [mm]": num(arm, 5), "m·L·y [kg·mm²]": num(m.mass * arm * y, 5),
+                "m·L·z [kg·mm²]": num(m.mass * arm * z, 5), "m·y [kg·mm]": num(m.mass * y, 5),
+                "m·z [kg·mm]": num(m.mass * z, 5)}
+    return pd.DataFrame([row(i, m) for i, m in enumerate(rotor.masses)])
+
+
 def drawing_accuracy() -> None:
     """Under the polygons: what a drawing to the chosen precision misses, the answer box, and
     the analytical solution step by step."""
@@ -237,22 +251,15 @@ def drawing_accuracy() -> None:
     st.caption(t("rotor.accuracy_note", precision=num(precision, 2)))
     answer_box(answers, key="self")
 
-    with st.expander(t("rotor.steps_title")):
-        x_ref = rotor.planes.get("II", 0.0)
-        steps = pd.DataFrame([{
-            "i": i + 1, "y = r·sin φ [mm]": num(m.radius * math.sin(m.angle) * MM, 5),
-            "z = r·cos φ [mm]": num(m.radius * math.cos(m.angle) * MM, 5),
-            "L [mm]": num((m.x - x_ref) * MM, 5),
-            "m·L·y [kg·mm²]": num(m.mass * (m.x - x_ref) * m.radius * math.sin(m.angle) * MM**2, 5),
-            "m·L·z [kg·mm²]": num(m.mass * (m.x - x_ref) * m.radius * math.cos(m.angle) * MM**2, 5),
-            "m·y [kg·mm]": num(m.mass * m.radius * math.sin(m.angle) * MM, 5),
-            "m·z [kg·mm]": num(m.mass * m.radius * math.cos(m.angle) * MM, 5)}
-            for i, m in enumerate(rotor.masses)])
-        show_table(steps, f"{rotor.id}-steps.csv", "csv_steps")
-        for plane, u in result.u_needed.items():
-            st.markdown(t("rotor.step_plane", plane=plane, Y=num(u.imag * MM, 5),
-                          Z=num(u.real * MM, 5), tan=num(u.imag / u.real, 5) if u.real else "∞",
-                          angle=num(math.degrees(result.corrections[plane].angle), 5)))
+    # filled only while open: closed, a rerun skips its table
+    steps_box = st.expander(t("rotor.steps_title"), key="steps_open", on_change="rerun")
+    if steps_box.open:
+        with steps_box:
+            show_table(analytic_steps(rotor), f"{rotor.id}-steps.csv", "csv_steps")
+            for plane, u in result.u_needed.items():
+                st.markdown(t("rotor.step_plane", plane=plane, Y=num(u.imag * MM, 5),
+                              Z=num(u.real * MM, 5), tan=num(u.imag / u.real, 5) if u.real else "∞",
+                              angle=num(math.degrees(result.corrections[plane].angle), 5)))
 
 
 if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
