@@ -5,4 +5,5 @@ cd "$(dirname "$0")/.."
 bash scripts/bundles.sh
 python3 -m venv .venv
 .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
+.venv/bin/python scripts/icon_font.py  # once per Streamlit version: its icon font, cut
 exec .venv/bin/python scripts/serve.py app.py --server.port 8501 --browser.gatherUsageStats false "$@"

@@ -20,4 +20,5 @@ fi
 bash scripts/bundles.sh
 python3 -m venv .venv
 .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements-dev.txt
+.venv/bin/python scripts/icon_font.py  # once per Streamlit version: its icon font, cut
 exec .venv/bin/python -m pytest "$@"

@@ -121,6 +121,46 @@ def test_the_server_sends_scripts_and_plotly_gzipped_when_asked(app_url):
     assert Path(AXE).exists()
 
 
+def test_the_server_sends_the_icon_font_cut_to_the_icons_the_app_can_show(app_url):
+    """scripts/icon_font.py: a tenth of the bytes, every icon of our pages still in it."""
+    import io
+    import re
+
+    from fontTools.ttLib import TTFont
+
+    from scripts.icon_font import STATIC
+
+    font = next((STATIC / "media").glob("MaterialSymbols-*.woff2"))
+    served = urllib.request.urlopen(f"{app_url}/static/media/{font.name}").read()
+    assert len(served) < font.stat().st_size / 4
+    glyphs = set(TTFont(io.BytesIO(served)).getGlyphOrder())
+    ours = {name for path in [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py")]
+            for name in re.findall(r":material/([a-z0-9_]+):", path.read_text())}
+    assert len(ours) > 10 and ours <= glyphs
+
+
+def test_every_icon_on_a_page_draws_as_its_symbol_not_its_name(app_url):
+    """A ligature the cut font lacked would show its word ("fact_check") instead of the
+    symbol: every icon Streamlit draws on a page with many (the sidebar's pages, the
+    expanders, the downloads) is about one em wide, its content too (a word overflows its
+    box: its scroll width is the word's)."""
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
+        page.goto(f"{app_url}/kinetostatics?lang=sr")
+        page.wait_for_selector(".js-plotly-plot", timeout=60_000)
+        wait_idle(page)
+        page.evaluate("document.fonts.ready")
+        widths = page.evaluate("""() => [...document.querySelectorAll(
+            '[data-testid="stIconMaterial"]')].filter(e => e.offsetParent).map(e => [
+            e.textContent, e.scrollWidth, parseFloat(getComputedStyle(e).fontSize)])""")
+        browser.close()
+    assert len(widths) >= 8, widths
+    assert all(width <= 1.6 * size for _, width, size in widths), widths
+
+
 def test_the_crank_control_plays_and_steps_by_touch(app_url, phone):
     page = phone(f"{app_url}/velocity_plans?lang=sr&scene=zbirka-3.1")
     crank = page.locator(".mehanizmi-crank").first
