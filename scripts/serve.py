@@ -22,8 +22,9 @@ from __future__ import annotations
 
 import asyncio.base_events
 import gzip
+import queue
 import socket
-from concurrent.futures import ThreadPoolExecutor
+import threading
 import sys
 from pathlib import Path
 
@@ -59,7 +60,16 @@ class PrecompressedStatic:
         self.app = app
         self.cache: dict[tuple, bytes] = {}
         self.cache_limit = cache_limit
-        self.best = ThreadPoolExecutor(max_workers=1, thread_name_prefix="brotli")
+        self.best: queue.SimpleQueue = queue.SimpleQueue()  # (key, data) to write at quality 11
+        # a daemon: a server stopping does not wait for a file still being compressed
+        threading.Thread(target=self._write_best, name="brotli", daemon=True).start()
+
+    def _write_best(self) -> None:
+        while True:
+            key, data = self.best.get()
+            best = brotli.compress(data, quality=11)
+            if key in self.cache:  # (not if it was dropped from a full cache meanwhile)
+                self.cache[key] = best
 
     async def __call__(self, scope, receive, send):
         path = scope.get("path", "")
@@ -109,10 +119,7 @@ class PrecompressedStatic:
             packed = self.cache[key] = gzip.compress(data, compresslevel=9, mtime=0)
             return packed
         packed = self.cache[key] = brotli.compress(data, quality=5)
-
-        def better() -> None:
-            self.cache[key] = brotli.compress(data, quality=11)
-        self.best.submit(better)
+        self.best.put((key, data))
         return packed
 
     async def _icon_font(self, path: str, scope, receive, send) -> None:
