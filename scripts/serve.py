@@ -13,7 +13,8 @@ mobile link those 3.6–5.1 MB were most of a first visit's five seconds. Here e
 compressed once (Brotli, or gzip for a client without it), the first time it is asked for,
 and kept: every later request is served from memory. Our bundles get the year-long
 immutable lifetime Streamlit gives its own. Streamlit's icon font is served cut to the
-icons the app can show (scripts/icon_font.py).
+icons the app can show (scripts/icon_font.py), and a page's HTML preloads Plotly's basic
+bundle.
 
     .venv/bin/python scripts/serve.py app.py [streamlit run's options]
 """
@@ -33,7 +34,7 @@ from streamlit.web import cli
 from streamlit.web.server.starlette import starlette_app
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from icon_font import FONT, STATIC, cut_path  # noqa: E402
+from icon_font import FONT, ROOT, STATIC, cut_path  # noqa: E402
 
 COMPRESSIBLE = (b"text/", b"application/javascript", b"application/json", b"image/svg+xml")
 SMALLEST = 1024  # below this the gzip header is not worth it
@@ -75,6 +76,9 @@ class PrecompressedStatic:
         path = scope.get("path", "")
         if scope["type"] == "http" and FONT.match(path):
             await self._icon_font(path, scope, receive, send)
+            return
+        if scope["type"] == "http" and scope.get("method") == "GET" and _is_page(path):
+            await self._with_preload(scope, receive, send)
             return
         coding = _coding(scope)
         if (scope["type"] != "http" or scope.get("method") != "GET"
@@ -122,6 +126,34 @@ class PrecompressedStatic:
         self.best.put((key, data))
         return packed
 
+    async def _with_preload(self, scope, receive, send) -> None:
+        """A page's HTML with Plotly's basic bundle preloaded: the browser fetches it while
+        Streamlit's scripts start, not after the first chart element arrives (the chart
+        element asks for it by the same URL, ui/plot.py)."""
+        start: dict = {}
+        body: list[bytes] = []
+
+        async def capture(message):
+            if message["type"] == "http.response.start":
+                start.update(message)
+            elif message["type"] == "http.response.body":
+                body.append(message.get("body", b""))
+
+        await self.app(scope, receive, capture)
+        data = b"".join(body)
+        named = {k.lower(): v for k, v in start.get("headers", [])}
+        bundle = next(iter(sorted((ROOT / "static").glob("plotly-basic-*.min.js"))), None)
+        if (start.get("status") == 200 and bundle is not None and b"</head>" in data
+                and named.get(b"content-type", b"").startswith(b"text/html")
+                and not named.get(b"content-encoding")):
+            link = f'<link rel="preload" as="script" href="/app/static/{bundle.name}">'
+            data = data.replace(b"</head>", link.encode() + b"</head>", 1)
+            start["headers"] = [(k, v) for k, v in start.get("headers", [])
+                                if k.lower() != b"content-length"] + [
+                (b"content-length", str(len(data)).encode())]
+        await send(start)
+        await send({"type": "http.response.body", "body": data})
+
     async def _icon_font(self, path: str, scope, receive, send) -> None:
         """Streamlit's icon font as cut by scripts/icon_font.py (a tenth of its bytes), when
         the cut is there; Streamlit's own answer otherwise."""
@@ -147,6 +179,11 @@ class PrecompressedStatic:
             await send(message)
 
         await self.app(scope, receive, swap)
+
+
+def _is_page(path: str) -> bool:
+    """A page of the app (``/``, ``/kinetostatics``): its HTML, not a file or the API."""
+    return "." not in path and not path.startswith(("/_stcore", "/static", "/app", "/component"))
 
 
 def _set_nodelay(sock: socket.socket) -> None:

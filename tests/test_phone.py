@@ -128,6 +128,17 @@ def test_the_server_sends_scripts_and_plotly_compressed_when_asked(app_url):
     assert Path(AXE).exists()
 
 
+def test_a_page_preloads_the_plotly_bundle_its_charts_ask_for(app_url):
+    """The browser fetches Plotly's basic bundle with Streamlit's scripts, not after the
+    first chart element arrives: the page's HTML names it, by the URL the charts use."""
+    from figures.raw import RawFigure
+    from ui.plot import bundle_url
+
+    html = urllib.request.urlopen(f"{app_url}/kinetostatics").read().decode()
+    wanted = "/" + bundle_url(RawFigure()).lstrip("./")
+    assert f'<link rel="preload" as="script" href="{wanted}">' in html
+
+
 def test_the_server_sends_the_icon_font_cut_to_the_icons_the_app_can_show(app_url):
     """scripts/icon_font.py: a tenth of the bytes, every icon of our pages still in it."""
     import io
