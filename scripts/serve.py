@@ -85,19 +85,9 @@ class PrecompressedStatic:
                 or not path.startswith(PREFIXES) or coding is None):
             await self.app(scope, receive, send)
             return
-        start: dict = {}
-        body: list[bytes] = []
-
-        async def capture(message):
-            if message["type"] == "http.response.start":
-                start.update(message)
-            elif message["type"] == "http.response.body":
-                body.append(message.get("body", b""))
-
-        await self.app(scope, receive, capture)
+        start, data = await self._whole(scope, receive)
         headers = [(k.lower(), v) for k, v in start.get("headers", [])]
         named = dict(headers)
-        data = b"".join(body)
         if (start.get("status") != 200 or len(data) < SMALLEST or named.get(b"content-encoding")
                 or not named.get(b"content-type", b"").startswith(COMPRESSIBLE)):
             await send(start)
@@ -116,6 +106,20 @@ class PrecompressedStatic:
         await send({"type": "http.response.body", "body": packed})
 
 
+    async def _whole(self, scope, receive) -> tuple[dict, bytes]:
+        """Streamlit's answer held back: its start message and its whole body."""
+        start: dict = {}
+        body: list[bytes] = []
+
+        async def capture(message):
+            if message["type"] == "http.response.start":
+                start.update(message)
+            elif message["type"] == "http.response.body":
+                body.append(message.get("body", b""))
+
+        await self.app(scope, receive, capture)
+        return start, b"".join(body)
+
     def _compress(self, key: tuple, data: bytes, coding: bytes) -> bytes:
         if len(self.cache) >= self.cache_limit:
             self.cache.pop(next(iter(self.cache)))
@@ -130,17 +134,7 @@ class PrecompressedStatic:
         """A page's HTML with Plotly's basic bundle preloaded: the browser fetches it while
         Streamlit's scripts start, not after the first chart element arrives (the chart
         element asks for it by the same URL, ui/plot.py)."""
-        start: dict = {}
-        body: list[bytes] = []
-
-        async def capture(message):
-            if message["type"] == "http.response.start":
-                start.update(message)
-            elif message["type"] == "http.response.body":
-                body.append(message.get("body", b""))
-
-        await self.app(scope, receive, capture)
-        data = b"".join(body)
+        start, data = await self._whole(scope, receive)
         named = {k.lower(): v for k, v in start.get("headers", [])}
         bundle = next(iter(sorted((ROOT / "static").glob("plotly-basic-*.min.js"))), None)
         if (start.get("status") == 200 and bundle is not None and b"</head>" in data

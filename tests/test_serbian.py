@@ -44,11 +44,14 @@ SKIP = re.compile(r"`[^`]*`|https?://\S+|\S+\.(?:md|py|toml|csv|svg|html)\b"
                   r"|\b[a-z]\w*(?:\.[\w-]+)+|\b\w+_\w+")  # a result's key, a file's key
 
 
-def run(path: str, language: str, **state) -> AppTest:
+def run(path: str, language: str, query: dict | None = None, **state) -> AppTest:
+    """The page in ``language``, with ``state`` preset and ``query`` in its link."""
     at = AppTest.from_file(str(ROOT / "app.py"), default_timeout=120)
     at.session_state["lang"] = language
     for key, value in state.items():
         at.session_state[key] = value
+    for key, value in (query or {}).items():
+        at.query_params[key] = value
     at.run()
     if path != "app.py":
         at.switch_page(path).run()
@@ -220,17 +223,6 @@ def test_every_page_reads_serbian_with_everything_open(path, state, language):
     assert not problems(texts, language), problems(texts, language)
 
 
-def _linked(path: str, language: str, **query) -> AppTest:
-    at = AppTest.from_file(str(ROOT / "app.py"), default_timeout=120)
-    at.session_state["lang"] = language
-    for key, value in query.items():
-        at.query_params[key] = value
-    at.run()
-    at.switch_page(path).run()
-    assert not at.exception, [e.message for e in at.exception]
-    return at
-
-
 def _open_linkage() -> str:
     """A four-bar whose coupler is too short to close at its own instant (a link to it)."""
     from mechanisms.link import encode
@@ -267,7 +259,7 @@ def test_every_failing_case_says_why_in_serbian(case, language):
                  "cannot close": {"s": _open_linkage()},
                  "seed out of range": {"v": _far_seed()},
                  "bad check letter": {"v": "2.1-S42-07Q"}}[case]
-        at = _linked("pages/velocity_plans.py", language, **query)
+        at = run("pages/velocity_plans.py", language, query)
         wanted = {"cannot close": "°", "seed out of range": "1000000000"}.get(case, "")
     errors = [e.value for e in at.error]
     assert errors, case
