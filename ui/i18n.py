@@ -19,12 +19,11 @@ from pathlib import Path
 import cyrtranslit
 import streamlit as st
 
-from mechanisms.messages import Text, text_of
+from mechanisms.messages import KEEP, Text, text_of
 from ui.url import url_choice
 
 LOCALES = Path(__file__).resolve().parents[1] / "locales"
 LANGUAGES = {"sr": "Srpski (latinica)", "en": "English", "sr-cyrl": "Српски (ћирилица)"}
-KEEP = re.compile(r"⟨([^⟩]*)⟩")
 LATIN = re.compile(r"(⟨[^⟩]*⟩|\{[^}]*\}|\[[^\]]*\])")  # spans transliteration leaves alone
 
 
