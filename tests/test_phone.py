@@ -157,24 +157,19 @@ def test_the_server_sends_the_icon_font_cut_to_the_icons_the_app_can_show(app_ur
     assert len(ours) > 10 and ours <= glyphs
 
 
-def test_every_icon_on_a_page_draws_as_its_symbol_not_its_name(app_url):
+def test_every_icon_on_a_page_draws_as_its_symbol_not_its_name(app_url, phone):
     """A ligature the cut font lacked would show its word ("fact_check") instead of the
-    symbol: every icon Streamlit draws on a page with many (the sidebar's pages, the
-    expanders, the downloads) is about one em wide, its content too (a word overflows its
-    box: its scroll width is the word's)."""
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
-        page = browser.new_page(viewport={"width": 1400, "height": 900})
-        page.goto(f"{app_url}/kinetostatics?lang=sr")
-        page.wait_for_selector(".js-plotly-plot", timeout=60_000)
-        wait_idle(page)
-        page.evaluate("document.fonts.ready")
-        widths = page.evaluate("""() => [...document.querySelectorAll(
-            '[data-testid="stIconMaterial"]')].filter(e => e.offsetParent).map(e => [
-            e.textContent, e.scrollWidth, parseFloat(getComputedStyle(e).fontSize)])""")
-        browser.close()
+    symbol: every icon Streamlit draws on a page with many (the sidebar's pages once it is
+    opened, the expanders, the downloads) is about one em wide, its content too (a word
+    overflows its box: its scroll width is the word's)."""
+    page = phone(f"{app_url}/kinetostatics?lang=sr")
+    page.get_by_test_id("stExpandSidebarButton").tap()
+    page.wait_for_selector('[data-testid="stSidebarNav"]', timeout=10_000)
+    page.evaluate("document.fonts.ready")
+    page.wait_for_timeout(500)
+    widths = page.evaluate("""() => [...document.querySelectorAll(
+        '[data-testid="stIconMaterial"]')].filter(e => e.offsetParent).map(e => [
+        e.textContent, e.scrollWidth, parseFloat(getComputedStyle(e).fontSize)])""")
     assert len(widths) >= 8, widths
     assert all(width <= 1.6 * size for _, width, size in widths), widths
 
