@@ -97,14 +97,12 @@ class PrecompressedStatic:
         packed = self.cache.get(key)
         if packed is None:
             packed = self._compress(key, data, coding)
-        kept = [(k, v) for k, v in headers if k not in (b"content-length", b"vary")]
+        kept = [(k, v) for k, v in headers if k != b"vary"]
         if path.startswith("/app/static/plotly-"):  # named by version: never changes
             kept = [(k, v) for k, v in kept if k != b"cache-control"] + [(b"cache-control", YEAR)]
-        kept += [(b"content-encoding", coding), (b"vary", b"Accept-Encoding"),
-                 (b"content-length", str(len(packed)).encode())]
-        await send({**start, "headers": kept})
+        kept += [(b"content-encoding", coding), (b"vary", b"Accept-Encoding")]
+        await send(_sized({**start, "headers": kept}, packed))
         await send({"type": "http.response.body", "body": packed})
-
 
     async def _whole(self, scope, receive) -> tuple[dict, bytes]:
         """Streamlit's answer held back: its start message and its whole body."""
@@ -142,9 +140,7 @@ class PrecompressedStatic:
                 and not named.get(b"content-encoding")):
             link = f'<link rel="preload" as="script" href="/app/static/{bundle.name}">'
             data = data.replace(b"</head>", link.encode() + b"</head>", 1)
-            start["headers"] = [(k, v) for k, v in start.get("headers", [])
-                                if k.lower() != b"content-length"] + [
-                (b"content-length", str(len(data)).encode())]
+            start = _sized(start, data)
         await send(start)
         await send({"type": "http.response.body", "body": data})
 
@@ -155,24 +151,20 @@ class PrecompressedStatic:
         if not cut.exists():
             await self.app(scope, receive, send)
             return
-        body = self.cache.get((path, "cut"))
-        if body is None:
-            body = self.cache[(path, "cut")] = cut.read_bytes()
+        start, data = await self._whole(scope, receive)
+        if start.get("status") == 200:
+            data = self.cache.get((path, "cut"))
+            if data is None:
+                data = self.cache[(path, "cut")] = cut.read_bytes()
+            start = _sized(start, data)
+        await send(start)
+        await send({"type": "http.response.body", "body": data})
 
-        async def swap(message):
-            if message["type"] == "http.response.start" and message.get("status") == 200:
-                headers = [(k, v) for k, v in message.get("headers", [])
-                           if k.lower() != b"content-length"]
-                message = {**message, "headers": [*headers, (b"content-length",
-                                                             str(len(body)).encode())]}
-                swap.ok = True
-            elif message["type"] == "http.response.body" and getattr(swap, "ok", False):
-                if message.get("more_body"):
-                    return
-                message = {"type": "http.response.body", "body": body}
-            await send(message)
 
-        await self.app(scope, receive, swap)
+def _sized(start: dict, body: bytes) -> dict:
+    """A response's start message whose Content-Length is ``body``'s."""
+    headers = [(k, v) for k, v in start.get("headers", []) if k.lower() != b"content-length"]
+    return {**start, "headers": [*headers, (b"content-length", str(len(body)).encode())]}
 
 
 def _is_page(path: str) -> bool:

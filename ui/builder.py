@@ -25,7 +25,7 @@ from solvers.diagnostics import Unsolvable, dead_zones, solve_instant, sweep_val
 from solvers.kinematics import GroupIssue, solve
 from solvers.structure import StructureError, decompose
 from ui.cache import BY_REPR
-from ui.i18n import KEEP, current, member_labels
+from ui.i18n import label_of
 from ui.scenes import link_choice
 
 START = "four-bar"
@@ -109,9 +109,8 @@ def start_from(scene: Scene) -> None:
 def in_words(doc: dict) -> dict:
     """The members' labels in the reader's language (a template's "crank" is "krivaja" in
     the Serbian tables, and in the file the student saves)."""
-    words = member_labels(current())
-    members = {number: {**spec, "label": KEEP.sub(r"\1", words.get(spec["label"], spec["label"]))}
-               if spec.get("label") else spec for number, spec in doc.get("members", {}).items()}
+    members = {number: {**spec, "label": label_of(spec["label"])} if spec.get("label") else spec
+               for number, spec in doc.get("members", {}).items()}
     return {**doc, "members": members}
 
 

@@ -11,10 +11,9 @@ import re
 from functools import cache
 from pathlib import Path
 
-import cyrtranslit
 import streamlit as st
 
-from ui.i18n import KEEP, current, t
+from ui.i18n import KEEP, _to_cyrillic, current, t
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
 LATIN = re.compile(r"(`[^`]*`|⟨[^⟩]*⟩|\]\([^)]*\))")  # code, notation, a link's target
@@ -30,9 +29,7 @@ def text_of(name: str, language: str) -> str:
     """The method page ``name`` in ``language``, ready for ``st.markdown``."""
     text = (DOCS.parent / path_of(name, language)).read_text(encoding="utf-8")
     if language == "sr-cyrl":
-        parts = LATIN.split(text)  # even indices: prose, odd: spans kept in Latin
-        text = "".join(cyrtranslit.to_cyrillic(p, "sr") if i % 2 == 0 else p
-                       for i, p in enumerate(parts))
+        text = _to_cyrillic(text, LATIN)
     return KEEP.sub(r"\1", text)
 
 

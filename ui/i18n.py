@@ -48,8 +48,9 @@ def member_labels(language: str) -> dict[str, str]:
         return tomllib.load(f)
 
 
-def _to_cyrillic(text: str) -> str:
-    parts = LATIN.split(text)  # even indices: prose, odd: spans kept in Latin
+def _to_cyrillic(text: str, latin: re.Pattern = LATIN) -> str:
+    """Serbian Latin to Cyrillic, but for the spans ``latin`` matches (one capture group)."""
+    parts = latin.split(text)  # even indices: prose, odd: spans kept in Latin
     return "".join(cyrtranslit.to_cyrillic(p, "sr") if i % 2 == 0 else p
                    for i, p in enumerate(parts))
 
@@ -80,10 +81,15 @@ def t(key: str, language: str | None = None, **values) -> str:
     if not values:
         return text
     if "member_label" in values:
-        label = values["member_label"]
-        values["member_label"] = KEEP.sub(r"\1", member_labels(language).get(label, label))
+        values["member_label"] = label_of(values["member_label"], language)
     return text.format(**{k: num(v, language=language) if isinstance(v, float) else v
                           for k, v in values.items()})
+
+
+def label_of(label: str, language: str | None = None) -> str:
+    """A scene's member label in the language's words where the labels table has them (an
+    uploaded scene's own labels stay as written)."""
+    return KEEP.sub(r"\1", member_labels(language or current()).get(label, label))
 
 
 def message(said: BaseException | Text | str, language: str | None = None) -> str:
