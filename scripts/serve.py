@@ -11,7 +11,9 @@ Compression: Streamlit serves its own scripts (``/static/…``, content-hashed) 
 origin on every request cost it CPU under load, so it leaves compression to a proxy. On a
 mobile link those 3.6–5.1 MB were most of a first visit's five seconds. Here each file is
 compressed once (Brotli, or gzip for a client without it), the first time it is asked for,
-and kept: every later request is served from memory. Our bundles get the year-long
+and kept: every later request is served from memory. The best-quality encodings are also kept
+on disk by content (``.cache/compressed/``), so a server that starts again (a deploy, each
+browser test's server) serves them at once instead of compressing the same megabytes anew. Our bundles get the year-long
 immutable lifetime Streamlit gives its own. Streamlit's icon font is served cut to the
 icons the app can show (scripts/icon_font.py), and a page's HTML preloads Plotly's basic
 bundle.
@@ -23,10 +25,12 @@ from __future__ import annotations
 
 import asyncio.base_events
 import gzip
+import hashlib
+import os
 import queue
 import socket
-import threading
 import sys
+import threading
 from pathlib import Path
 
 import brotli
@@ -40,6 +44,7 @@ COMPRESSIBLE = (b"text/", b"application/javascript", b"application/json", b"imag
 SMALLEST = 1024  # below this the gzip header is not worth it
 PREFIXES = ("/static/", "/app/static/")
 YEAR = b"public, immutable, max-age=31536000"
+STORE = ROOT / ".cache" / "compressed"  # best encodings by content: <sha256>.<coding>
 
 
 def _coding(scope) -> bytes | None:
@@ -55,20 +60,23 @@ class PrecompressedStatic:
     the file compressed (once per file, version and encoding, then kept); anything else
     passes. Brotli is written at quality 5 at once (35 ms a megabyte) and at quality 11 in
     the background (3 s a megabyte, off the event loop: brotli lets go of the GIL), which
-    every later visitor gets."""
+    every later visitor gets; that and gzip's best are stored on disk by content (``store``)
+    and read from there by the next server."""
 
-    def __init__(self, app, cache_limit: int = 128):
+    def __init__(self, app, cache_limit: int = 128, store: Path = STORE):
         self.app = app
         self.cache: dict[tuple, bytes] = {}
         self.cache_limit = cache_limit
-        self.best: queue.SimpleQueue = queue.SimpleQueue()  # (key, data) to write at quality 11
+        self.store = store
+        self.best: queue.SimpleQueue = queue.SimpleQueue()  # (key, data, file) for quality 11
         # a daemon: a server stopping does not wait for a file still being compressed
         threading.Thread(target=self._write_best, name="brotli", daemon=True).start()
 
     def _write_best(self) -> None:
         while True:
-            key, data = self.best.get()
+            key, data, file = self.best.get()
             best = brotli.compress(data, quality=11)
+            _keep(file, best)
             if key in self.cache:  # (not if it was dropped from a full cache meanwhile)
                 self.cache[key] = best
 
@@ -121,11 +129,15 @@ class PrecompressedStatic:
     def _compress(self, key: tuple, data: bytes, coding: bytes) -> bytes:
         if len(self.cache) >= self.cache_limit:
             self.cache.pop(next(iter(self.cache)))
-        if coding == b"gzip":
+        file = self.store / f"{hashlib.sha256(data).hexdigest()}.{coding.decode()}"
+        if file.exists():
+            packed = self.cache[key] = file.read_bytes()
+        elif coding == b"gzip":
             packed = self.cache[key] = gzip.compress(data, compresslevel=9, mtime=0)
-            return packed
-        packed = self.cache[key] = brotli.compress(data, quality=5)
-        self.best.put((key, data))
+            _keep(file, packed)
+        else:
+            packed = self.cache[key] = brotli.compress(data, quality=5)
+            self.best.put((key, data, file))
         return packed
 
     async def _with_preload(self, scope, receive, send) -> None:
@@ -159,6 +171,15 @@ class PrecompressedStatic:
             start = _sized(start, data)
         await send(start)
         await send({"type": "http.response.body", "body": data})
+
+
+def _keep(file: Path, packed: bytes) -> None:
+    """Store an encoding whole or not at all (written aside, then renamed): two servers may
+    write the same file, and one stopping halfway must not leave half a file."""
+    file.parent.mkdir(parents=True, exist_ok=True)
+    aside = file.with_name(f"{file.name}.{os.getpid()}.{threading.get_ident()}")
+    aside.write_bytes(packed)
+    aside.replace(file)
 
 
 def _sized(start: dict, body: bytes) -> dict:

@@ -419,8 +419,9 @@ def test_scrubbing_phi2_redraws_the_plans_locally_and_letting_go_updates_the_tab
               ".every(g => g.__crank && g.__crank.spec.turn)")
     page.wait_for_function(loaded, timeout=30_000)
     wait_idle(page)
+    # a table's grid is drawn by a script of its own, which may still be loading
+    page.wait_for_function(f"() => ({TABLE_CELLS})() !== ''", timeout=30_000)
     table = page.evaluate(TABLE_CELLS)
-    assert table
     scrub(page, 30, release=False)  # 30 frames of 5°
     page.wait_for_function(f"() => {LAST_TITLE}.includes('150')", timeout=5_000)  # drawn last
     motion = solve(load_preset("four-bar-crank-rocker"), math.radians(150.0))

@@ -9,6 +9,7 @@ import time
 
 import numpy as np
 import pytest
+from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 from .test_browser import keep, open_page, wait_idle, wait_url
 
@@ -46,15 +47,26 @@ def screen_of(page, x: float, y: float) -> tuple[float, float]:
 
 
 def drag_shape(page, name: str, to: complex) -> None:
-    """Drag the drawing's circle ``name`` to ``to`` (the figure's units) with the mouse."""
+    """Drag the drawing's circle ``name`` to ``to`` (the figure's units) with the mouse. On a
+    loaded machine a chart may still be taking its listeners when the mouse goes down, and
+    the drag is lost: then the circle has not moved, and the drag is made again."""
     start = shapes(page)[name]
-    x0, y0 = screen_of(page, start.real, start.imag)
-    x1, y1 = screen_of(page, to.real, to.imag)
-    page.mouse.move(x0, y0)
-    page.mouse.down()
-    page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=5)
-    page.mouse.move(x1, y1, steps=5)
-    page.mouse.up()
+    moved = (f"() => Math.hypot(({SHAPES})()[{name!r}][0] - {start.real}, "
+             f"({SHAPES})()[{name!r}][1] - {start.imag}) > {abs(to - start) / 2}")
+    for _ in range(3):
+        x0, y0 = screen_of(page, start.real, start.imag)
+        x1, y1 = screen_of(page, to.real, to.imag)
+        page.mouse.move(x0, y0)
+        page.mouse.down()
+        page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=5)
+        page.mouse.move(x1, y1, steps=5)
+        page.mouse.up()
+        try:
+            page.wait_for_function(moved, timeout=5_000)
+            return
+        except PlaywrightTimeout:
+            page.wait_for_timeout(500)
+    raise AssertionError(f"the circle {name} did not follow three drags")
 
 
 def drag_point(page, name: str, to: complex) -> None:

@@ -1,11 +1,16 @@
 """scripts/serve.py: the server's connections send at once (TCP_NODELAY), also on a
-listening socket made the way Streamlit makes it (no protocol named, proto 0)."""
+listening socket made the way Streamlit makes it (no protocol named, proto 0); a static
+file's best encodings are kept on disk and the next server serves them from there."""
 
 from __future__ import annotations
 
 import asyncio
 import asyncio.base_events
+import gzip
 import socket
+import time
+
+import brotli
 
 from scripts import serve
 
@@ -47,3 +52,48 @@ def test_the_launcher_turns_nagle_s_algorithm_off_on_every_accepted_connection(m
     assert started == [["streamlit", "run", "app.py", "--server.port", "8999"]]
     assert accepted_nodelay() == 1
 
+
+
+SCRIPT = b"function draw(plan) { return plan.poles.map((p) => p.scale); }\n" * 400
+
+
+def _get(middleware, coding: bytes) -> tuple[dict, bytes]:
+    """One GET of a static script through the middleware, as a browser accepting ``coding``."""
+    async def script_app(scope, receive, send):
+        await send({"type": "http.response.start", "status": 200,
+                    "headers": [(b"content-type", b"application/javascript"),
+                                (b"etag", b"v1")]})
+        await send({"type": "http.response.body", "body": SCRIPT})
+
+    middleware.app = script_app
+    sent: list[dict] = []
+
+    async def collect(message):
+        sent.append(message)
+
+    scope = {"type": "http", "method": "GET", "path": "/static/js/index.abc123.js",
+             "headers": [(b"accept-encoding", coding)]}
+    asyncio.run(middleware(scope, None, collect))
+    return dict(sent[0]["headers"]), sent[1]["body"]
+
+
+def test_the_best_encodings_are_stored_by_content_and_a_new_server_serves_them(tmp_path):
+    first = serve.PrecompressedStatic(None, store=tmp_path)
+    headers, body = _get(first, b"gzip")
+    assert headers[b"content-encoding"] == b"gzip" and gzip.decompress(body) == SCRIPT
+    headers, body = _get(first, b"br")
+    assert headers[b"content-encoding"] == b"br" and brotli.decompress(body) == SCRIPT
+    for _ in range(200):  # quality 11 is written on the background thread
+        if len(list(tmp_path.glob("*.br"))) == 1:
+            break
+        time.sleep(0.05)
+    (stored_br,) = tmp_path.glob("*.br")
+    (stored_gz,) = tmp_path.glob("*.gzip")
+    assert brotli.decompress(stored_br.read_bytes()) == SCRIPT
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([stored_br.name, stored_gz.name])
+
+    marked = brotli.compress(SCRIPT, quality=1)  # not what either quality here writes
+    stored_br.write_bytes(marked)
+    again = serve.PrecompressedStatic(None, store=tmp_path)
+    assert _get(again, b"br")[1] == marked  # read from the store, not compressed anew
+    assert _get(again, b"gzip")[1] == stored_gz.read_bytes()
