@@ -32,8 +32,11 @@ class Session:
     def __init__(self, url: str, page: str, link: str, report: Report):
         self.url, self.page, self.link, self.report = url, page, link, report
         self.widgets: dict[str, tuple[str, str]] = {}  # key → (widget id, "slider" | "number")
+        self.fragments: dict[str, str] = {}  # widget id → the fragment that drew it, if any
         self.metrics: dict[str, str] = {}
         self.figure_bytes = 0  # of the last run
+        self.drawn: set[str] = set()  # the widgets the last run drew (a fragment's: its own)
+        self.whole = True  # the last run was the page's, not a fragment's
         self.page_hash = ""
 
     async def run(self, ws, states=()) -> None:
@@ -41,7 +44,8 @@ class Session:
         msg.rerun_script.query_string = f"lang=en&{self.link}"
         msg.rerun_script.page_name = self.page
         msg.rerun_script.page_script_hash = self.page_hash
-        for widget_id, value in states:
+        for widget_id, value in states:  # (as a browser does: a fragment's widget reruns it)
+            msg.rerun_script.fragment_id = self.fragments.get(widget_id, "")
             state = msg.rerun_script.widget_states.widgets.add()
             state.id = widget_id
             if self.widgets.get(widget_id.rsplit("-", 1)[-1], ("", "slider"))[1] == "number":
@@ -50,7 +54,7 @@ class Session:
                 state.double_array_value.data.append(value)
         start = time.perf_counter()
         await ws.send(msg.SerializeToString())
-        self.metrics, self.figure_bytes = {}, 0
+        self.metrics, self.figure_bytes, self.drawn = {}, 0, set()
         while True:
             fm = ForwardMsg()
             fm.ParseFromString(await ws.recv())
@@ -58,16 +62,21 @@ class Session:
             if kind == "navigation":
                 self.page_hash = fm.navigation.page_script_hash
             elif kind == "delta" and fm.delta.WhichOneof("type") == "new_element":
-                self._element(fm.delta.new_element)
+                self._element(fm.delta.new_element, fm.delta.fragment_id)
             elif kind == "script_finished":
-                if fm.script_finished == ForwardMsg.FINISHED_SUCCESSFULLY:
+                if fm.script_finished in (ForwardMsg.FINISHED_SUCCESSFULLY,
+                                          ForwardMsg.FINISHED_FRAGMENT_RUN_SUCCESSFULLY):
+                    self.whole = fm.script_finished == ForwardMsg.FINISHED_SUCCESSFULLY
                     took = time.perf_counter() - start
                     self.report.times.append(took)
                     self.report.by_page.setdefault(self.page, []).append(took)
                     return
 
-    def _element(self, element) -> None:
+    def _element(self, element, fragment: str) -> None:
         which = element.WhichOneof("type")
+        if which in ("slider", "number_input"):
+            self.fragments[getattr(element, which).id] = fragment
+            self.drawn.add(getattr(element, which).id.rsplit("-", 1)[-1])
         if which == "exception":
             self.report.errors.append(f"{self.page}: {element.exception.message[:200]}")
         elif which == "metric":

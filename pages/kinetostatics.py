@@ -35,7 +35,7 @@ from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
-from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
+from ui.scenes import driver_position, driver_speed, driver_start, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -241,177 +241,209 @@ def turn_frames(scene: Scene, values: tuple[float, ...], inertia: bool,
     return crank_frames(draw, values)
 
 
-controls, main = page_columns()
-asked = live()  # a chart's φ₂ control was touched: this run sends the frames
-with controls:
-    base = scene_picker(default="predavanja-kinetostatika")
-    seed(defaults(base), st.session_state["scene"])
-    scene = load_inputs(base, driver_inputs(base))
-    steps = st.select_slider(t("forces.steps"), options=RESOLUTIONS, key="steps",
-                             bind="query-params")
-    scene_download(scene)
-
-with main:
-    st.caption(title_of(scene))
-    if not has_loads(scene):
-        st.info(t("forces.no_loads"))
-    try:
-        instant(scene)  # raises with the reason when the mechanism cannot be in this position
-        k = at_instant(scene, st.session_state["inertia"])
-    except (Unsolvable, StructureError) as exc:
-        st.error(t("plans.unsolvable", reason=message(exc)))
-        st.stop()
-    now = 0  # k holds the instant only
-    if not np.isfinite(k.driving[now]):
-        st.warning(t("forces.singular"))
-    results = st.container()  # the driving torque: filled below, unless the student practises
-    tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_steps"),
-                    t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
-
-
 def load_tables(k: Kinetostatics, now: int) -> None:
     """Under the loads: the joint reactions, and the inertia loads when they count."""
     st.header(t("forces.reactions"))
     st.caption(t("forces.reactions_hint"))
-    show_table(reactions_table(k, now), f"{scene.id}-reactions.csv", "csv_reactions")
+    show_table(reactions_table(k, now), f"{k.motion.scene.id}-reactions.csv", "csv_reactions")
     if k.inertia:
         st.header(t("forces.inertia_title"))
         st.caption(t("forces.inertia_hint"))
-        show_table(inertia_table(k, now), f"{scene.id}-inertia.csv", "csv_inertia")
+        show_table(inertia_table(k, now), f"{k.motion.scene.id}-inertia.csv", "csv_inertia")
 
 
-rotating = scene.driver.kind == "rotating"
-values = task_turn(base)  # the φ₂ frames' angles, the task's instant among them
-at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
-if tabs[0].open:
-    with tabs[0]:
-        frames = cranks(scene, ("loads",), "forces", values, lambda: turn_frames(
-            scene.with_(at=0.0), values, st.session_state["inertia"], None, 0.0, current(),
-            look()), asked)
-        chart(loads_figure(k, now, at_label), f"{scene.id}-loads", key="fig_loads",
-              crank=frames.get("loads"))
-    if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
-        with tabs[0]:
-            load_tables(k, now)
+def polygons_tab(k: Kinetostatics, now: int, scene: Scene, values: tuple[float, ...],
+             asked: bool) -> None:
+    """One group's free body and force polygon at this instant, at the scale asked (0: one
+    that fits), with its φ₂ frames, print and table."""
+    groups = {g.name: g.members for g in k.motion.structure.groups}
+    groups["driver"] = (2,)
+    names = list(k.order)
+    choice = st.selectbox(t("forces.group"), names, key="group",
+                          format_func=lambda n: t("forces.driver") if n == "driver"
+                          else t("forces.group_label", members=n))
+    asked_uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
+                               bind="query-params")  # 0: a scale that fits each position
+    actions = free_body(k, groups[choice], now)
+    uf = asked_uf or polygon_scale(a.force for a in actions)
+    figures = polygon_figures(k, now, groups[choice], actions, uf)
+    frames = cranks(scene, ("free_body", "polygon"), "forces", values, lambda: turn_frames(
+        scene.with_(at=0.0), values, st.session_state["inertia"], groups[choice], asked_uf,
+        current(), look()), asked)
+    chart(figures["free_body"], f"{scene.id}-free-body-{choice}", key="fig_free_body",
+          crank=frames.get("free_body"))
+    chart(figures["polygon"], f"{scene.id}-polygon-{choice}", key="fig_polygon",
+          crank=frames.get("polygon"))
+    print_button(polygon_svg([(a.name, a.force) for a in actions if a.known],
+                             [(a.name, a.force) for a in actions if not a.known], uf,
+                             t("forces.svg_caption", scene=scene.id, group=choice,
+                               scale=num(uf, 4))),
+                 f"{scene.id}-polygon-{choice}.svg", key="svg_polygon")
+    polygon = pd.DataFrame([{t("forces.col_force"): a.name, "|F| [N]": num(abs(a.force), 4),
+                             t("forces.col_plan"): num(abs(a.force) / uf, 3),
+                             t("forces.col_angle"): num(math.degrees(math.atan2(
+                                 a.force.imag, a.force.real)) % 360, 4)} for a in actions])
+    show_table(polygon, f"{scene.id}-polygon-{choice}.csv", "csv_polygon")
 
-if tabs[1].open:
-    with tabs[1]:
-        groups = {g.name: g.members for g in k.motion.structure.groups}
-        groups["driver"] = (2,)
-        names = list(k.order)
-        choice = st.selectbox(t("forces.group"), names, key="group",
-                              format_func=lambda n: t("forces.driver") if n == "driver"
-                              else t("forces.group_label", members=n))
-        asked_uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
-                                   bind="query-params")  # 0: a scale that fits each position
-        actions = free_body(k, groups[choice], now)
-        uf = asked_uf or polygon_scale(a.force for a in actions)
-        figures = polygon_figures(k, now, groups[choice], actions, uf)
-        frames = cranks(scene, ("free_body", "polygon"), "forces", values, lambda: turn_frames(
-            scene.with_(at=0.0), values, st.session_state["inertia"], groups[choice], asked_uf,
-            current(), look()), asked)
-        chart(figures["free_body"], f"{scene.id}-free-body-{choice}", key="fig_free_body",
-              crank=frames.get("free_body"))
-        chart(figures["polygon"], f"{scene.id}-polygon-{choice}", key="fig_polygon",
-              crank=frames.get("polygon"))
-        print_button(polygon_svg([(a.name, a.force) for a in actions if a.known],
-                                 [(a.name, a.force) for a in actions if not a.known], uf,
-                                 t("forces.svg_caption", scene=scene.id, group=choice,
-                                   scale=num(uf, 4))),
-                     f"{scene.id}-polygon-{choice}.svg", key="svg_polygon")
-        polygon = pd.DataFrame([{t("forces.col_force"): a.name, "|F| [N]": num(abs(a.force), 4),
-                                 t("forces.col_plan"): num(abs(a.force) / uf, 3),
-                                 t("forces.col_angle"): num(math.degrees(math.atan2(
-                                     a.force.imag, a.force.real)) % 360, 4)} for a in actions])
-        show_table(polygon, f"{scene.id}-polygon-{choice}.csv", "csv_polygon")
 
-practising = False
-if tabs[2].open:
-    with tabs[2]:
-        practising = practice.toggle("pr_forces")
-        if practising:
-            uf = st.session_state.get("UF") or polygon_scale(
-                complex(r.force[now]) for r in k.reactions.values())
-            practice.panel(practice_steps.forces(k, now, uf), "pr_forces",
-                           t("practice.sheet_forces"))
-        else:
-            construction_steps(k, now)
+def cycle_tab(scene: Scene, base: Scene, steps: int, rotating: bool) -> None:
+    """The driving torque, power and reactions over the cycle (analysed once per geometry;
+    φ₂ moves the marker), and what the cycle's resolution costs."""
+    c = over_cycle(scene.with_(at=base.driver.at), steps, st.session_state["inertia"])
+    x = c.motion.at
+    x = np.degrees(x) if rotating else x
+    symbol = "M_p [N·m]" if rotating else "F_p [N]"
+    chart(cycle_figure(x, [(symbol, c.driving, "y"), ("P [W]", c.power, "y2")],
+                       st.session_state["at"], t("forces.cycle_title"),
+                       t("plans.phi") if rotating else t("plans.s"), look()),
+          f"{scene.id}-torque", key="fig_cycle")
+    power = c.power
+    feasible = np.isfinite(power)
+    peak = float(np.nanmax(np.abs(power), initial=0))
+    # the mean over a cycle of loads that do no net work is zero up to rounding: show 0
+    mean = float(np.mean(power[feasible])) if feasible.any() else math.nan
+    mean = 0.0 if abs(mean) <= 1e-9 * peak else mean
+    cols = st.columns(3)
+    cols[0].metric(t("forces.mean_power"), f"{num(mean, 4)} W" if feasible.any() else "—")
+    cols[1].metric(t("forces.peak_power"), f"{num(peak, 4)} W")
+    name, unit = ("M_p", "N·m") if rotating else ("F_p", "N")
+    cols[2].metric(t("forces.peak_driving", symbol=name),
+                   f"{num(np.nanmax(np.abs(c.driving), initial=0), 4)} {unit}")
+    if not feasible.all():
+        st.caption(t("forces.part_cycle", share=num(100 * feasible.mean(), 3)))
+    for issue in c.motion.issues:
+        ranges = message(format_ranges(scene, issue.ranges))
+        if issue.problem == "near-singular":
+            st.warning(t("forces.dead_point", group=issue.group, ranges=ranges))
+    pairs = [(f"|F_{p}{q}|", r.magnitude, "y") for (p, q), r in sorted(c.reactions.items())
+             if p < q]
+    chart(cycle_figure(x, pairs, st.session_state["at"], t("forces.reactions_cycle"),
+                       t("plans.phi") if rotating else t("plans.s"), look(), y_title="|F| [N]"),
+          f"{scene.id}-reactions-cycle", key="fig_reactions_cycle")
+    with st.expander(t("forces.resolution")):
+        st.caption(t("forces.resolution_hint"))
+        inertia = st.session_state["inertia"]
+        table = measured(scene, "resolution", lambda done: torque_resolution(scene, RESOLUTIONS, inertia, done),
+                         t("app.measuring"), variant=inertia)
+        rows = pd.DataFrame([{t("forces.col_steps"): r["steps"], t("assur.col_ms"): num(r["ms"], 3),
+                              t("forces.col_peak"): num(r["peak"], 6),
+                              t("forces.col_change"): f"{num(r['change'], 3)} %"}
+                             for r in table])
+        show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
 
-if tabs[3].open:
-    with tabs[3]:
-        st.write(t("forces.lever_intro"))
-        practising = practice.toggle("pr_lever")
-        if practising:
-            practice.panel(practice_steps.lever(k, now), "pr_lever", "", drawable=False)
-        else:
-            chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
-                  key="fig_lever")
-            speed = scene.driver.speed or 1.0
-            lever = pd.DataFrame([{t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
-                                   t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
-                                  for f in k.lever if abs(f.force[now]) > 0])
-            show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
-            book_lever(k, now)
-            method_doc("reduced-mechanism")
 
-if not practising:  # M_p and F_p are what the construction ends with
-    with results:
-        driving_metrics(k, now)
+controls, main = page_columns()
+with controls:
+    base = scene_picker(default="predavanja-kinetostatika")
+    seed(defaults(base), st.session_state["scene"])
+    position = st.container()  # φ₂ (or s): drawn by the fragment below
+    loaded = load_inputs(base, driver_speed(base))
+    steps = st.select_slider(t("forces.steps"), options=RESOLUTIONS, key="steps",
+                             bind="query-params")
+    download = st.container()
+    answers = st.container()
 
-if tabs[4].open:
-    with tabs[4]:
-        c = over_cycle(scene.with_(at=base.driver.at), steps, st.session_state["inertia"])
-        x = c.motion.at
-        x = np.degrees(x) if rotating else x
-        symbol = "M_p [N·m]" if rotating else "F_p [N]"
-        chart(cycle_figure(x, [(symbol, c.driving, "y"), ("P [W]", c.power, "y2")],
-                           st.session_state["at"], t("forces.cycle_title"),
-                           t("plans.phi") if rotating else t("plans.s"), look()),
-              f"{scene.id}-torque", key="fig_cycle")
-        power = c.power
-        feasible = np.isfinite(power)
-        peak = float(np.nanmax(np.abs(power), initial=0))
-        # the mean over a cycle of loads that do no net work is zero up to rounding: show 0
-        mean = float(np.mean(power[feasible])) if feasible.any() else math.nan
-        mean = 0.0 if abs(mean) <= 1e-9 * peak else mean
-        cols = st.columns(3)
-        cols[0].metric(t("forces.mean_power"), f"{num(mean, 4)} W" if feasible.any() else "—")
-        cols[1].metric(t("forces.peak_power"), f"{num(peak, 4)} W")
-        name, unit = ("M_p", "N·m") if rotating else ("F_p", "N")
-        cols[2].metric(t("forces.peak_driving", symbol=name),
-                       f"{num(np.nanmax(np.abs(c.driving), initial=0), 4)} {unit}")
-        if not feasible.all():
-            st.caption(t("forces.part_cycle", share=num(100 * feasible.mean(), 3)))
-        for issue in c.motion.issues:
-            ranges = message(format_ranges(scene, issue.ranges))
-            if issue.problem == "near-singular":
-                st.warning(t("forces.dead_point", group=issue.group, ranges=ranges))
-        pairs = [(f"|F_{p}{q}|", r.magnitude, "y") for (p, q), r in sorted(c.reactions.items())
-                 if p < q]
-        chart(cycle_figure(x, pairs, st.session_state["at"], t("forces.reactions_cycle"),
-                           t("plans.phi") if rotating else t("plans.s"), look(), y_title="|F| [N]"),
-              f"{scene.id}-reactions-cycle", key="fig_reactions_cycle")
-        with st.expander(t("forces.resolution")):
-            st.caption(t("forces.resolution_hint"))
-            inertia = st.session_state["inertia"]
-            table = measured(scene, "resolution", lambda done: torque_resolution(scene, RESOLUTIONS, inertia, done),
-                             t("app.measuring"), variant=inertia)
-            rows = pd.DataFrame([{t("forces.col_steps"): r["steps"], t("assur.col_ms"): num(r["ms"], 3),
-                                  t("forces.col_peak"): num(r["peak"], 6),
-                                  t("forces.col_change"): f"{num(r['change'], 3)} %"}
-                                 for r in table])
-            show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
 
-if not waiting():
-    if scene.book:
-        with main:
-            book_section(scene, base)
-    with controls:
-        unit = "N·m" if rotating else "N"
-        quantities = [Quantity(f"{'M_p' if rotating else 'F_p'} [{unit}]", float(k.driving[now]), unit),
-                      Quantity("P [W]", float(k.power[now]), "W")]
-        quantities += [Quantity(f"|F_{p}{q}| [N]", float(r.magnitude[now]), "N")
-                       for (p, q), r in sorted(k.reactions.items()) if p < q]
-        answer_box(quantities, key="self")
+@st.fragment
+def at_the_instant(loaded: Scene, steps: int) -> None:
+    """Everything that depends on φ₂, which moving φ₂ reruns alone (not the scene picker and
+    the fifteen or so load inputs above, a third of the page's rerun): its slider, the
+    charts, tables and answers at that instant, the cycle's tab (its marker). A load, ω₂ or
+    the scene rerun the page, and this with it."""
+    asked = live()  # a chart's φ₂ control was touched: this run sends the frames
+    with position:
+        scene = driver_position(loaded)
+    with download:
+        scene_download(scene)
+    with answers:  # (a fragment may only write where it wrote in the last full run: every run)
+        answer_slot = st.empty()
+
     with main:
-        speed_panel("kinetostatics", scene.id, ("kinetostatics",))
+        st.caption(title_of(scene))
+        if not has_loads(scene):
+            st.info(t("forces.no_loads"))
+        try:
+            instant(scene)  # raises with the reason when the mechanism cannot be in this position
+            k = at_instant(scene, st.session_state["inertia"])
+        except (Unsolvable, StructureError) as exc:
+            st.error(t("plans.unsolvable", reason=message(exc)))
+            st.stop()
+        now = 0  # k holds the instant only
+        if not np.isfinite(k.driving[now]):
+            st.warning(t("forces.singular"))
+        results = st.container()  # the driving torque: filled below, unless the student practises
+        tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_steps"),
+                        t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
+
+
+    rotating = scene.driver.kind == "rotating"
+    values = task_turn(base)  # the φ₂ frames' angles, the task's instant among them
+    at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
+    if tabs[0].open:
+        with tabs[0]:
+            frames = cranks(scene, ("loads",), "forces", values, lambda: turn_frames(
+                scene.with_(at=0.0), values, st.session_state["inertia"], None, 0.0, current(),
+                look()), asked)
+            chart(loads_figure(k, now, at_label), f"{scene.id}-loads", key="fig_loads",
+                  crank=frames.get("loads"))
+        if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
+            with tabs[0]:
+                load_tables(k, now)
+
+    if tabs[1].open:
+        with tabs[1]:
+            polygons_tab(k, now, scene, values, asked)
+
+    practising = False
+    if tabs[2].open:
+        with tabs[2]:
+            practising = practice.toggle("pr_forces")
+            if practising:
+                uf = st.session_state.get("UF") or polygon_scale(
+                    complex(r.force[now]) for r in k.reactions.values())
+                practice.panel(practice_steps.forces(k, now, uf), "pr_forces",
+                               t("practice.sheet_forces"))
+            else:
+                construction_steps(k, now)
+
+    if tabs[3].open:
+        with tabs[3]:
+            st.write(t("forces.lever_intro"))
+            practising = practice.toggle("pr_lever")
+            if practising:
+                practice.panel(practice_steps.lever(k, now), "pr_lever", "", drawable=False)
+            else:
+                chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
+                      key="fig_lever")
+                speed = scene.driver.speed or 1.0
+                lever = pd.DataFrame([{t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
+                                       t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
+                                      for f in k.lever if abs(f.force[now]) > 0])
+                show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
+                book_lever(k, now)
+                method_doc("reduced-mechanism")
+
+    if not practising:  # M_p and F_p are what the construction ends with
+        with results:
+            driving_metrics(k, now)
+
+    if tabs[4].open:
+        with tabs[4]:
+            cycle_tab(scene, base, steps, rotating)
+
+    if not waiting():
+        if scene.book:
+            with main:
+                book_section(scene, base)
+        with answer_slot.container():
+            unit = "N·m" if rotating else "N"
+            quantities = [Quantity(f"{'M_p' if rotating else 'F_p'} [{unit}]", float(k.driving[now]), unit),
+                          Quantity("P [W]", float(k.power[now]), "W")]
+            quantities += [Quantity(f"|F_{p}{q}| [N]", float(r.magnitude[now]), "N")
+                           for (p, q), r in sorted(k.reactions.items()) if p < q]
+            answer_box(quantities, key="self")
+        with main:
+            speed_panel("kinetostatics", scene.id, ("kinetostatics",))
+
+
+at_the_instant(loaded, steps)

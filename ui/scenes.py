@@ -204,12 +204,16 @@ def driver_position(base: Scene) -> Scene:
     return base.with_(at=at)
 
 
-def driver_inputs(base: Scene) -> Scene:
-    """The driver's position and speed sliders (``at``, ``omega`` in the URL): φ₂ and ω₂, or s
-    and v for a slider."""
-    scene = driver_position(base)
-    if base.driver.kind == "rotating":
+def driver_speed(scene: Scene) -> Scene:
+    """The driver's speed slider (``omega`` in the URL): ω₂, or v for a slider."""
+    if scene.driver.kind == "rotating":
         speed = st.slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega", bind="query-params")
     else:
         speed = st.slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", bind="query-params")
     return scene.with_(speed=speed)
+
+
+def driver_inputs(base: Scene) -> Scene:
+    """The driver's position and speed sliders (``at``, ``omega`` in the URL): φ₂ and ω₂, or s
+    and v for a slider."""
+    return driver_speed(driver_position(base))

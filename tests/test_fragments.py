@@ -1,0 +1,71 @@
+"""Moving φ₂ on the kinetostatics and plans pages reruns only what depends on it (a
+fragment): against a real server, through Streamlit's WebSocket as a browser speaks it
+(deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
+reruns the whole page."""
+
+from __future__ import annotations
+
+import asyncio
+
+import pytest
+import websockets
+
+from deploy.client import Report, Session, free_port, start_server, wait_ready
+from deploy.loadtest import check
+
+LOADS = {"omega", "m2", "rho2", "steps"}  # some of the kinetostatics page's controls above
+
+
+@pytest.fixture(scope="module")
+def stream():
+    port = free_port()
+    server = start_server(port)
+    url = f"ws://127.0.0.1:{port}/_stcore/stream"
+    try:
+        asyncio.run(wait_ready(url))
+        yield url
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
+
+
+async def _moves(url: str, page: str, link: str, moves: list[tuple[str, float]]) -> list[dict]:
+    """Open the page, run it whole once more (as its paint does), then make each move; what
+    each move's run was."""
+    report = Report()
+    session = Session(url, page, link, report)
+    runs = []
+    async with websockets.connect(url, subprotocols=["streamlit"], max_size=None) as ws:
+        await session.run(ws)
+        await session.run(ws)
+        for key, value in moves:
+            await session.run(ws, [(session.widgets[key][0], value)])
+            runs.append({"whole": session.whole, "drawn": set(session.drawn),
+                         "figures": session.figure_bytes, "metrics": dict(session.metrics)})
+            if page == "kinetostatics" and key == "at":
+                check(session, value, report)
+    assert not report.errors and not report.wrong, report.errors + report.wrong
+    return runs
+
+
+def test_phi2_on_the_kinetostatics_page_reruns_the_instant_alone_with_its_answers(stream):
+    runs = asyncio.run(_moves(stream, "kinetostatics", "scene=predavanja-kinetostatika",
+                              [("at", 40.0), ("at", 217.5), ("omega", 12.0), ("at", 90.0)]))
+    first, second, speed, after = runs
+    for run in (first, second, after):  # (the torque checked against the solver above)
+        assert not run["whole"]
+        assert "at" in run["drawn"] and not run["drawn"] & LOADS
+        assert "M_p group by group [N·m]" in run["metrics"]
+    assert speed["whole"] and LOADS | {"at"} <= speed["drawn"]
+    assert first["metrics"] != second["metrics"]
+
+
+def test_phi2_on_the_plans_page_reruns_the_instant_alone(stream):
+    runs = asyncio.run(_moves(stream, "velocity_plans", "scene=zbirka-3.1",
+                              [("at", 40.0), ("Uv", 0.02), ("at", 75.0)]))
+    moved, scale, again = runs
+    for run in (moved, again):
+        assert not run["whole"] and "at" in run["drawn"]
+        assert not run["drawn"] & {"omega", "UL", "Uv", "Ua", "prec"}
+        assert run["figures"] > 10_000  # the plans and the mechanism at this φ₂
+    assert scale["whole"] and {"at", "omega", "Uv"} <= scale["drawn"]
