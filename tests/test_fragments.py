@@ -1,5 +1,5 @@
-"""Moving φ₂ on the kinetostatics and plans pages reruns only what depends on it (a
-fragment): against a real server, through Streamlit's WebSocket as a browser speaks it
+"""Moving φ₂ on the kinetostatics page reruns only what depends on it (a fragment):
+against a real server, through Streamlit's WebSocket as a browser speaks it
 (deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
 reruns the whole page."""
 
@@ -59,13 +59,3 @@ def test_phi2_on_the_kinetostatics_page_reruns_the_instant_alone_with_its_answer
     assert speed["whole"] and LOADS | {"at"} <= speed["drawn"]
     assert first["metrics"] != second["metrics"]
 
-
-def test_phi2_on_the_plans_page_reruns_the_instant_alone(stream):
-    runs = asyncio.run(_moves(stream, "velocity_plans", "scene=zbirka-3.1",
-                              [("at", 40.0), ("Uv", 0.02), ("at", 75.0)]))
-    moved, scale, again = runs
-    for run in (moved, again):
-        assert not run["whole"] and "at" in run["drawn"]
-        assert not run["drawn"] & {"omega", "UL", "Uv", "Ua", "prec"}
-        assert run["figures"] > 10_000  # the plans and the mechanism at this φ₂
-    assert scale["whole"] and {"at", "omega", "Uv"} <= scale["drawn"]
