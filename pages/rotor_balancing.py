@@ -90,8 +90,7 @@ with controls:
         st.number_input(f"{t(givens[given])} [{unit_label}]", min_value=1e-6, key=f"value{plane}",
                         format="%.4g", bind="query-params")
     st.number_input(t("rotor.omega"), min_value=0.1, key="omega", step=10.0, bind="query-params")
-    precision = st.slider(t("rotor.precision"), 0.1, 2.0, 0.5, 0.1, key="precision",
-                          bind="query-params")
+    precision_slot = st.container()  # the drawing's precision: drawn by accuracy() below
 
 with main, st.container(key="later_masses"):  # on a phone, after the polygons (ui/layout.py)
     st.markdown(f"**{t('rotor.masses')}**")
@@ -227,7 +226,7 @@ def analytic_steps(rotor: Rotor) -> pd.DataFrame:
     return pd.DataFrame([row(i, m) for i, m in enumerate(rotor.masses)])
 
 
-def drawing_accuracy() -> None:
+def drawing_accuracy(precision: float) -> None:
     """Under the polygons: what a drawing to the chosen precision misses, the answer box, and
     the analytical solution step by step."""
     st.header(t("rotor.accuracy_title"))
@@ -262,7 +261,22 @@ def drawing_accuracy() -> None:
                               angle=num(math.degrees(result.corrections[plane].angle), 5)))
 
 
-if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
+@st.fragment
+def accuracy() -> None:
+    """The precision a student draws to and what it changes (the section under the
+    polygons): moving it reruns this alone, not the inputs, the balance and the polygons.
+    The slider is drawn on every run (Streamlit forgets a widget a run leaves out)."""
+    with precision_slot:
+        precision = st.slider(t("rotor.precision"), 0.1, 2.0, 0.5, 0.1, key="precision",
+                              bind="query-params")
+    with main:  # (a fragment may only write where it wrote in the last full run: every run)
+        section = st.empty()
+    if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
+        with section.container():
+            drawing_accuracy(precision)
+
+
+accuracy()
+if not waiting():
     with main:
-        drawing_accuracy()
         speed_panel("rotor_balancing", rotor.id)

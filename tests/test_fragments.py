@@ -1,7 +1,7 @@
-"""Moving φ₂ on the kinetostatics page reruns only what depends on it (a fragment):
-against a real server, through Streamlit's WebSocket as a browser speaks it
-(deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
-reruns the whole page."""
+"""Moving φ₂ on the kinetostatics page, or the drawing precision on the rotor page, reruns
+only what depends on it (a fragment): against a real server, through Streamlit's WebSocket
+as a browser speaks it (deploy/client.py). The answers after a fragment's run are this
+φ₂'s; any other control reruns the whole page."""
 
 from __future__ import annotations
 
@@ -59,3 +59,14 @@ def test_phi2_on_the_kinetostatics_page_reruns_the_instant_alone_with_its_answer
     assert speed["whole"] and LOADS | {"at"} <= speed["drawn"]
     assert first["metrics"] != second["metrics"]
 
+
+
+def test_the_drawing_precision_on_the_rotor_page_reruns_its_section_alone(stream):
+    runs = asyncio.run(_moves(stream, "rotor_balancing", "scene=zbirka-7.1",
+                              [("precision", 1.5), ("omega", 200.0), ("precision", 0.3)]))
+    moved, speed, again = runs
+    for run in (moved, again):
+        assert not run["whole"] and run["drawn"] == {"precision"}
+        assert run["figures"] == 0  # the polygons are not sent again
+    assert speed["whole"] and {"precision", "omega", "xI"} <= speed["drawn"]
+    assert speed["figures"] > 0
