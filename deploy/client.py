@@ -75,17 +75,15 @@ class Session:
     def _element(self, element, fragment: str) -> None:
         which = element.WhichOneof("type")
         if which in ("slider", "number_input"):
-            self.fragments[getattr(element, which).id] = fragment
-            self.drawn.add(getattr(element, which).id.rsplit("-", 1)[-1])
-        if which == "exception":
+            widget_id = getattr(element, which).id
+            key = widget_id.rsplit("-", 1)[-1]
+            self.widgets[key] = (widget_id, "slider" if which == "slider" else "number")
+            self.fragments[widget_id] = fragment
+            self.drawn.add(key)
+        elif which == "exception":
             self.report.errors.append(f"{self.page}: {element.exception.message[:200]}")
         elif which == "metric":
             self.metrics[element.metric.label] = element.metric.body
-        elif which == "slider":
-            self.widgets[element.slider.id.rsplit("-", 1)[-1]] = (element.slider.id, "slider")
-        elif which == "number_input":
-            self.widgets[element.number_input.id.rsplit("-", 1)[-1]] = (element.number_input.id,
-                                                                         "number")
         elif which == "bidi_component" and element.bidi_component.component_name == "mehanizmi_plot":
             self.figure_bytes += len(element.bidi_component.bytes)
 

@@ -347,7 +347,7 @@ with controls:
 @st.fragment
 def at_the_instant(loaded: Scene, steps: int) -> None:
     """Everything that depends on φ₂, which moving φ₂ reruns alone (not the scene picker and
-    the fifteen or so load inputs above, a third of the page's rerun): its slider, the
+    the fifteen or so load inputs above, a quarter of the page's rerun): its slider, the
     charts, tables and answers at that instant, the cycle's tab (its marker). A load, ω₂ or
     the scene rerun the page, and this with it."""
     asked = live()  # a chart's φ₂ control was touched: this run sends the frames

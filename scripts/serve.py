@@ -11,10 +11,10 @@ Compression: Streamlit serves its own scripts (``/static/…``, content-hashed) 
 origin on every request cost it CPU under load, so it leaves compression to a proxy. On a
 mobile link those 3.6–5.1 MB were most of a first visit's five seconds. Here each file is
 compressed once (Brotli, or gzip for a client without it), the first time it is asked for,
-and kept: every later request is served from memory. The best-quality encodings are also kept
-on disk by content (``.cache/compressed/``), so a server that starts again (a deploy, each
-browser test's server) serves them at once instead of compressing the same megabytes anew. Our bundles get the year-long
-immutable lifetime Streamlit gives its own. Streamlit's icon font is served cut to the
+and kept: every later request is served from memory. The best-quality encodings are also
+kept on disk by content (``.cache/compressed/``), so a server that starts again (a deploy,
+each browser test's server) serves them at once instead of compressing the same megabytes
+anew. Our bundles get the year-long immutable lifetime Streamlit gives its own. Streamlit's icon font is served cut to the
 icons the app can show (scripts/icon_font.py), and a page's HTML preloads Plotly's basic
 bundle.
 

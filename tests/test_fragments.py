@@ -60,7 +60,6 @@ def test_phi2_on_the_kinetostatics_page_reruns_the_instant_alone_with_its_answer
     assert first["metrics"] != second["metrics"]
 
 
-
 def test_the_drawing_precision_on_the_rotor_page_reruns_its_section_alone(stream):
     runs = asyncio.run(_moves(stream, "rotor_balancing", "scene=zbirka-7.1",
                               [("precision", 1.5), ("omega", 200.0), ("precision", 0.3)]))

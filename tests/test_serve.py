@@ -53,7 +53,6 @@ def test_the_launcher_turns_nagle_s_algorithm_off_on_every_accepted_connection(m
     assert accepted_nodelay() == 1
 
 
-
 SCRIPT = b"function draw(plan) { return plan.poles.map((p) => p.scale); }\n" * 400
 
 
