@@ -144,6 +144,7 @@ FIRST_PAINT = """(() => {
 })();"""
 BYTES = ("() => [...performance.getEntriesByType('navigation'), "
          "...performance.getEntriesByType('resource')].reduce((n, r) => n + r.transferSize, 0)")
+FLOOR = "(the floor: sidebar, navigation and one small chart, `bench/floor_chart_app.py`)"
 OPENED = ["trajectories", "velocity_plans", "assur_groups", "kinetostatics", "planetary_gears",
           "rotor_balancing", "builder"]  # the pages that open with a chart
 
@@ -195,7 +196,7 @@ def phone_paint(browser, device: dict, url: str) -> tuple[float, float, float]:
     return statistics.median(times), statistics.median(sizes), statistics.median(tops)
 
 
-def phone_rows(p, port: int) -> list[str]:
+def phone_rows(p, port: int, floor_port: int) -> list[str]:
     browser = p.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
                                 args=["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"])
     device = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
@@ -205,34 +206,45 @@ def phone_rows(p, port: int) -> list[str]:
     for name in OPENED:
         ms, kb, top = phone_paint(browser, device, f"http://127.0.0.1:{port}/{name}?lang=sr")
         rows.append(f"| {name} | {ms:.0f} | {kb:.0f} | {top:.0f} |")
+    ms, kb, top = phone_paint(browser, device, f"http://127.0.0.1:{floor_port}/?lang=sr")
+    rows.append(f"| {FLOOR} | {ms:.0f} | {kb:.0f} | {top:.0f} |")
     browser.close()
     return rows
 
 
-def phone_table() -> str:
-    """The phone rows alone (``--phone``)."""
-    port = free_port()
-    server = start_server(port)
-    try:
-        asyncio.run(wait_ready(f"ws://127.0.0.1:{port}/_stcore/stream"))
-        with sync_playwright() as p:
-            return "\n".join(phone_rows(p, port)[1:])
-    finally:
-        server.terminate()
-        server.wait(timeout=30)
-
-
-def table() -> str:
+def servers() -> tuple[int, int, list]:
+    """The app and the floor app (bench/floor_chart_app.py) served: their ports, processes."""
     port, floor_port = free_port(), free_port()
     while floor_port == port:
         floor_port = free_port()
-    server = start_server(port)
-    floor = start_server(floor_port, ROOT / "bench" / "floor_chart_app.py")
-    rows = [f"| page | slider → first figure painted in chromium, ms (median of {CHANGES}) "
-            "| → all its figures painted, ms |", "|---|---:|---:|"]
+    running = [start_server(port), start_server(floor_port, ROOT / "bench" / "floor_chart_app.py")]
     try:
         for ready in (port, floor_port):
             asyncio.run(wait_ready(f"ws://127.0.0.1:{ready}/_stcore/stream"))
+    except BaseException:
+        for server in running:
+            server.terminate()
+        raise
+    return port, floor_port, running
+
+
+def phone_table() -> str:
+    """The phone rows alone (``--phone``)."""
+    port, floor_port, running = servers()
+    try:
+        with sync_playwright() as p:
+            return "\n".join(phone_rows(p, port, floor_port)[1:])
+    finally:
+        for server in running:
+            server.terminate()
+            server.wait(timeout=30)
+
+
+def table() -> str:
+    port, floor_port, running = servers()
+    rows = [f"| page | slider → first figure painted in chromium, ms (median of {CHANGES}) "
+            "| → all its figures painted, ms |", "|---|---:|---:|"]
+    try:
         with sync_playwright() as p, tempfile.TemporaryDirectory() as profile:
             context = p.chromium.launch_persistent_context(
                 profile, executable_path="/usr/bin/chromium", headless=True,
@@ -259,14 +271,13 @@ def table() -> str:
                 ms, kb = first_paint(browser, f"http://127.0.0.1:{port}/{name}?lang=en")
                 rows.append(f"| {name} | {ms:.0f} | {kb:.0f} |")
             ms, kb = first_paint(browser, f"http://127.0.0.1:{floor_port}/trajectories?lang=en")
-            rows.append(f"| (the floor: sidebar, navigation and one small chart, "
-                        f"`bench/floor_chart_app.py`) | {ms:.0f} | {kb:.0f} |")
+            rows.append(f"| {FLOOR} | {ms:.0f} | {kb:.0f} |")
             browser.close()
-            rows += phone_rows(p, port)
+            rows += phone_rows(p, port, floor_port)
     finally:
-        for running in (server, floor):
-            running.terminate()
-            running.wait(timeout=30)
+        for server in running:
+            server.terminate()
+            server.wait(timeout=30)
     return "\n".join(rows)
 
 

@@ -15,8 +15,8 @@ and kept: every later request is served from memory. The best-quality encodings 
 kept on disk by content (``.cache/compressed/``), so a server that starts again (a deploy,
 each browser test's server) serves them at once instead of compressing the same megabytes
 anew. Our bundles get the year-long immutable lifetime Streamlit gives its own. Streamlit's icon font is served cut to the
-icons the app can show (scripts/icon_font.py), and a page's HTML preloads Plotly's basic
-bundle.
+icons the app can show (scripts/icon_font.py), and a page's HTML gets the tags of
+scripts/page_head.py (Plotly started from the head, the server's address given).
 
     .venv/bin/python scripts/serve.py app.py [streamlit run's options]
 """
@@ -34,10 +34,12 @@ import threading
 from pathlib import Path
 
 import brotli
+from streamlit import config
 from streamlit.web import cli
 from streamlit.web.server.starlette import starlette_app
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import page_head  # noqa: E402
 from icon_font import FONT, ROOT, STATIC, cut_path  # noqa: E402
 
 COMPRESSIBLE = (b"text/", b"application/javascript", b"application/json", b"image/svg+xml")
@@ -86,7 +88,7 @@ class PrecompressedStatic:
             await self._icon_font(path, scope, receive, send)
             return
         if scope["type"] == "http" and scope.get("method") == "GET" and _is_page(path):
-            await self._with_preload(scope, receive, send)
+            await self._with_head(scope, receive, send)
             return
         coding = _coding(scope)
         if (scope["type"] != "http" or scope.get("method") != "GET"
@@ -140,18 +142,15 @@ class PrecompressedStatic:
             self.best.put((key, data, file))
         return packed
 
-    async def _with_preload(self, scope, receive, send) -> None:
-        """A page's HTML with Plotly's basic bundle preloaded: the browser fetches it while
-        Streamlit's scripts start, not after the first chart element arrives (the chart
-        element asks for it by the same URL, ui/plot.py)."""
+    async def _with_head(self, scope, receive, send) -> None:
+        """A page's HTML with scripts/page_head.py's tags in its head."""
         start, data = await self._whole(scope, receive)
         named = {k.lower(): v for k, v in start.get("headers", [])}
-        bundle = next(iter(sorted((ROOT / "static").glob("plotly-basic-*.min.js"))), None)
-        if (start.get("status") == 200 and bundle is not None and b"</head>" in data
+        if (start.get("status") == 200 and b"</head>" in data
                 and named.get(b"content-type", b"").startswith(b"text/html")
                 and not named.get(b"content-encoding")):
-            link = f'<link rel="preload" as="script" href="/app/static/{bundle.name}">'
-            data = data.replace(b"</head>", link.encode() + b"</head>", 1)
+            tags = page_head.head(config.get_option("server.baseUrlPath"))
+            data = data.replace(b"</head>", tags.encode() + b"</head>", 1)
             start = _sized(start, data)
         await send(start)
         await send({"type": "http.response.body", "body": data})

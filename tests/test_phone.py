@@ -28,7 +28,8 @@ CHART_TOP = """() => { const chart = document.querySelector('.main-svg');
 
 @pytest.fixture(scope="module")
 def phone():
-    """A function that opens a page in a fresh iPhone 13 context (touch, 390 × 664 CSS px)."""
+    """A function that opens a page in a fresh iPhone 13 context (touch, 390 × 664 CSS px),
+    and lists the URLs it requests in ``asked`` if given."""
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as p:
@@ -36,10 +37,12 @@ def phone():
         device = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
         contexts = []
 
-        def open_phone(url: str):
+        def open_phone(url: str, asked: list[str] | None = None):
             context = browser.new_context(**device)
             contexts.append(context)
             page = context.new_page()
+            if asked is not None:  # every URL the page requests
+                page.on("request", lambda request: asked.append(request.url))
             page.goto(url)
             page.wait_for_selector(".js-plotly-plot", timeout=60_000)
             wait_idle(page)
@@ -128,15 +131,22 @@ def test_the_server_sends_scripts_and_plotly_compressed_when_asked(app_url):
     assert Path(AXE).exists()
 
 
-def test_a_page_preloads_the_plotly_bundle_its_charts_ask_for(app_url):
-    """The browser fetches Plotly's basic bundle with Streamlit's scripts, not after the
-    first chart element arrives: the page's HTML names it, by the URL the charts use."""
+def test_a_page_starts_the_charts_bundle_from_its_head_and_asks_no_wrong_path(app_url, phone):
+    """scripts/page_head.py in chromium: the page's HTML starts Plotly's basic bundle under
+    the URL the charts use, the bundle is fetched once and the chart drawn with it, and the
+    front end asks the server's health at the root only (not first under the page's path)."""
     from figures.raw import RawFigure
     from ui.plot import bundle_url
 
+    wanted = bundle_url(RawFigure())
     html = urllib.request.urlopen(f"{app_url}/kinetostatics").read().decode()
-    wanted = "/" + bundle_url(RawFigure()).lstrip("./")
-    assert f'<link rel="preload" as="script" href="{wanted}">' in html
+    assert f'plotly("{wanted}");' in html
+    asked: list[str] = []
+    page = phone(f"{app_url}/kinetostatics?lang=sr", asked)
+    assert [url for url in asked if url.endswith(wanted)] == [f"{app_url}/{wanted}"]
+    assert page.evaluate("() => Object.keys(window.__mehanizmiPlotly)") == [wanted]
+    health = [url for url in asked if "_stcore/health" in url]
+    assert health and all(url == f"{app_url}/_stcore/health" for url in health), health
 
 
 def test_the_server_sends_the_icon_font_cut_to_the_icons_the_app_can_show(app_url):

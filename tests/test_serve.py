@@ -96,3 +96,19 @@ def test_the_best_encodings_are_stored_by_content_and_a_new_server_serves_them(t
     again = serve.PrecompressedStatic(None, store=tmp_path)
     assert _get(again, b"br")[1] == marked  # read from the store, not compressed anew
     assert _get(again, b"gzip")[1] == stored_gz.read_bytes()
+
+
+def test_a_page_head_names_the_server_s_path_and_starts_the_charts_bundle(tmp_path):
+    """scripts/page_head.py: Streamlit's front end is told the server's path (no 404 probe
+    first), and Plotly's basic bundle is started by the charts' own loader, under the URL
+    the charts ask for (ui/plot.py), so a chart finds it already loading."""
+    from scripts import page_head
+
+    assert [page_head.base_url(p) for p in ("", "/", "mehanizmi", "/a/b/")] == \
+        ["/", "/", "/mehanizmi/", "/a/b/"]
+    (tmp_path / "plotly-basic-9.9.9.min.js").write_text("")
+    tags = page_head.head("mehanizmi", static=tmp_path)
+    assert 'BACKEND_BASE_URL: new URL("/mehanizmi/", location.href).href' in tags
+    assert page_head.LOADER.read_text(encoding="utf-8") in tags
+    assert 'plotly("app/static/plotly-basic-9.9.9.min.js");' in tags
+    assert "plotly(" not in page_head.head("", static=tmp_path / "none")  # no bundle published

@@ -2,25 +2,7 @@
 // same div with Plotly.react, which changes only what changed. (st.plotly_chart names its
 // element after the figure, so every change unmounted the chart and drew it from scratch.)
 
-// plotly.js from the app's static files (ui/plot.py puts them there): each chart names the
-// smallest of Plotly's bundles that draws it, and each bundle is loaded once per page. The
-// bundles load one after another, so the window.Plotly each script sets is read before the
-// next replaces it; a chart keeps the instance that drew it (gd.__Plotly).
-function plotly(src) {
-  const bundles = (window.__mehanizmiPlotly = window.__mehanizmiPlotly || {});
-  if (!bundles[src]) {
-    const previous = window.__mehanizmiLoading || Promise.resolve();
-    bundles[src] = previous.catch(() => {}).then(() => new Promise((resolve, reject) => {
-      const script = document.createElement("script");
-      script.src = src;
-      script.onload = () => resolve(window.Plotly);
-      script.onerror = () => reject(new Error(`plotly.js could not be loaded from ${src}`));
-      document.head.appendChild(script);
-    }));
-    window.__mehanizmiLoading = bundles[src];
-  }
-  return bundles[src];
-}
+// plotly(src), the bundles' loader, is ui/plotly_loader.js (prepended by ui/plot.py)
 
 // four corners, drawn as is (no ascent: Plotly flips only icons that give one)
 const FULLSCREEN_ICON = {

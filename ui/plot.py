@@ -36,8 +36,10 @@ BUNDLES = {"basic": {"scatter", "bar", "pie"},
            "gl3d": {"scatter", "scatter3d", "surface", "mesh3d", "isosurface", "volume", "cone",
                     "streamtube"}}
 
+# the bundles' loader, shared with the page's head (scripts/serve.py starts Plotly from there)
+LOADER = Path(__file__).with_name("plotly_loader.js").read_text(encoding="utf-8")
 _render = st.components.v2.component(
-    "mehanizmi_plot", js=Path(__file__).with_suffix(".js").read_text(encoding="utf-8"),
+    "mehanizmi_plot", js=LOADER + Path(__file__).with_suffix(".js").read_text(encoding="utf-8"),
     isolate_styles=False)  # plotly.js styles the chart from the page's own stylesheet
 
 

@@ -1,0 +1,45 @@
+"""What scripts/serve.py adds to a page's HTML head, so that a fresh visit reaches its first
+chart sooner. In chromium on this machine the browser's main thread is busy for most of the
+time before a fresh visit's first chart (docs/performance.md, "On a phone"). So each tag
+here takes a wait or some script off the way to that chart; none of them saves bytes:
+
+- Plotly's basic bundle is fetched and run from the head. ``ui/plotly_loader.js`` runs here
+  as it runs in a chart, and the chart then finds the bundle's promise under its own URL.
+  Before, the bundle was fetched early (a preload) but it ran only once the first chart
+  element had mounted: 0.2–0.3 s of script on the way to the first chart.
+- Streamlit's front end is told where its server is (``window.__streamlit``). Without it, on
+  a page such as ``/kinetostatics`` the front end first asks
+  ``/kinetostatics/_stcore/health``, gets a 404, and only then tries the root. That is a
+  round trip lost before the page's first run.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+LOADER = ROOT / "ui" / "plotly_loader.js"
+
+
+def basic_bundle(static: Path = ROOT / "static") -> Path | None:
+    """Plotly's basic bundle as ui/plot.py published it, if it did."""
+    return next(iter(sorted(static.glob("plotly-basic-*.min.js"))), None)
+
+
+def base_url(base_path: str) -> str:
+    """The server's path from Streamlit's ``server.baseUrlPath``: "" → "/", "a/b" → "/a/b/"."""
+    return "".join(f"/{part}" for part in base_path.split("/") if part) + "/"
+
+
+def head(base_path: str, static: Path = ROOT / "static") -> str:
+    """The tags for a page's head; ``base_path`` is Streamlit's ``server.baseUrlPath``."""
+    server = (f"window.__streamlit = {{...window.__streamlit, "
+              f"BACKEND_BASE_URL: new URL({json.dumps(base_url(base_path))}, location.href).href}};")
+    bundle = basic_bundle(static)
+    if bundle is None:
+        return f"<script>{server}</script>"
+    src = f"app/static/{bundle.name}"  # as ui/plot.py names it: a page is one level deep
+    return (f'<link rel="preload" as="script" href="{src}">'
+            f"<script>{server}\n(() => {{\n{LOADER.read_text(encoding='utf-8')}"
+            f"plotly({json.dumps(src)});\n}})();</script>")
