@@ -19,7 +19,8 @@ import json
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-LOADER = ROOT / "ui" / "plotly_loader.js"
+# read once: every page's HTML carries it
+LOADER = (ROOT / "ui" / "plotly_loader.js").read_text(encoding="utf-8")
 
 
 def basic_bundle(static: Path = ROOT / "static") -> Path | None:
@@ -41,5 +42,5 @@ def head(base_path: str, static: Path = ROOT / "static") -> str:
         return f"<script>{server}</script>"
     src = f"app/static/{bundle.name}"  # as ui/plot.py names it: a page is one level deep
     return (f'<link rel="preload" as="script" href="{src}">'
-            f"<script>{server}\n(() => {{\n{LOADER.read_text(encoding='utf-8')}"
+            f"<script>{server}\n(() => {{\n{LOADER}"
             f"plotly({json.dumps(src)});\n}})();</script>")

@@ -109,6 +109,8 @@ def test_a_page_head_names_the_server_s_path_and_starts_the_charts_bundle(tmp_pa
     (tmp_path / "plotly-basic-9.9.9.min.js").write_text("")
     tags = page_head.head("mehanizmi", static=tmp_path)
     assert 'BACKEND_BASE_URL: new URL("/mehanizmi/", location.href).href' in tags
-    assert page_head.LOADER.read_text(encoding="utf-8") in tags
+    loader = (page_head.ROOT / "ui" / "plotly_loader.js").read_text(encoding="utf-8")
+    assert page_head.LOADER == loader
+    assert page_head.LOADER in tags
     assert 'plotly("app/static/plotly-basic-9.9.9.min.js");' in tags
     assert "plotly(" not in page_head.head("", static=tmp_path / "none")  # no bundle published
