@@ -35,8 +35,9 @@ def base_url(base_path: str) -> str:
 
 def head(base_path: str, static: Path = ROOT / "static") -> str:
     """The tags for a page's head; ``base_path`` is Streamlit's ``server.baseUrlPath``."""
+    base = json.dumps(base_url(base_path))
     server = (f"window.__streamlit = {{...window.__streamlit, "
-              f"BACKEND_BASE_URL: new URL({json.dumps(base_url(base_path))}, location.href).href}};")
+              f"BACKEND_BASE_URL: new URL({base}, location.href).href}};")
     bundle = basic_bundle(static)
     if bundle is None:
         return f"<script>{server}</script>"

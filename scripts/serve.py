@@ -14,9 +14,10 @@ compressed once (Brotli, or gzip for a client without it), the first time it is 
 and kept: every later request is served from memory. The best-quality encodings are also
 kept on disk by content (``.cache/compressed/``), so a server that starts again (a deploy,
 each browser test's server) serves them at once instead of compressing the same megabytes
-anew. Our bundles get the year-long immutable lifetime Streamlit gives its own. Streamlit's icon font is served cut to the
-icons the app can show (scripts/icon_font.py), and a page's HTML gets the tags of
-scripts/page_head.py (Plotly started from the head, the server's address given).
+anew. Our bundles get the year-long immutable lifetime Streamlit gives its own.
+Streamlit's icon font is served cut to the icons the app can show (scripts/icon_font.py),
+and a page's HTML gets the tags of scripts/page_head.py (Plotly started from the head, the
+server's address given).
 
     .venv/bin/python scripts/serve.py app.py [streamlit run's options]
 """
