@@ -24,6 +24,8 @@ AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 CHART_TOP = """() => { const chart = document.querySelector('.main-svg');
   const main = document.querySelector('[data-testid="stMain"]');
   return chart.getBoundingClientRect().top + (main ? main.scrollTop : 0); }"""
+MAIN_WIDTHS = """() => { const main = document.querySelector('[data-testid="stMain"]');
+  return [main.scrollWidth, main.clientWidth]; }"""
 
 
 @pytest.fixture(scope="module")
@@ -62,6 +64,8 @@ def test_the_first_chart_is_on_the_first_screen_and_nothing_scrolls_sideways(app
     top = page.evaluate(CHART_TOP)
     assert 0 < top < height, f"the first chart starts at {top:.0f} px of {height}"
     assert page.evaluate("() => document.documentElement.scrollWidth <= window.innerWidth")
+    main = page.evaluate(MAIN_WIDTHS)  # Streamlit's main area scrolls on its own
+    assert main[0] <= main[1], f"the page scrolls sideways: {main[0]} px wide in {main[1]}"
     shot = tmp_path / f"phone-{name}-sr.png"
     page.screenshot(path=str(shot))
     keep(shot)

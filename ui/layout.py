@@ -22,6 +22,9 @@ CSS = """
 @media (max-width: 640px) {
   .st-key-page > div > [data-testid="stHorizontalBlock"],
   .st-key-page > [data-testid="stHorizontalBlock"] { flex-direction: column-reverse; }
+  /* a stacked column no wider than the screen: the metrics' rule below sizes a row's columns
+     by their content, and a long scene name in the picker pushed the page 90 px sideways */
+  .st-key-page [data-testid="stColumn"] { max-width: 100%; }
   [class*="st-key-later"], div:has(> [class*="st-key-later"]) { order: 1; }
   [data-testid="stHorizontalBlock"]:has(> [data-testid="stColumn"] > [data-testid="stVerticalBlock"]
     > [data-testid="stElementContainer"] > [data-testid="stMetric"]) { flex-wrap: wrap; }
