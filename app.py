@@ -4,7 +4,7 @@ import streamlit as st
 
 from ui.chapters import BUILDER, CHAPTERS, VARIANTS
 from ui.firstpaint import begin_run, end_run
-from ui.i18n import language_picker, t
+from ui.i18n import current, language_picker, t
 from ui.layout import frame_css
 from ui.present import projector_switch
 
@@ -18,14 +18,27 @@ def home() -> None:
             st.write(t(chapter.summary))
 
 
+def navigation_pages() -> list[st.Page]:
+    """The app's pages, made once per session and language: making them (each resolves its
+    path and checks its icon) took 3 ms, a twentieth of a page's rerun. Kept per session,
+    not shared: ``st.navigation`` marks the page it returns as the one this run may run."""
+    kept = st.session_state.get(PAGES)
+    if kept is None or kept[0] != current():
+        pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
+        pages += [st.Page(c.file, title=t(c.title), icon=c.icon)
+                  for c in (*CHAPTERS, BUILDER, VARIANTS)]
+        pages.append(st.Page("pages/textbook_check.py", title=t("check.title"),
+                             icon=":material/fact_check:"))
+        kept = st.session_state[PAGES] = (current(), pages)
+    return kept[1]
+
+
+PAGES = "navigation_pages"
 st.set_page_config(page_title="Mehanizmi", page_icon=":material/settings:", layout="wide")
 language_picker()
 projector_switch()
 frame_css()
-pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
-pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER, VARIANTS)]
-pages.append(st.Page("pages/textbook_check.py", title=t("check.title"), icon=":material/fact_check:"))
-page = st.navigation(pages)
+page = st.navigation(navigation_pages())
 begin_run(page.url_path)
 try:
     page.run()

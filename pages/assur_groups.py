@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
 import streamlit as st
 
 from figures.assur import structure_figure
@@ -21,11 +20,11 @@ from solvers.diagnostics import (
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
-from ui.cache import BY_REPR, instant
+from ui.cache import BY_REPR, instant, page_cache
 from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
-from ui.export import chart, show_table
+from ui.export import Rows, chart, show_table
 from ui.firstpaint import first_run, waiting
 from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
@@ -39,13 +38,13 @@ page_title("pages/assur_groups.py")
 CYCLE = 360
 
 
-@st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR))
 def cycle(scene: Scene, tol: float) -> Motion:
     """A survey of the driver (``CYCLE`` positions)."""
     return solve(scene, sweep_values(scene, CYCLE), tol=tol)
 
 
-@st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR))
 def turn_frames(scene: Scene, values: tuple[float, ...], tol: float, upto: int, language: str,
                 look_: Look) -> dict[str, str]:
     """The structure drawing at the angles ``values`` (ui.crank.task_turn: every 5° of φ₂
@@ -73,14 +72,14 @@ def counts(scene: Scene) -> None:
     st.latex(latex(rf"W = 3n - 2p_5 - p_4 = 3\cdot{n} - 2\cdot{p5} - 0 = {dof}"))
 
 
-def groups_table(structure) -> pd.DataFrame:
-    return pd.DataFrame([{t("assur.col_group"): g.label(), t("assur.col_class"): g.cls,
-                          t("assur.col_kind"): g.kind, t("assur.col_order"): g.order,
-                          t("assur.col_members"): ", ".join(map(str, g.members))}
-                         for g in structure.groups])
+def groups_table(structure) -> Rows:
+    return [{t("assur.col_group"): g.label(), t("assur.col_class"): g.cls,
+             t("assur.col_kind"): g.kind, t("assur.col_order"): g.order,
+             t("assur.col_members"): ", ".join(map(str, g.members))}
+            for g in structure.groups]
 
 
-def special_table(motion: Motion, index: int) -> pd.DataFrame:
+def special_table(motion: Motion, index: int) -> Rows:
     rows = []
     for name, p in motion.special.items():
         z = complex(p.z[index])
@@ -89,7 +88,7 @@ def special_table(motion: Motion, index: int) -> pd.DataFrame:
             continue
         rows.append({t("assur.col_point"): name, "x [m]": num(z.real, 4), "y [m]": num(z.imag, 4),
                      "v [m/s]": num(abs(p.v[index]), 4), "a [m/s²]": num(abs(p.a[index]), 4)})
-    return pd.DataFrame(rows)
+    return rows
 
 
 def newton_table(scene: Scene, tol: float) -> None:
@@ -106,11 +105,11 @@ def newton_table(scene: Scene, tol: float) -> None:
         if not iterates:
             st.warning(t("assur.iterations_unreachable", group=name))
             continue
-        rows = pd.DataFrame([{"k": k, t("assur.col_residual"): sci(it.residual, 2),
-                              t("assur.col_correction"): sci(it.correction, 2),
-                              **{f"θ{m} [°]": num(round(float(np.degrees(a)), 9) + 0.0, 8)
-                                 for m, a in it.angles.items()}}
-                             for k, it in enumerate(iterates)])
+        rows = [{"k": k, t("assur.col_residual"): sci(it.residual, 2),
+                 t("assur.col_correction"): sci(it.correction, 2),
+                 **{f"θ{m} [°]": num(round(float(np.degrees(a)), 9) + 0.0, 8)
+                    for m, a in it.angles.items()}}
+                for k, it in enumerate(iterates)]
         show_table(rows, f"{scene.id}-newton-{name}.csv", f"csv_iterations_{name}")
         last = iterates[-1].residual
         if last <= tol * 10 or last < 1e-12:
@@ -140,11 +139,11 @@ def about_the_survey(base: Scene, scene: Scene, current: Motion, survey: Motion,
                        residual=sci(report.residual[0], 1)))
             table = measured(base, "newton", lambda done: newton_accuracy(
                 base, sweep_values(base, CYCLE), progress=done), t("app.measuring"))
-            rows = pd.DataFrame([{t("assur.col_tol"): sci(r['tol'], 0),
-                                  t("assur.col_iter"): f"{num(r['iterations_mean'], 2)} / {r['iterations_max']}",
-                                  t("assur.col_ms"): num(r["solve_ms"], 1),
-                                  t("assur.col_error"): sci(r['error_m'], 1)}
-                                 for r in table])
+            rows = [{t("assur.col_tol"): sci(r['tol'], 0),
+                     t("assur.col_iter"): f"{num(r['iterations_mean'], 2)} / {r['iterations_max']}",
+                     t("assur.col_ms"): num(r["solve_ms"], 1),
+                     t("assur.col_error"): sci(r['error_m'], 1)}
+                    for r in table]
             show_table(rows, f"{base.id}-newton-tolerance.csv", "csv_newton")
     if survey.newton and iterations.open:
         with iterations:

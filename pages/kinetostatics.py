@@ -6,7 +6,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import pandas as pd
 import streamlit as st
 
 from figures.kinetostatics import cycle_figure, forces_figure, html, lever_figure
@@ -25,11 +24,11 @@ from solvers.structure import StructureError
 from ui import practice
 from ui.benchmarks import speed_panel
 from ui.book import book_section
-from ui.cache import BY_REPR, instant
+from ui.cache import BY_REPR, instant, page_cache
 from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
-from ui.export import chart, print_button, show_table
+from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import waiting
 from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
@@ -43,14 +42,14 @@ page_title("pages/kinetostatics.py")
 RESOLUTIONS = (12, 72, 360, 3600)
 
 
-@st.cache_resource(max_entries=32, hash_funcs=BY_REPR)
+@page_cache(st.cache_resource(max_entries=32, hash_funcs=BY_REPR))
 def over_cycle(scene: Scene, steps: int, inertia: bool) -> Kinetostatics:
     """``steps`` positions over the cycle. Called with the scene at its preset instant, so
     that moving φ₂ does not analyse the cycle again (only the marker moves)."""
     return analyse(scene, sweep_values(scene, steps), inertia=inertia)
 
 
-@st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR))
 def at_instant(scene: Scene, inertia: bool) -> Kinetostatics:
     """The scene's own instant alone (the same numbers as that position of a survey), from
     its cached kinematics: the page solves that instant first, to explain a failure."""
@@ -100,7 +99,7 @@ def load_inputs(base: Scene, scene: Scene) -> Scene:
                             gravity=(base.gravity or 9.81) if gravity else 0.0)
 
 
-def reactions_table(k: Kinetostatics, i: int) -> pd.DataFrame:
+def reactions_table(k: Kinetostatics, i: int) -> Rows:
     rows = []
     for (p, q), r in sorted(k.reactions.items()):
         if p > q:
@@ -112,10 +111,10 @@ def reactions_table(k: Kinetostatics, i: int) -> pd.DataFrame:
         if r.pair.kind == "prismatic":
             row["h [m]"] = num(float(r.offset[i]), 4)
         rows.append(row)
-    return pd.DataFrame(rows).fillna("—")  # h belongs to sliding pairs only
+    return rows  # h belongs to sliding pairs only: "—" in the others' rows
 
 
-def inertia_table(k: Kinetostatics, i: int) -> pd.DataFrame:
+def inertia_table(k: Kinetostatics, i: int) -> Rows:
     rows = []
     for n, inert in sorted(k.inertia.items()):
         K = None if inert.huygens is None else complex(inert.huygens[i])
@@ -124,7 +123,7 @@ def inertia_table(k: Kinetostatics, i: int) -> pd.DataFrame:
                      "S [m]": f"({num(inert.centre[i].real, 4)}; {num(inert.centre[i].imag, 4)})",
                      "K [m]": "—" if K is None else f"({num(K.real, 4)}; {num(K.imag, 4)})",
                      t("forces.col_huygens_moment"): num(float(inert.huygens_moment[i]), 4)})
-    return pd.DataFrame(rows)
+    return rows
 
 
 def driving_metrics(k: Kinetostatics, i: int) -> None:
@@ -220,7 +219,7 @@ def polygon_figures(k: Kinetostatics, i: int, members: tuple[int, ...], actions:
                                       look())}
 
 
-@st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR))
 def turn_frames(scene: Scene, values: tuple[float, ...], inertia: bool,
                 members: tuple[int, ...] | None, uf: float, language: str,
                 look_: Look) -> dict[str, str]:
@@ -274,15 +273,15 @@ def polygons_tab(k: Kinetostatics, now: int, scene: Scene, values: tuple[float, 
           crank=frames.get("free_body"))
     chart(figures["polygon"], f"{scene.id}-polygon-{choice}", key="fig_polygon",
           crank=frames.get("polygon"))
-    print_button(polygon_svg([(a.name, a.force) for a in actions if a.known],
-                             [(a.name, a.force) for a in actions if not a.known], uf,
-                             t("forces.svg_caption", scene=scene.id, group=choice,
-                               scale=num(uf, 4))),
+    caption = t("forces.svg_caption", scene=scene.id, group=choice, scale=num(uf, 4))
+    print_button(lambda: polygon_svg([(a.name, a.force) for a in actions if a.known],
+                                     [(a.name, a.force) for a in actions if not a.known], uf,
+                                     caption),
                  f"{scene.id}-polygon-{choice}.svg", key="svg_polygon")
-    polygon = pd.DataFrame([{t("forces.col_force"): a.name, "|F| [N]": num(abs(a.force), 4),
-                             t("forces.col_plan"): num(abs(a.force) / uf, 3),
-                             t("forces.col_angle"): num(math.degrees(math.atan2(
-                                 a.force.imag, a.force.real)) % 360, 4)} for a in actions])
+    polygon = [{t("forces.col_force"): a.name, "|F| [N]": num(abs(a.force), 4),
+                t("forces.col_plan"): num(abs(a.force) / uf, 3),
+                t("forces.col_angle"): num(math.degrees(math.atan2(
+                    a.force.imag, a.force.real)) % 360, 4)} for a in actions]
     show_table(polygon, f"{scene.id}-polygon-{choice}.csv", "csv_polygon")
 
 
@@ -325,10 +324,10 @@ def cycle_tab(scene: Scene, base: Scene, steps: int, rotating: bool) -> None:
         inertia = st.session_state["inertia"]
         table = measured(scene, "resolution", lambda done: torque_resolution(scene, RESOLUTIONS, inertia, done),
                          t("app.measuring"), variant=inertia)
-        rows = pd.DataFrame([{t("forces.col_steps"): r["steps"], t("assur.col_ms"): num(r["ms"], 3),
-                              t("forces.col_peak"): num(r["peak"], 6),
-                              t("forces.col_change"): f"{num(r['change'], 3)} %"}
-                             for r in table])
+        rows = [{t("forces.col_steps"): r["steps"], t("assur.col_ms"): num(r["ms"], 3),
+                 t("forces.col_peak"): num(r["peak"], 6),
+                 t("forces.col_change"): f"{num(r['change'], 3)} %"}
+                for r in table]
         show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
 
 
@@ -416,9 +415,9 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
                 chart(lever_figure(k, now, t("forces.lever_title"), t, look()), f"{scene.id}-lever",
                       key="fig_lever")
                 speed = scene.driver.speed or 1.0
-                lever = pd.DataFrame([{t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
-                                       t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
-                                      for f in k.lever if abs(f.force[now]) > 0])
+                lever = [{t("forces.col_force"): f.name, "|F| [N]": num(abs(f.force[now]), 4),
+                          t("forces.col_moment"): num(float(f.moment[now]) * speed, 4)}
+                         for f in k.lever if abs(f.force[now]) > 0]
                 show_table(lever, f"{scene.id}-lever.csv", "csv_lever")
                 book_lever(k, now)
                 method_doc("reduced-mechanism")

@@ -103,9 +103,8 @@ def intercepts() -> None:
     st.caption(t("gears.pole_note", H=num(h, 3)))
     u_omega = u_v / (h * u_l)
     st.markdown(t("gears.u_omega", value=num(u_omega, 4)))
-    show_table(pd.DataFrame([
-        {t("gears.col_member"): m, t("gears.col_intercept"): num(w / u_omega, 4),
-         "ω = x·U_ω [s⁻¹]": num(w, 5)} for m, w in solution.omega.items()]),
+    show_table([{t("gears.col_member"): m, t("gears.col_intercept"): num(w / u_omega, 4),
+                 "ω = x·U_ω [s⁻¹]": num(w, 5)} for m, w in solution.omega.items()],
         f"{train.id}-intercepts.csv", "csv_intercepts")
 
 
@@ -119,7 +118,7 @@ def results() -> None:
                                               member_label=train.members[m].label).strip(),
                      "ω [s⁻¹]": num(w, 5),
                      t("gears.col_book"): "" if book is None else num(book, 5)})
-    show_table(pd.DataFrame(rows), f"{train.id}-omega.csv", "csv")
+    show_table(rows, f"{train.id}-omega.csv", "csv")
     cols = st.columns(3)
     members = list(train.members)
     a = cols[0].selectbox(t("gears.ratio_from"), members, key="ra")
@@ -132,14 +131,14 @@ def results() -> None:
     willis = st.expander(t("gears.willis_title"), key="willis_open", on_change="rerun")
     if willis.open:
         with willis:
-            show_table(pd.DataFrame([{
+            show_table([{
                 t("gears.col_mesh"): f"{w.a}–{w.b}",
                 t("gears.col_carrier"): t("gears.frame") if w.carrier is None else str(w.carrier),
                 t("gears.col_equation"): (f"(ω{w.a} − ω{w.carrier})/(ω{w.b} − ω{w.carrier})"
                                           if w.carrier is not None else f"ω{w.a}/ω{w.b}"),
                 t("gears.col_radii"): num(w.ratio, 5),
                 t("gears.col_solved"): num(w.check(solution.omega), 5)}
-                for w in willis_table(train)]), f"{train.id}-willis.csv", "csv_willis")
+                for w in willis_table(train)], f"{train.id}-willis.csv", "csv_willis")
             st.markdown(f"**{t('gears.stages_title')}**")
             for stage in stages(solution):
                 st.latex(latex(stage.latex(t("gears.from_radii"))))

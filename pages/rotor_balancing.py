@@ -17,7 +17,7 @@ from solvers.balancing import Balance, BalanceError, balance, graphical_error, u
 from ui import practice
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
-from ui.export import chart, print_button, show_table
+from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import waiting
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
@@ -125,13 +125,13 @@ def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> Non
     title = t("rotor.v_title", plane=reference)
     chart(polygon_figure(known, closing, scale, scaled_title(title, scale, "kg·mm²"), legend(),
                          look(), axes=("z", "y")), f"{rotor.id}-V", key="vpoly")
-    print_button(polygon_svg(known, closing, scale, t("rotor.svg_caption", scene=rotor.id,
-                                                       polygon=title, scale=num(scale, 4),
-                                                       unit="kg·mm²")),
+    caption = t("rotor.svg_caption", scene=rotor.id, polygon=title, scale=num(scale, 4),
+                unit="kg·mm²")
+    print_button(lambda: polygon_svg(known, closing, scale, caption),
                  f"{rotor.id}-V.svg", key="vsvg")
 
 
-def results_table(result: Balance) -> pd.DataFrame:
+def results_table(result: Balance) -> Rows:
     """Each correction, exact beside the book's printed value where the preset has one."""
     rows = []
     for plane, f in result.corrections.items():
@@ -147,7 +147,7 @@ def results_table(result: Balance) -> pd.DataFrame:
                          t("rotor.col_book"): "" if book is None else f"{num(book, 5)} {unit_label}",
                          t("rotor.col_diff"): "" if book is None else
                          f"{num(100 * (book - shown) / shown if shown else 0.0, 2)} %"})
-    return pd.DataFrame(rows)
+    return rows
 
 
 with main:
@@ -186,9 +186,10 @@ with main:
             chart(polygon_figure(known, closing, scale_u,
                                  scaled_title(t("rotor.tab_u"), scale_u, "kg·mm"), legend(),
                                  look(), axes=("z", "y")), f"{rotor.id}-U", key="upoly")
-            print_button(polygon_svg(known, closing, scale_u, t(
-                "rotor.svg_caption", scene=rotor.id, polygon=t("rotor.tab_u"),
-                scale=num(scale_u, 4), unit="kg·mm")), f"{rotor.id}-U.svg", key="usvg")
+            caption = t("rotor.svg_caption", scene=rotor.id, polygon=t("rotor.tab_u"),
+                        scale=num(scale_u, 4), unit="kg·mm")
+            print_button(lambda drawn=(known, closing, scale_u, caption): polygon_svg(*drawn),
+                         f"{rotor.id}-U.svg", key="usvg")
     if tab_v.open:
         with tab_v:
             if rotor.mode == "dynamic":
@@ -212,7 +213,7 @@ with main:
                   key="3d")
 
 
-def analytic_steps(rotor: Rotor) -> pd.DataFrame:
+def analytic_steps(rotor: Rotor) -> Rows:
     """Each mass's y, z, its arm L from plane II and the products the moments sum."""
     x_ref = rotor.planes.get("II", 0.0)
 
@@ -223,7 +224,7 @@ def analytic_steps(rotor: Rotor) -> pd.DataFrame:
                 "L [mm]": num(arm, 5), "m·L·y [kg·mm²]": num(m.mass * arm * y, 5),
                 "m·L·z [kg·mm²]": num(m.mass * arm * z, 5), "m·y [kg·mm]": num(m.mass * y, 5),
                 "m·z [kg·mm]": num(m.mass * z, 5)}
-    return pd.DataFrame([row(i, m) for i, m in enumerate(rotor.masses)])
+    return [row(i, m) for i, m in enumerate(rotor.masses)]
 
 
 def drawing_accuracy(precision: float) -> None:
@@ -246,7 +247,7 @@ def drawing_accuracy(precision: float) -> None:
         rows.append({t("rotor.col_plane"): plane, t("rotor.col_graphical"): f"{label}: ± {num(error, 2)}",
                      t("rotor.col_relative"): f"± {num(100 * error / exact, 2)} %",
                      t("rotor.col_angle"): f"± {num(math.degrees(angle_error), 2)}°"})
-    show_table(pd.DataFrame(rows), f"{rotor.id}-graphical-error.csv", "csv_accuracy")
+    show_table(rows, f"{rotor.id}-graphical-error.csv", "csv_accuracy")
     st.caption(t("rotor.accuracy_note", precision=num(precision, 2)))
     answer_box(answers, key="self")
 

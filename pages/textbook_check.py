@@ -10,12 +10,13 @@ from mechanisms.messages import Text, text_of
 from reports.textbook import BookRow, check
 from solvers.diagnostics import Unsolvable
 from ui.book import COUNTED, VERDICTS, book_table, coverage_table, fit_summary, tasks_table
+from ui.cache import page_cache
 from ui.chapters import page_for
 from ui.export import csv_button, dataframe
 from ui.i18n import message, t, title_of
 
 
-@st.cache_data(max_entries=4)
+@page_cache(st.cache_data(max_entries=4))
 def all_checks() -> dict[str, list[BookRow] | Text]:
     """Every preset that quotes the book: its rows, or why it cannot be solved."""
     out: dict[str, list[BookRow] | Text] = {}

@@ -15,6 +15,7 @@ from methods import practice_steps
 from methods.compass import construction as compass_steps
 from methods.scales import plan_scales
 from solvers.diagnostics import dead_zones, format_ranges
+from solvers.kinematics import GroupIssue, Motion
 from solvers.paths import (
     animation_order,
     cycle_time,
@@ -28,7 +29,7 @@ from solvers.paths import (
 )
 from ui import practice
 from ui.benchmarks import speed_panel
-from ui.cache import BY_REPR, cycle
+from ui.cache import BY_REPR, cycle, page_cache
 from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.export import chart, csv_button, show_table
@@ -46,12 +47,12 @@ MAX_FRAMES = 120
 page_title("pages/trajectories.py")
 
 
-@st.cache_data(max_entries=16, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_data(max_entries=16, show_spinner=False, hash_funcs=BY_REPR))
 def _solve_times(base: Scene) -> dict[int, float]:
     return solve_times(base, RESOLUTIONS)
 
 
-@st.cache_data(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_data(max_entries=64, show_spinner=False, hash_funcs=BY_REPR))
 def _path_errors(scene: Scene, points: tuple[str, ...]) -> dict[int, float]:
     return path_errors(scene, list(points), RESOLUTIONS)
 
@@ -64,13 +65,31 @@ def accuracy(base: Scene, scene: Scene, points: tuple[str, ...]) -> list[dict]:
     return [{"positions": n, "solve_ms": times[n], "deviation_m": errors[n]} for n in RESOLUTIONS]
 
 
-@st.cache_resource(max_entries=16, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_resource(max_entries=16, show_spinner=False, hash_funcs=BY_REPR))
 def animation(scene: Scene, steps: int, points: tuple[str, ...], language: str, look_: Look):
     """The animation figure (the costliest to build); shared, never mutated."""
     fine = cycle(scene, steps, order=1)
     order = animation_order(fine.feasible)
     frames = order[::-(-len(order) // MAX_FRAMES)]  # at most MAX_FRAMES frames
-    return animation_figure(fine, frames, list(points), title_of(scene), t, look_)
+    return animation_figure(fine, frames, list(points), title_of(scene), t, look_).freeze()
+
+
+@page_cache(st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR))
+def zones(scene: Scene) -> list[GroupIssue]:
+    """Where the mechanism cannot be assembled, once per geometry (a survey of the cycle)."""
+    return dead_zones(scene)
+
+
+@page_cache(st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR))
+def paths_figure(scene: Scene, smooth: int | None, numbered: tuple[str, ...], language: str,
+                 look_: Look):
+    """The 12-step construction with the paths through it, or ``smooth`` (a resolution)
+    for smooth ones; shared, never mutated. Only the sense of ω₂ changes the drawing, so a
+    scene comes with ω₂ = ±1: a rerun that changes no geometry builds nothing (it built this
+    figure on every rerun, a seventh of the page's time)."""
+    fine = None if smooth is None else cycle(scene, smooth, order=1)
+    return construction_figure(cycle(scene, 12), fine, list(numbered), title_of(scene), t,
+                               look_).freeze()
 
 
 controls, main = page_columns()
@@ -155,7 +174,7 @@ fine = cycle(scene, steps, order=1)
 solve_ms = (time.perf_counter() - started) * 1e3
 
 with main:
-    for zone in dead_zones(scene):
+    for zone in zones(scene.with_(speed=1.0)):
         where = message(format_ranges(scene, zone.ranges))
         st.warning(t("traj.dead_zone", group=zone.group, where=where))
     tabs = [t("traj.tab_paths"), t("traj.tab_animation")] + ([t("traj.tab_field")] if scene.travel else [])
@@ -168,8 +187,9 @@ with main:
             steps_drawn = compass_steps(construction, points)
             fig = compass_figure(scene, steps_drawn, compass_texts(steps_drawn), title_of(scene), t, look())
         else:
-            fig = construction_figure(construction, fine if view == "smooth" else None, numbered,
-                                      title_of(scene), t, look())
+            sense = 1.0 if scene.driver.speed >= 0 else -1.0
+            fig = paths_figure(scene.with_(speed=sense), steps if view == "smooth" else None,
+                               tuple(numbered), current(), look())
         figure_ms = (time.perf_counter() - started) * 1e3
         with tab_paths:
             if view == "compass" and practice.toggle("pr_compass"):
@@ -231,6 +251,15 @@ def readouts() -> None:
                   delta_description=t("traj.limits"))
 
 
+def paths_table(fine: Motion, points: list[str]) -> pd.DataFrame:
+    """The drawn points' paths over the cycle, for the CSV download (made when pressed)."""
+    table = pd.DataFrame({"phi2_deg": np.degrees(fine.at)})
+    for name in points:
+        table[f"{name}_x_m"] = fine.points[name].x
+        table[f"{name}_y_m"] = fine.points[name].y
+    return table
+
+
 def resolution_table() -> None:
     """Under the chart: what each resolution costs and misses, the paths as CSV, the speed panel."""
     st.header(t("traj.accuracy_title"))
@@ -238,13 +267,9 @@ def resolution_table() -> None:
              t("traj.col_deviation"): num(r["deviation_m"] * 1e3, 3),
              t("traj.col_current"): "◀" if r["positions"] == steps else ""}
             for r in accuracy(base, scene, tuple(points))]
-    show_table(pd.DataFrame(rows), f"{scene.id}-resolution.csv", "csv_resolution")
+    show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
     st.caption(t("traj.timing", solve=num(solve_ms, 3), figure=num(figure_ms, 3), steps=steps))
-    table = pd.DataFrame({"phi2_deg": np.degrees(fine.at)})
-    for name in points:
-        table[f"{name}_x_m"] = fine.points[name].x
-        table[f"{name}_y_m"] = fine.points[name].y
-    csv_button(table, f"{scene.id}-paths.csv", key="csv")
+    csv_button(lambda: paths_table(fine, points), f"{scene.id}-paths.csv", key="csv")
     speed_panel("trajectories", scene.id, ("kinematics", "differences", "peers"))
 
 

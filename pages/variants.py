@@ -22,22 +22,23 @@ from exams.variants import (
     task,
 )
 from mechanisms import load_preset, preset_ids
+from ui.cache import page_cache
 from ui.chapters import VARIANTS, page_for
 from ui.export import dataframe
 from ui.i18n import current, message, num, t, title_of
 
 
-@st.cache_resource(max_entries=8, show_spinner=False)
+@page_cache(st.cache_resource(max_entries=8, show_spinner=False))
 def made(settings: Settings, count: int) -> VariantSet:
     return generate(settings, count)
 
 
-@st.cache_resource(max_entries=16, show_spinner=False)
+@page_cache(st.cache_resource(max_entries=16, show_spinner=False))
 def task_of(pid: str) -> Task:
     return task(pid)
 
 
-@st.cache_resource(show_spinner=False)
+@page_cache(st.cache_resource(show_spinner=False))
 def tasks() -> list[str]:
     """The presets that print answers: a variant's key is their [book] quantities."""
     return [pid for pid in preset_ids() if load_preset(pid).book]

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 
-import pandas as pd
 import streamlit as st
 
 from figures.plans import KIND_KEYS, layout_plan, mechanism_figure, plain, plan_figure, plan_svg
@@ -22,11 +21,11 @@ from solvers.structure import StructureError
 from ui import practice
 from ui.benchmarks import speed_panel
 from ui.book import book_section
-from ui.cache import BY_REPR, instant
+from ui.cache import BY_REPR, instant, page_cache
 from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
-from ui.export import chart, print_button, show_table
+from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import first_run, waiting
 from ui.i18n import current, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
@@ -46,7 +45,7 @@ def root_words() -> dict[str, str]:
             "drawn": t("plans.root_drawn"), "other": t("plans.root_other")}
 
 
-@st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR))
 def solved_plans(scene: Scene) -> Plans:
     """Both plans at the scene's instant."""
     return build(instant(scene))
@@ -130,7 +129,7 @@ def plan_figures(scene: Scene, plans: Plans, scales: dict[str, float], index: in
     return out
 
 
-@st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR)
+@page_cache(st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR))
 def turn_frames(scene: Scene, values: tuple[float, ...], scales: dict[str, float], index: int,
                 language: str, look_: Look) -> dict[str, str]:
     """The three figures at the angles ``values`` (ui.crank.task_turn: every 5° of φ₂ and
@@ -147,7 +146,7 @@ def turn_frames(scene: Scene, values: tuple[float, ...], scales: dict[str, float
     return crank_frames(draw, values)
 
 
-def step_table(index: int) -> pd.DataFrame:
+def step_table(index: int) -> Rows:
     """The vectors of one step in both plans: name, kind, direction, plan length, value."""
     rows = []
     for plan, key, unit in ((plans.velocity, "v", "m/s"), (plans.acceleration, "a", "m/s²")):
@@ -157,15 +156,15 @@ def step_table(index: int) -> pd.DataFrame:
                              t("plans.col_direction"): describe(a.rule, scene),
                              t("plans.col_plan"): num(abs(a.value) / scales[key], 3),
                              t("plans.col_value"): f"{num(abs(a.value), 4)} {unit}"})
-    return pd.DataFrame(rows)
+    return rows
 
 
-def member_table() -> pd.DataFrame:
+def member_table() -> Rows:
     """ω and ε of every member, with its sense of rotation."""
-    return pd.DataFrame([{t("plans.col_member"): n, t("plans.col_omega"): num(w, 5),
-                          t("plans.col_epsilon"): num(e, 5),
-                          t("plans.col_sense"): t("plans.ccw" if w > 0 else "plans.cw" if w < 0 else "plans.still")}
-                         for n, (w, e) in sorted(plans.members.items())])
+    return [{t("plans.col_member"): n, t("plans.col_omega"): num(w, 5),
+             t("plans.col_epsilon"): num(e, 5),
+             t("plans.col_sense"): t("plans.ccw" if w > 0 else "plans.cw" if w < 0 else "plans.still")}
+            for n, (w, e) in sorted(plans.members.items())]
 
 
 if tab_plans.open:
@@ -196,7 +195,8 @@ elif tab_plans.open:
                       crank=frames.get(key))
                 if not later:
                     caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
-                    print_button(plan_svg(layout_plan(plan, scales[key]), caption),
+                    print_button(lambda plan=plan, key=key, caption=caption: plan_svg(
+                                     layout_plan(plan, scales[key]), caption),
                                  f"{scene.id}-{plan.quantity}-plan.svg", key=f"svg_{key}")
         if not later:
             show_table(step_table(index), f"{scene.id}-step-{step}.csv", "csv_step")
@@ -233,7 +233,7 @@ if tab_loops.open:
                  t("plans.col_rate"): f"{num(r['rate'], 6)} {units[r['kind']][1]}",
                  t("plans.col_acc"): f"{num(r['acceleration'], 6)} {units[r['kind']][2]}"}
                 for r in solved_values(instant(scene))]
-        show_table(pd.DataFrame(rows), f"{scene.id}-analytic.csv", "csv_analytic")
+        show_table(rows, f"{scene.id}-analytic.csv", "csv_analytic")
         st.success(t("plans.agreement", v=sci(plans.velocity.closure(), 1),
                      a=sci(plans.acceleration.closure(), 1)))
         method_doc("complex-number")
@@ -242,12 +242,12 @@ values = readings(plans, scales, scales["precision_cm"])
 if tab_accuracy.open:
     with tab_accuracy:
         st.write(t("plans.accuracy_intro", precision=num(scales["precision_cm"] * 10, 2)))
-        table = pd.DataFrame([{t("plans.col_vector"): plain(r.symbol),
-                               t("plans.col_value"): f"{num(r.exact, 5)} {r.unit}",
-                               t("plans.col_plan"): "—" if r.plan_cm is None else num(r.plan_cm, 3),
-                               t("plans.col_uncertainty"): f"± {num(r.uncertainty, 2)} {r.unit}",
-                               t("plans.col_relative"): f"{num(100 * r.uncertainty / r.exact, 2)} %"
-                               if r.exact else "—"} for r in values])
+        table = [{t("plans.col_vector"): plain(r.symbol),
+                  t("plans.col_value"): f"{num(r.exact, 5)} {r.unit}",
+                  t("plans.col_plan"): "—" if r.plan_cm is None else num(r.plan_cm, 3),
+                  t("plans.col_uncertainty"): f"± {num(r.uncertainty, 2)} {r.unit}",
+                  t("plans.col_relative"): f"{num(100 * r.uncertainty / r.exact, 2)} %"
+                  if r.exact else "—"} for r in values]
         show_table(table, f"{scene.id}-readings.csv", "csv_readings")
         if scene.book:
             book_section(scene, base)

@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import pandas as pd
+import pyarrow as pa
 import streamlit as st
 
 from figures.raw import RawFigure
@@ -11,11 +15,19 @@ from ui.i18n import current, num, t
 from ui.plot import plot
 
 
-def csv_button(table: pd.DataFrame, filename: str, key: str) -> None:
-    """The table as CSV, written only when the button is pressed (not on every rerun)."""
-    st.download_button(t("export.csv"), lambda: table.to_csv(index=False).encode("utf-8"),
-                       filename, mime="text/csv", key=key, on_click="ignore",
-                       icon=":material/download:")
+Rows = list[dict[str, Any]]  # a table as its rows, each {column: value}
+Table = Rows | pd.DataFrame
+
+
+def csv_button(table: Table | Callable[[], Table], filename: str, key: str) -> None:
+    """The table as CSV, made and written only when the button is pressed (not on every
+    rerun): ``table`` may be the function that makes it."""
+    def data() -> bytes:
+        made = table() if callable(table) else table
+        return pd.DataFrame(made).to_csv(index=False).encode("utf-8")
+
+    st.download_button(t("export.csv"), data, filename, mime="text/csv", key=key,
+                       on_click="ignore", icon=":material/download:")
 
 
 def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
@@ -41,33 +53,54 @@ def _turned(degrees: float | None) -> None:
         st.session_state["at"] = degrees
 
 
-def print_button(svg: str, filename: str, key: str) -> None:
-    """A drawing at true scale, as SVG to print at 100 %."""
-    st.download_button(t("export.print"), svg.encode("utf-8"), filename, mime="image/svg+xml",
-                       key=key, on_click="ignore", icon=":material/print:")
+def print_button(svg: Callable[[], str], filename: str, key: str) -> None:
+    """A drawing at true scale, as SVG to print at 100 %: ``svg`` draws it when the button
+    is pressed (drawing both plans' SVG took 4 ms of every rerun of the plans page)."""
+    st.download_button(t("export.print"), lambda: svg().encode("utf-8"), filename,
+                       mime="image/svg+xml", key=key, on_click="ignore", icon=":material/print:")
 
 
-def show_table(table: pd.DataFrame, filename: str, key: str) -> None:
+def show_table(table: Table, filename: str, key: str) -> None:
     """A table on the page with its CSV download under it."""
     dataframe(table, hide_index=True)
     csv_button(table, filename, key)
 
 
-def dataframe(table: pd.DataFrame, **options) -> None:
-    """``st.dataframe`` in the page's language: on a Serbian page every number is written
-    with a decimal comma, as text aligned right like a number (a pandas Styler would keep
-    the values numbers but costs 7 ms a table on every rerun, ten times this). The CSV
-    download keeps the numbers and their decimal point."""
-    if current().startswith("sr"):
-        numbers = [c for c in table.columns if pd.api.types.is_float_dtype(table[c])]
-        options["column_config"] = {**{c: st.column_config.Column(alignment="right")
-                                       for c in numbers}, **options.get("column_config", {})}
-        table = table.map(_cell)
-    st.dataframe(table, **options)
+def dataframe(table: Table, **options) -> None:
+    """``st.dataframe`` of a table, handed to Streamlit as an Arrow table made column by
+    column from its rows. Streamlit's own conversion of a pandas DataFrame cost 2–3 ms a
+    table on every rerun, a fifth of it building the DataFrame (docs/performance.md); this
+    costs about 0.2 ms.
+
+    In the page's language: on a Serbian page every number is written with a decimal
+    comma, as text aligned right like a number. The CSV download keeps the numbers and
+    their decimal point."""
+    rows = table.to_dict("records") if isinstance(table, pd.DataFrame) else table
+    names = list(table.columns) if isinstance(table, pd.DataFrame) else list(
+        dict.fromkeys(name for row in rows for name in row))
+    serbian = current().startswith("sr")
+    columns = []
+    for name in names:
+        values = [row.get(name) for row in rows]
+        if serbian and values and all(isinstance(v, float) or v is None for v in values):
+            values = [_cell(v) for v in values]
+            options["column_config"] = {name: st.column_config.Column(alignment="right"),
+                                        **options.get("column_config", {})}
+        columns.append(_column(values))
+    st.dataframe(pa.Table.from_arrays(columns, names=[str(n) for n in names]), **options)
 
 
-def _cell(value):
-    """A float as Serbian writes it; anything else as it is."""
-    if isinstance(value, float):
-        return "—" if value != value else num(value, 6)
-    return value
+def _column(values: list) -> pa.Array:
+    """One column: its values as they are when Arrow can hold them in one type (numbers,
+    text), else each as text; a cell a row left out as "—", a NaN as an empty cell."""
+    if None in values and not all(v is None for v in values):
+        values = ["—" if v is None else v for v in values]
+    try:
+        return pa.array(values, from_pandas=True)
+    except (pa.ArrowInvalid, pa.ArrowTypeError):
+        return pa.array([str(v) for v in values])
+
+
+def _cell(value: float | None) -> str:
+    """A float as Serbian writes it; a missing value as "—"."""
+    return "—" if value is None or value != value else num(value, 6)

@@ -21,7 +21,6 @@ from collections.abc import Callable
 from pathlib import Path
 
 import plotly
-import plotly.io as pio
 import streamlit as st
 
 from figures.raw import RawFigure
@@ -113,7 +112,7 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
             f'"first": {json.dumps(first)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
             f'"crank": {control}, "separators": {json.dumps(separators)}, '
-            f'"figure": {pio.to_json(fig, validate=False)}}}')
+            f'"figure": {fig.json()}}}')
     events = ({"on_drag_change": _ignore, "on_click_change": _ignore, "on_joint_change": _ignore}
               if editable else {})
     if first:
