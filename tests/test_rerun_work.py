@@ -1,0 +1,85 @@
+"""What a rerun no longer redoes (issue 38): tables handed to Streamlit as Arrow made from
+their rows, page caches applied once, frozen figures serialised once."""
+
+from __future__ import annotations
+
+import pandas as pd
+import plotly.io as pio
+from streamlit.testing.v1 import AppTest
+
+from figures.linkage import scatter
+from figures.raw import RawFigure
+from ui.cache import page_cache
+
+
+def shown(rows, language: str = "en") -> pd.DataFrame:
+    """``rows`` drawn by ui.export.dataframe on a page in ``language``, read back as shown."""
+    def page(rows, language):
+        import streamlit as st
+
+        from ui.export import dataframe
+        st.session_state["lang"] = language
+        dataframe(rows, hide_index=True)
+
+    at = AppTest.from_function(page, args=(rows, language))
+    at.run()
+    assert not at.exception, [e.message for e in at.exception]
+    return at.dataframe[0].value
+
+
+def test_rows_become_columns_in_order_with_a_dash_where_a_row_leaves_a_cell_out():
+    table = shown([{"F_pq": "F_12", "x [N]": "3.5"},
+                   {"F_pq": "F_23", "x [N]": "1.25", "h [m]": "0.02"}])
+    assert list(table.columns) == ["F_pq", "x [N]", "h [m]"]
+    assert table["h [m]"].tolist() == ["—", "0.02"]
+    assert table["F_pq"].tolist() == ["F_12", "F_23"]
+
+
+def test_numbers_stay_numbers_and_a_mixed_column_is_shown_as_text():
+    table = shown([{"n": 1, "value": 0.5, "mixed": 2.5}, {"n": 2, "value": 1.5, "mixed": "—"}])
+    assert table["n"].tolist() == [1, 2]
+    assert table["value"].tolist() == [0.5, 1.5]
+    assert table["mixed"].tolist() == ["2.5", "—"]
+
+
+def test_a_dataframe_is_shown_as_its_rows_are():
+    frame = pd.DataFrame({"a": [1.0, 2.0], "b": ["x", "y"]})
+    assert shown(frame).equals(shown(frame.to_dict("records")))
+
+
+def test_a_serbian_table_writes_its_numbers_with_a_decimal_comma():
+    table = shown([{"član": 2, "ω [s⁻¹]": 10.5}, {"član": 3, "ω [s⁻¹]": -2.25}], "sr")
+    assert table["ω [s⁻¹]"].tolist() == ["10,5", "-2,25"]
+    assert table["član"].tolist() == [2, 3]  # whole numbers have no decimal mark to change
+
+
+def test_a_page_cache_is_applied_once_per_code_and_anew_for_new_code():
+    applied = []
+
+    def decorator(func):
+        applied.append(func)
+        return lambda *args: ("cached", func(*args))
+
+    def define(offset: int):
+        @page_cache(decorator)
+        def add(x: int) -> int:  # the same code on every call of define, as a page's rerun
+            return x + offset
+        return add
+
+    first, second = define(1), define(2)
+    assert first is second and len(applied) == 1
+    assert first(1) == ("cached", 2)  # the first definition's (a page's constants are the same)
+
+    namespace: dict = {}
+    exec("def add(x):\n    return x - 1", namespace)  # an edited page: new code
+    assert page_cache(decorator)(namespace["add"])(1) == ("cached", 0) and len(applied) == 2
+
+
+def test_a_frozen_figure_keeps_the_json_it_was_frozen_with():
+    fig = RawFigure()
+    fig.add_raw([scatter(x=[0, 1], y=[1, 2], mode="lines", name="path")])
+    assert fig.json() == pio.to_json(fig, validate=False)
+    frozen = fig.freeze().json()
+    assert frozen == pio.to_json(fig, validate=False)
+    fig.add_raw([scatter(x=[2], y=[3], mode="markers", name="later")])  # (a frozen figure is not
+    assert fig.json() == frozen != pio.to_json(fig, validate=False)     # changed: shown as frozen)
