@@ -26,6 +26,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, show_table
 from ui.firstpaint import first_run, waiting
+from ui.fragments import fragment
 from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
@@ -163,57 +164,78 @@ def self_check(scene: Scene, structure, current: Motion) -> list[Quantity]:
                            Quantity(f"v_{name} [m/s]", float(abs(p.v[0])), "m/s")]
     return quantities
 
+
 controls, main = page_columns()
-asked = live()  # a chart's φ₂ control was touched: this run sends the frames
 with controls:
     base = scene_picker(default="zbirka-4.1")
     seed({"at": driver_start(base), "tol": 1e-10, "upto": 99, "back": 5.0},
          st.session_state["scene"])
-    scene = driver_position(base)
+    position = st.container()  # φ₂ (or s): drawn by the fragment below
     tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
                            key="tol", format_func=lambda v: sci(v, 0), bind="query-params")
-    scene_download(scene)
+    download = st.container()
+    answers = st.container()
 
-with main:
-    st.caption(title_of(scene))
-    counts(scene)
+with main:  # the structure, which φ₂ does not change
+    st.caption(title_of(base))
+    counts(base)
     try:
-        structure = decompose(scene)
+        structure = decompose(base)
     except StructureError as exc:
         st.error(t("assur.no_structure", reason=message(exc)))
         st.stop()
     st.markdown(t("assur.formula", formula=structure.formula))
-    try:
-        current, problem = instant(scene, tol), None
-    except (Unsolvable, StructureError) as exc:
-        current, problem = None, exc
-    if problem or not first_run():  # on a fresh visit, after the drawing (ui/firstpaint.py)
-        show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
+    groups_place = st.container()
     groups = len(structure.groups)
     upto = groups
     if groups > 1:
         st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
         upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
-    if problem:
-        st.error(t("plans.unsolvable", reason=message(problem)))
-        st.stop()
-    surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
-    survey = cycle(surveyed, tol)
-    values = task_turn(base)
-    frames = cranks(scene, ("structure",), "structure", values, lambda: turn_frames(
-        surveyed, values, tol, upto, current_language(), look()), asked)
-    chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
-          f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
-    for issue in survey.issues:
-        ranges = message(format_ranges(scene, issue.ranges))
-        key = "assur.open" if issue.problem == "open" else "assur.near_singular"
-        st.warning(t(key, group=issue.group, ranges=ranges))
-    if not waiting():
-        about_the_survey(base, scene, current, survey, tol)
 
 
-if not waiting():
-    with controls:
-        answer_box(self_check(scene, structure, current), key="self")
+@fragment
+def at_the_instant(base: Scene, tol: float, upto: int) -> None:
+    """Everything that depends on φ₂, which moving φ₂ (or the drawing's own φ₂ control)
+    reruns alone: not app.py, the scene picker, the tolerance and the structure above,
+    which rerun the page and this with it. Its places outside are written on every run (a
+    fragment may only write where it wrote in the page's last full run)."""
+    asked = live()  # a chart's φ₂ control was touched: this run sends the frames
+    with position:
+        scene = driver_position(base)
+    with download:
+        scene_download(scene)
+    with answers:
+        answer_slot = st.empty()
+    with groups_place:
+        groups_slot = st.empty()
+    try:
+        current, problem = instant(scene, tol), None
+    except (Unsolvable, StructureError) as exc:
+        current, problem = None, exc
+    if problem or not first_run():  # on a fresh visit, after the drawing (ui/firstpaint.py)
+        with groups_slot.container():
+            show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
     with main:
+        if problem:
+            st.error(t("plans.unsolvable", reason=message(problem)))
+            return
+        surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
+        survey = cycle(surveyed, tol)
+        values = task_turn(base)
+        frames = cranks(scene, ("structure",), "structure", values, lambda: turn_frames(
+            surveyed, values, tol, upto, current_language(), look()), asked)
+        chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
+              f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
+        for issue in survey.issues:
+            ranges = message(format_ranges(scene, issue.ranges))
+            key = "assur.open" if issue.problem == "open" else "assur.near_singular"
+            st.warning(t(key, group=issue.group, ranges=ranges))
+        if waiting():
+            return
+        about_the_survey(base, scene, current, survey, tol)
         speed_panel("assur_groups", base.id, ("newton",))
+    with answer_slot.container():
+        answer_box(self_check(scene, structure, current), key="self")
+
+
+at_the_instant(base, tol, upto)

@@ -30,6 +30,7 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import waiting
+from ui.fragments import fragment
 from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
@@ -343,7 +344,7 @@ with controls:
     answers = st.container()
 
 
-@st.fragment
+@fragment
 def at_the_instant(loaded: Scene, steps: int) -> None:
     """Everything that depends on φ₂, which moving φ₂ reruns alone (not the scene picker and
     the fifteen or so load inputs above, a quarter of the page's rerun): its slider, the

@@ -19,6 +19,7 @@ from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import waiting
+from ui.fragments import fragment
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
 from ui.present import look
@@ -262,7 +263,7 @@ def drawing_accuracy(precision: float) -> None:
                               angle=num(math.degrees(result.corrections[plane].angle), 5)))
 
 
-@st.fragment
+@fragment
 def accuracy() -> None:
     """The precision a student draws to and what it changes (the section under the
     polygons): moving it reruns this alone, not the inputs, the balance and the polygons.

@@ -27,10 +27,11 @@ from ui.crank import crank_frames, cranks, live, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import first_run, waiting
+from ui.fragments import fragment
 from ui.i18n import current, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
-from ui.scenes import driver_inputs, driver_start, scene_download, scene_picker
+from ui.scenes import driver_position, driver_speed, driver_start, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -79,43 +80,6 @@ def scale_inputs() -> dict[str, float]:
     return {"L": scales["L"], "v": scales["v"], "a": scales["a"], "precision_cm": precision / 10}
 
 
-controls, main = page_columns()
-asked = live()  # a chart's φ₂ control was touched: this run sends the frames
-
-with controls:
-    base = scene_picker()
-    seed(defaults(base), st.session_state["scene"])
-    scene = driver_inputs(base)
-    scales = scale_inputs()
-    scene_download(scene)
-
-try:
-    plans = solved_plans(scene)
-except Unsolvable as exc:
-    with main:
-        st.error(t("plans.unsolvable", reason=message(exc)))
-    st.stop()
-except StructureError:  # a class III group without its special point S at this instant
-    with main:
-        group = next(g for g in instant(scene).structure.groups if g.cls == 3)
-        st.info(t("plans.not_drawn", group=group.label()))
-        st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
-    st.stop()
-
-steps = plans.velocity.steps
-with main:
-    st.caption(title_of(scene))
-    if st.session_state.get("step", 0) > len(steps):
-        st.session_state["step"] = len(steps)
-    step = len(steps)
-    if len(steps) > 1:  # a crank alone has one step and nothing to step through
-        step = st.slider(t("plans.step"), 1, len(steps), value=len(steps), key="step",
-                         bind="query-params")
-    tab_plans, tab_loops, tab_accuracy = st.tabs(
-        [t("plans.tab_plans"), t("plans.tab_analytic"), t("plans.tab_accuracy")],
-        key="tab", on_change="rerun")
-
-
 def plan_figures(scene: Scene, plans: Plans, scales: dict[str, float], index: int,
                  motion: Motion | None = None) -> dict[str, RawFigure]:
     """Both plans up to step ``index`` and the mechanism, at the scene's instant."""
@@ -146,7 +110,7 @@ def turn_frames(scene: Scene, values: tuple[float, ...], scales: dict[str, float
     return crank_frames(draw, values)
 
 
-def step_table(index: int) -> Rows:
+def step_table(plans: Plans, scene: Scene, scales: dict[str, float], index: int) -> Rows:
     """The vectors of one step in both plans: name, kind, direction, plan length, value."""
     rows = []
     for plan, key, unit in ((plans.velocity, "v", "m/s"), (plans.acceleration, "a", "m/s²")):
@@ -159,7 +123,7 @@ def step_table(index: int) -> Rows:
     return rows
 
 
-def member_table() -> Rows:
+def member_table(plans: Plans) -> Rows:
     """ω and ε of every member, with its sense of rotation."""
     return [{t("plans.col_member"): n, t("plans.col_omega"): num(w, 5),
              t("plans.col_epsilon"): num(e, 5),
@@ -167,94 +131,160 @@ def member_table() -> Rows:
             for n, (w, e) in sorted(plans.members.items())]
 
 
-if tab_plans.open:
-    with tab_plans:
-        practising = practice.toggle("pr_plans")
-if tab_plans.open and practising:
-    with tab_plans:
-        practice.panel(practice_steps.plans(plans, scales), "pr_plans", t("practice.sheet_plans"))
-elif tab_plans.open:
-    with tab_plans:
-        index = step - 1
-        later = first_run()  # on a fresh visit the charts below come first (ui/firstpaint.py)
-        if not later:
-            st.latex(latex(steps[index].latex))
-            st.latex(latex(plans.acceleration.steps[index].latex))
-            if any(a.kind == "coriolis" for _, side in plans.acceleration.steps[index].sides for a in side):
-                st.caption(t("plans.extension", point=steps[index].target.upper()))
-            if any(g.cls == 3 for g in instant(scene).structure.groups):
-                method_doc("triad-plans")
-        figures = plan_figures(scene, plans, scales, index)
-        values = task_turn(base)
-        frames = cranks(scene, ("v", "a", "mech"), "plans", values, lambda: turn_frames(
-            scene.with_(at=0.0), values, scales, index, current(), look()), asked)
-        left, right = st.columns(2)
-        for column, plan, key in ((left, plans.velocity, "v"), (right, plans.acceleration, "a")):
-            with column:
-                chart(figures[key], f"{scene.id}-{plan.quantity}-plan", key=f"fig_{key}",
-                      crank=frames.get(key))
-                if not later:
-                    caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
-                    print_button(lambda plan=plan, key=key, caption=caption: plan_svg(
-                                     layout_plan(plan, scales[key]), caption),
-                                 f"{scene.id}-{plan.quantity}-plan.svg", key=f"svg_{key}")
-        if not later:
-            show_table(step_table(index), f"{scene.id}-step-{step}.csv", "csv_step")
-            show_table(member_table(), f"{scene.id}-members.csv", "csv_members")
-        chart(figures["mech"], f"{scene.id}-mechanism", key="fig_mech", crank=frames.get("mech"))
+def plans_tab(scene: Scene, base: Scene, plans: Plans, scales: dict[str, float], step: int,
+              asked: bool) -> None:
+    """The step's equations, both plans and the mechanism, the step's and members' tables."""
+    steps = plans.velocity.steps
+    index = step - 1
+    later = first_run()  # on a fresh visit the charts below come first (ui/firstpaint.py)
+    if not later:
+        st.latex(latex(steps[index].latex))
+        st.latex(latex(plans.acceleration.steps[index].latex))
+        if any(a.kind == "coriolis" for _, side in plans.acceleration.steps[index].sides for a in side):
+            st.caption(t("plans.extension", point=steps[index].target.upper()))
+        if any(g.cls == 3 for g in instant(scene).structure.groups):
+            method_doc("triad-plans")
+    figures = plan_figures(scene, plans, scales, index)
+    values = task_turn(base)
+    frames = cranks(scene, ("v", "a", "mech"), "plans", values, lambda: turn_frames(
+        scene.with_(at=0.0), values, scales, index, current(), look()), asked)
+    left, right = st.columns(2)
+    for column, plan, key in ((left, plans.velocity, "v"), (right, plans.acceleration, "a")):
+        with column:
+            chart(figures[key], f"{scene.id}-{plan.quantity}-plan", key=f"fig_{key}",
+                  crank=frames.get(key))
+            if not later:
+                caption = t(SVG_CAPTIONS[key], scene=scene.id, scale=num(scales[key], 4))
+                print_button(lambda plan=plan, key=key, caption=caption: plan_svg(
+                                 layout_plan(plan, scales[key]), caption),
+                             f"{scene.id}-{plan.quantity}-plan.svg", key=f"svg_{key}")
+    if not later:
+        show_table(step_table(plans, scene, scales, index), f"{scene.id}-step-{step}.csv",
+                   "csv_step")
+        show_table(member_table(plans), f"{scene.id}-members.csv", "csv_members")
+    chart(figures["mech"], f"{scene.id}-mechanism", key="fig_mech", crank=frames.get("mech"))
 
-if tab_loops.open:
-    with tab_loops:
-        st.write(t("plans.analytic_intro"))
-        for group in instant(scene).structure.groups:
-            if group.cls == 3:  # no closed form: Newton's method on the Assur groups page
-                st.info(t("plans.triad_loops", group=group.label()))
-                st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
-                continue
-            eq = equations(scene, group)
-            st.markdown(f"**{eq.group} · {eq.kind}** — {t('plans.unknowns')}: "
-                        + ", ".join(f"${u}$" for u in eq.unknowns))
-            st.latex(latex(eq.position))
-            st.caption(t("plans.derivation"))
-            for line in derivation(instant(scene), group, words=root_words()):
+
+def loops_tab(scene: Scene, plans: Plans) -> None:
+    """The complex-number method, group by group, and its values beside the plans'."""
+    st.write(t("plans.analytic_intro"))
+    for group in instant(scene).structure.groups:
+        if group.cls == 3:  # no closed form: Newton's method on the Assur groups page
+            st.info(t("plans.triad_loops", group=group.label()))
+            st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
+            continue
+        eq = equations(scene, group)
+        st.markdown(f"**{eq.group} · {eq.kind}** — {t('plans.unknowns')}: "
+                    + ", ".join(f"${u}$" for u in eq.unknowns))
+        st.latex(latex(eq.position))
+        st.caption(t("plans.derivation"))
+        for line in derivation(instant(scene), group, words=root_words()):
+            st.latex(latex(line))
+        st.latex(latex(r"\text{B:}\ " + eq.velocity))
+        st.latex(latex(r"\text{C:}\ " + eq.acceleration))
+    for name in free_points(scene):
+        chain = contour(scene, name)
+        if chain is not None:
+            st.markdown(t("plans.final_contour", point=name))
+            for line in contour_latex(instant(scene), chain):
                 st.latex(latex(line))
-            st.latex(latex(r"\text{B:}\ " + eq.velocity))
-            st.latex(latex(r"\text{C:}\ " + eq.acceleration))
-        for name in free_points(scene):
-            chain = contour(scene, name)
-            if chain is not None:
-                st.markdown(t("plans.final_contour", point=name))
-                for line in contour_latex(instant(scene), chain):
-                    st.latex(latex(line))
-        units = {"member": ("°", "s⁻¹", "s⁻²"), "slide": ("m", "m/s", "m/s²")}
-        names = {"member": "plans.row_member", "slide": "plans.row_slide"}
-        rows = [{t("plans.col_quantity"): t(names[r["kind"]], name=r["name"]),
-                 t("plans.col_position"): f"{num(r['position'], 6)} {units[r['kind']][0]}",
-                 t("plans.col_rate"): f"{num(r['rate'], 6)} {units[r['kind']][1]}",
-                 t("plans.col_acc"): f"{num(r['acceleration'], 6)} {units[r['kind']][2]}"}
-                for r in solved_values(instant(scene))]
-        show_table(rows, f"{scene.id}-analytic.csv", "csv_analytic")
-        st.success(t("plans.agreement", v=sci(plans.velocity.closure(), 1),
-                     a=sci(plans.acceleration.closure(), 1)))
-        method_doc("complex-number")
+    units = {"member": ("°", "s⁻¹", "s⁻²"), "slide": ("m", "m/s", "m/s²")}
+    names = {"member": "plans.row_member", "slide": "plans.row_slide"}
+    rows = [{t("plans.col_quantity"): t(names[r["kind"]], name=r["name"]),
+             t("plans.col_position"): f"{num(r['position'], 6)} {units[r['kind']][0]}",
+             t("plans.col_rate"): f"{num(r['rate'], 6)} {units[r['kind']][1]}",
+             t("plans.col_acc"): f"{num(r['acceleration'], 6)} {units[r['kind']][2]}"}
+            for r in solved_values(instant(scene))]
+    show_table(rows, f"{scene.id}-analytic.csv", "csv_analytic")
+    st.success(t("plans.agreement", v=sci(plans.velocity.closure(), 1),
+                 a=sci(plans.acceleration.closure(), 1)))
+    method_doc("complex-number")
 
-values = readings(plans, scales, scales["precision_cm"])
-if tab_accuracy.open:
-    with tab_accuracy:
-        st.write(t("plans.accuracy_intro", precision=num(scales["precision_cm"] * 10, 2)))
-        table = [{t("plans.col_vector"): plain(r.symbol),
-                  t("plans.col_value"): f"{num(r.exact, 5)} {r.unit}",
-                  t("plans.col_plan"): "—" if r.plan_cm is None else num(r.plan_cm, 3),
-                  t("plans.col_uncertainty"): f"± {num(r.uncertainty, 2)} {r.unit}",
-                  t("plans.col_relative"): f"{num(100 * r.uncertainty / r.exact, 2)} %"
-                  if r.exact else "—"} for r in values]
-        show_table(table, f"{scene.id}-readings.csv", "csv_readings")
-        if scene.book:
-            book_section(scene, base)
 
-if not waiting():
-    with controls:
-        answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty)
-                    for r in values], key="self")
+def accuracy_tab(scene: Scene, base: Scene, values: list, precision_cm: float) -> None:
+    """What reading each vector off a drawing to the chosen precision misses."""
+    st.write(t("plans.accuracy_intro", precision=num(precision_cm * 10, 2)))
+    table = [{t("plans.col_vector"): plain(r.symbol),
+              t("plans.col_value"): f"{num(r.exact, 5)} {r.unit}",
+              t("plans.col_plan"): "—" if r.plan_cm is None else num(r.plan_cm, 3),
+              t("plans.col_uncertainty"): f"± {num(r.uncertainty, 2)} {r.unit}",
+              t("plans.col_relative"): f"{num(100 * r.uncertainty / r.exact, 2)} %"
+              if r.exact else "—"} for r in values]
+    show_table(table, f"{scene.id}-readings.csv", "csv_readings")
+    if scene.book:
+        book_section(scene, base)
+
+
+controls, main = page_columns()
+with controls:
+    base = scene_picker()
+    seed(defaults(base), st.session_state["scene"])
+    position = st.container()  # φ₂ (or s): drawn by the fragment below
+    driven = driver_speed(base)
+    scales = scale_inputs()
+    download = st.container()
+    answers = st.container()
+
+
+@fragment
+def at_the_instant(driven: Scene, scales: dict[str, float]) -> None:
+    """Everything that depends on φ₂, which moving φ₂ (or the step, or a chart's own φ₂
+    control) reruns alone: not app.py, the scene picker, ω₂ and the scales (a fifth of the
+    page's rerun). Any of those reruns the page, and this with it. A fragment may only write
+    where it wrote in the page's last full run, so the answer box's place is written on
+    every run (ui/firstpaint.py leaves the box out of a first run)."""
+    asked = live()  # a chart's φ₂ control was touched: this run sends the frames
+    with position:
+        scene = driver_position(driven)
+    with download:
+        scene_download(scene)
+    with answers:
+        answer_slot = st.empty()
+    try:
+        plans = solved_plans(scene)
+    except Unsolvable as exc:
+        with main:
+            st.error(t("plans.unsolvable", reason=message(exc)))
+        return
+    except StructureError:  # a class III group without its special point S at this instant
+        with main:
+            group = next(g for g in instant(scene).structure.groups if g.cls == 3)
+            st.info(t("plans.not_drawn", group=group.label()))
+            st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
+        return
+
+    steps = plans.velocity.steps
     with main:
-        speed_panel("velocity_plans", scene.id, ("kinematics", "graphical"))
+        st.caption(title_of(scene))
+        if st.session_state.get("step", 0) > len(steps):
+            st.session_state["step"] = len(steps)
+        step = len(steps)
+        if len(steps) > 1:  # a crank alone has one step and nothing to step through
+            step = st.slider(t("plans.step"), 1, len(steps), value=len(steps), key="step",
+                             bind="query-params")
+        tab_plans, tab_loops, tab_accuracy = st.tabs(
+            [t("plans.tab_plans"), t("plans.tab_analytic"), t("plans.tab_accuracy")],
+            key="tab", on_change="rerun")
+    if tab_plans.open:
+        with tab_plans:
+            if practice.toggle("pr_plans"):
+                practice.panel(practice_steps.plans(plans, scales), "pr_plans",
+                               t("practice.sheet_plans"))
+            else:
+                plans_tab(scene, base, plans, scales, step, asked)
+    if tab_loops.open:
+        with tab_loops:
+            loops_tab(scene, plans)
+    values = readings(plans, scales, scales["precision_cm"])
+    if tab_accuracy.open:
+        with tab_accuracy:
+            accuracy_tab(scene, base, values, scales["precision_cm"])
+    if not waiting():
+        with answer_slot.container():
+            answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty)
+                        for r in values], key="self")
+        with main:
+            speed_panel("velocity_plans", scene.id, ("kinematics", "graphical"))
+
+
+at_the_instant(driven, scales)

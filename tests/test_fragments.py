@@ -1,7 +1,7 @@
-"""Moving φ₂ on the kinetostatics page, or the drawing precision on the rotor page, reruns
-only what depends on it (a fragment): against a real server, through Streamlit's WebSocket
-as a browser speaks it (deploy/client.py). The answers after a fragment's run are this
-φ₂'s; any other control reruns the whole page."""
+"""Moving φ₂ on the kinetostatics, plans or Assur page, or the drawing precision on the rotor
+page, reruns only what depends on it (a fragment): against a real server, through
+Streamlit's WebSocket as a browser speaks it (deploy/client.py). The answers after a
+fragment's run are this φ₂'s; any other control reruns the whole page."""
 
 from __future__ import annotations
 
@@ -69,3 +69,27 @@ def test_the_drawing_precision_on_the_rotor_page_reruns_its_section_alone(stream
         assert run["figures"] == 0  # the polygons are not sent again
     assert speed["whole"] and {"precision", "omega", "xI"} <= speed["drawn"]
     assert speed["figures"] > 0
+
+
+def test_phi2_on_the_plans_page_reruns_the_plans_alone(stream):
+    runs = asyncio.run(_moves(stream, "velocity_plans", "scene=zbirka-2.1",
+                              [("at", 40.0), ("at", 95.0), ("omega", 12.0), ("at", 120.0)]))
+    first, second, speed, after = runs
+    controls = {"omega", "UL", "Uv", "Ua", "prec"}
+    for run in (first, second, after):
+        assert not run["whole"]
+        assert {"at", "step"} <= run["drawn"] and not run["drawn"] & controls
+        assert run["figures"] > 0  # the plans at this φ₂
+    assert speed["whole"] and controls | {"at", "step"} <= speed["drawn"]
+
+
+def test_phi2_on_the_assur_page_reruns_the_drawing_alone_not_the_structure(stream):
+    runs = asyncio.run(_moves(stream, "assur_groups", "scene=zbirka-4.1",
+                              [("at", 310.0), ("at", 330.0), ("upto", 1.0), ("at", 320.0)]))
+    first, second, upto, after = runs
+    for run in (first, second, after):
+        assert not run["whole"] and "at" in run["drawn"] and "upto" not in run["drawn"]
+        assert run["figures"] > 0
+        assert "degrees of freedom W" not in run["metrics"]  # the counts are not sent again
+    assert upto["whole"] and {"at", "upto"} <= upto["drawn"]
+    assert "degrees of freedom W" in upto["metrics"]

@@ -65,6 +65,12 @@ def current() -> str:
     return getattr(_RUN, "language", None) or st.session_state.get("lang") or default_language()
 
 
+def run_language() -> None:
+    """Remember the session's language for the rest of this run (a fragment's run, which
+    does not pass through ``language_picker``)."""
+    _RUN.language = st.session_state.get("lang") or default_language()
+
+
 def default_language() -> str:
     locale = (getattr(st.context, "locale", None) or "").lower()
     if locale.startswith("sr") and "cyrl" in locale:
