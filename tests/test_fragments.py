@@ -84,8 +84,8 @@ def test_phi2_on_the_plans_page_reruns_the_plans_alone(stream):
 
 
 def test_phi2_on_the_assur_page_reruns_the_drawing_alone_not_the_structure(stream):
-    runs = asyncio.run(_moves(stream, "assur_groups", "scene=zbirka-4.1",
-                              [("at", 310.0), ("at", 330.0), ("upto", 1.0), ("at", 320.0)]))
+    runs = asyncio.run(_moves(stream, "assur_groups", "scene=zbirka-2.3",  # two groups
+                              [("at", 40.0), ("at", 95.0), ("upto", 1.0), ("at", 120.0)]))
     first, second, upto, after = runs
     for run in (first, second, after):
         assert not run["whole"] and "at" in run["drawn"] and "upto" not in run["drawn"]
