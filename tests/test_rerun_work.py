@@ -83,3 +83,25 @@ def test_a_frozen_figure_keeps_the_json_it_was_frozen_with():
     assert frozen == pio.to_json(fig, validate=False)
     fig.add_raw([scatter(x=[2], y=[3], mode="markers", name="later")])  # (a frozen figure is not
     assert fig.json() == frozen != pio.to_json(fig, validate=False)     # changed: shown as frozen)
+
+
+def test_no_page_shows_a_bare_expression_so_the_server_compiles_without_magic():
+    """The server turns Streamlit's magic off (.streamlit/config.toml: a page compiled five
+    times faster); a bare expression in a page would then silently show nothing."""
+    import ast
+    import tomllib
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    config = tomllib.loads((root / ".streamlit" / "config.toml").read_text(encoding="utf-8"))
+    assert config["runner"]["magicEnabled"] is False
+    shown = []
+    for path in [root / "app.py", *sorted((root / "pages").glob("*.py"))]:
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            body = getattr(node, "body", None)
+            for i, statement in enumerate(body if isinstance(body, list) else []):
+                docstring = i == 0 and isinstance(getattr(statement, "value", None), ast.Constant)
+                if (isinstance(statement, ast.Expr) and not docstring
+                        and not isinstance(statement.value, (ast.Call, ast.Await))):
+                    shown.append(f"{path.name}:{statement.lineno}")
+    assert not shown
