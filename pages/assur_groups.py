@@ -22,16 +22,16 @@ from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, instant, page_cache
 from ui.chapters import page_title
-from ui.crank import crank_frames, cranks, live, task_turn
+from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, show_table
 from ui.firstpaint import first_run, waiting
-from ui.fragments import fragment
+from ui.fragments import Places, at_position, fragment
 from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
-from ui.scenes import driver_position, driver_start, scene_download, scene_picker
+from ui.scenes import driver_start, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -199,13 +199,7 @@ def at_the_instant(base: Scene, tol: float, upto: int) -> None:
     reruns alone: not app.py, the scene picker, the tolerance and the structure above,
     which rerun the page and this with it. Its places outside are written on every run (a
     fragment may only write where it wrote in the page's last full run)."""
-    asked = live()  # a chart's φ₂ control was touched: this run sends the frames
-    with position:
-        scene = driver_position(base)
-    with download:
-        scene_download(scene)
-    with answers:
-        answer_slot = st.empty()
+    scene, asked, answer_slot = at_position(Places(position, download, answers), base)
     with groups_place:
         groups_slot = st.empty()
     try:

@@ -26,16 +26,16 @@ from ui.benchmarks import speed_panel
 from ui.book import book_section
 from ui.cache import BY_REPR, instant, page_cache
 from ui.chapters import page_title
-from ui.crank import crank_frames, cranks, live, task_turn
+from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import waiting
-from ui.fragments import fragment
+from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
 from ui.progress import measured
-from ui.scenes import driver_position, driver_speed, driver_start, scene_download, scene_picker
+from ui.scenes import driver_speed, driver_start, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -350,13 +350,7 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
     the fifteen or so load inputs above, a quarter of the page's rerun): its slider, the
     charts, tables and answers at that instant, the cycle's tab (its marker). A load, ω₂ or
     the scene rerun the page, and this with it."""
-    asked = live()  # a chart's φ₂ control was touched: this run sends the frames
-    with position:
-        scene = driver_position(loaded)
-    with download:
-        scene_download(scene)
-    with answers:  # (a fragment may only write where it wrote in the last full run: every run)
-        answer_slot = st.empty()
+    scene, asked, answer_slot = at_position(Places(position, download, answers), loaded)
 
     with main:
         st.caption(title_of(scene))

@@ -23,15 +23,15 @@ from ui.benchmarks import speed_panel
 from ui.book import book_section
 from ui.cache import BY_REPR, instant, page_cache
 from ui.chapters import page_title
-from ui.crank import crank_frames, cranks, live, task_turn
+from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import first_run, waiting
-from ui.fragments import fragment
+from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
 from ui.present import look
-from ui.scenes import driver_position, driver_speed, driver_start, scene_download, scene_picker
+from ui.scenes import driver_speed, driver_start, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
@@ -233,13 +233,7 @@ def at_the_instant(driven: Scene, scales: dict[str, float]) -> None:
     page's rerun). Any of those reruns the page, and this with it. A fragment may only write
     where it wrote in the page's last full run, so the answer box's place is written on
     every run (ui/firstpaint.py leaves the box out of a first run)."""
-    asked = live()  # a chart's φ₂ control was touched: this run sends the frames
-    with position:
-        scene = driver_position(driven)
-    with download:
-        scene_download(scene)
-    with answers:
-        answer_slot = st.empty()
+    scene, asked, answer_slot = at_position(Places(position, download, answers), driven)
     try:
         plans = solved_plans(scene)
     except Unsolvable as exc:

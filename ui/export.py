@@ -14,7 +14,6 @@ from ui.crank import LIVE, Crank
 from ui.i18n import current, num, t
 from ui.plot import plot
 
-
 Rows = list[dict[str, Any]]  # a table as its rows, each {column: value}
 Table = Rows | pd.DataFrame
 

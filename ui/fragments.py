@@ -4,11 +4,15 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Callable
-from typing import TypeVar
+from typing import NamedTuple, TypeVar
 
 import streamlit as st
+from streamlit.delta_generator import DeltaGenerator
 
+from mechanisms.schema import Scene
+from ui.crank import live
 from ui.i18n import run_language
+from ui.scenes import driver_position, scene_download
 
 F = TypeVar("F", bound=Callable)
 
@@ -24,3 +28,27 @@ def fragment(func: F) -> F:
         return func(*args, **kwargs)
 
     return st.fragment(run)  # type: ignore[return-value]
+
+
+class Places(NamedTuple):
+    """Where a φ₂ fragment writes in the controls column, made by the page's full run: the
+    position slider's place (above the page's other controls), the scene download's and the
+    answer box's (under them)."""
+    position: DeltaGenerator
+    download: DeltaGenerator
+    answers: DeltaGenerator
+
+
+def at_position(places: Places, base: Scene) -> tuple[Scene, bool, DeltaGenerator]:
+    """How every φ₂ fragment starts: the φ₂ (or s) slider and the scene there, its download,
+    whether a chart's own φ₂ control asked for the frames (``ui.crank.live``), and the answer
+    box's place. Each place is written on every run: a fragment may only write where it
+    wrote in the page's last full run (and a first run leaves the box out)."""
+    asked = live()
+    with places.position:
+        scene = driver_position(base)
+    with places.download:
+        scene_download(scene)
+    with places.answers:
+        answer = st.empty()
+    return scene, asked, answer
