@@ -7,7 +7,7 @@ import pandas as pd
 import streamlit as st
 
 from figures.builder import builder_figure
-from mechanisms import SceneError, preset_ids
+from mechanisms import SceneError
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
 from mechanisms.messages import text_of
@@ -28,9 +28,9 @@ from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
 from ui.export import chart
 from ui.firstpaint import waiting
-from ui.i18n import latex, message, t, title_of
+from ui.i18n import current, latex, message, t, title_of
 from ui.present import look
-from ui.scenes import read_upload, scene_download
+from ui.scenes import preset_titles, read_upload, scene_download
 
 LINKAGE_PAGES = [c for c in CHAPTERS if c.file in (
     "pages/trajectories.py", "pages/velocity_plans.py", "pages/assur_groups.py",
@@ -136,13 +136,12 @@ def driver_inputs(values: dict) -> dict:
 
 
 def start_controls() -> None:
-    options = [f"template:{n}" for n in template_ids()] + [f"preset:{p}" for p in preset_ids("linkage")]
-
-    def label(option: str) -> str:
-        kind, name = option.split(":", 1)
-        if kind == "template":
-            return t("build.template", name=title_of(builder.template_scene(name)))
-        return t("build.preset", name=f"{name} — {title_of(preset(name))}")
+    # the labels made once a run from the titles kept per language (asking each preset's
+    # cached scene for its title, fifty times a run, was an eighth of the page's rerun)
+    titles = preset_titles("linkage", current())
+    labels = {f"template:{n}": t("build.template", name=title_of(builder.template_scene(n)))
+              for n in template_ids()}
+    labels.update({f"preset:{p}": t("build.preset", name=title) for p, title in titles.items()})
 
     def begin() -> None:
         kind, name = st.session_state["build_start"].split(":", 1)
@@ -153,7 +152,7 @@ def start_controls() -> None:
             builder.start_from(preset(name))
 
     left, right = st.columns([3, 1], vertical_alignment="bottom")
-    left.selectbox(t("build.start_from"), options, format_func=label, key="build_start")
+    left.selectbox(t("build.start_from"), list(labels), format_func=labels.get, key="build_start")
     right.button(t("build.start"), on_click=begin, icon=":material/restart_alt:", width="stretch")
     with st.expander(t("build.upload_title")):
         st.file_uploader(t("scene.upload"), type=["toml"], key="build_upload", on_change=upload)

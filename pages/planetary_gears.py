@@ -17,6 +17,7 @@ from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.export import chart, show_table
 from ui.firstpaint import waiting
+from ui.fragments import fragment
 from ui.i18n import latex, message, num, t
 from ui.layout import page_columns
 from ui.present import look
@@ -43,6 +44,18 @@ def defaults(base: GearTrain) -> dict[str, object]:
     return values
 
 
+def scale_inputs() -> tuple[float, float, float]:
+    """U_L, U_v and the pole distance, in their place among the controls (drawn on every
+    run, also one the train stops: Streamlit forgets a widget a run leaves out)."""
+    with scales_place:
+        return (st.number_input(t("gears.scale_length"), min_value=1e-6, key="UL",
+                                format="%.4g", bind="query-params"),
+                st.number_input(t("gears.scale_velocity"), min_value=1e-6, key="Uv",
+                                format="%.4g", bind="query-params"),
+                st.number_input(t("gears.pole_distance"), min_value=0.1, key="H",
+                                format="%.3g", bind="query-params"))
+
+
 def meshes_table(base: GearTrain) -> pd.DataFrame:
     return pd.DataFrame([{"a": m.members[0], "b": m.members[1], "R_a [m]": m.radii[0],
                           "R_b [m]": m.radii[1], "ring": m.internal or 0} for m in base.meshes])
@@ -62,13 +75,7 @@ with controls:
             v = st.number_input(t("gears.input_velocity", member=inp.member, radius=num(inp.radius)),
                                 key=f"in{inp.member}", format="%.4g", bind="query-params")
             inputs.append(Input(inp.member, v / inp.radius, v, inp.radius))
-    u_l = st.number_input(t("gears.scale_length"), min_value=1e-6, key="UL", format="%.4g",
-                          bind="query-params")
-    u_v = st.number_input(t("gears.scale_velocity"), min_value=1e-6, key="Uv", format="%.4g",
-                          bind="query-params")
-    h = st.number_input(t("gears.pole_distance"), min_value=0.1, key="H", format="%.3g",
-                        bind="query-params")
-    pole = h * u_l  # the pole's distance below the axis, in metres of the drawing's scale
+    scales_place = st.container()  # U_L, U_v and the pole distance: drawn by the fragment below
 
 with main:
     with st.container(key="later_meshes"):  # on a phone, after the charts (ui/layout.py)
@@ -88,6 +95,7 @@ with main:
         solution = solve_train(train)
     except TrainError as exc:
         st.error(message(exc))
+        scale_inputs()
         st.stop()
     st.caption(t("gears.dof", dof=solution.dof, inputs=len(train.inputs)))
     if solution.status == "solved" and solution.message:
@@ -95,10 +103,11 @@ with main:
     if solution.status != "solved":
         st.error(message(solution.message))
         chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
+        scale_inputs()
         st.stop()
 
 
-def intercepts() -> None:
+def intercepts(u_l: float, u_v: float, h: float) -> None:
     """Under the velocity diagram: its pole distance, U_ω and each member's intercept."""
     st.caption(t("gears.pole_note", H=num(h, 3)))
     u_omega = u_v / (h * u_l)
@@ -167,12 +176,25 @@ with main:
     if tab_train.open:
         with tab_train:
             chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
+
+
+@fragment
+def velocity_diagram() -> None:
+    """The drawing's scales and the velocity diagram they draw (with its intercepts), which
+    a scale reruns alone: not app.py, the scene, the inputs, the meshes' table, the
+    solution, the schematic and the results. Any of those reruns the page, and this with
+    it. The scales are drawn on every run (Streamlit forgets a widget a run leaves out)."""
+    u_l, u_v, h = scale_inputs()
     if tab_v.open:
         with tab_v:
+            pole = h * u_l  # the pole's distance below the axis, in metres of the drawing's scale
             chart(velocity_figure(solution, pole, t("gears.velocity_diagram"), t, look()),
                   f"{train.id}-velocities", key="velocities")
             if not waiting():
-                intercepts()
+                intercepts(u_l, u_v, h)
+
+
+velocity_diagram()
 
 if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
     with main:

@@ -1,7 +1,9 @@
-"""Moving φ₂ on the kinetostatics, plans or Assur page, or the drawing precision on the rotor
-page, reruns only what depends on it (a fragment): against a real server, through
-Streamlit's WebSocket as a browser speaks it (deploy/client.py). The answers after a
-fragment's run are this φ₂'s; any other control reruns the whole page."""
+"""Moving φ₂ on the kinetostatics, plans or Assur page, the drawing precision on the rotor
+page or a drawing scale on the gear page reruns only what depends on it (a fragment):
+against a real server, through Streamlit's WebSocket as a browser speaks it
+(deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
+reruns the whole page. A fragment's run that a first chart's paint started runs the whole
+page instead (what the first run left out may sit outside the fragment)."""
 
 from __future__ import annotations
 
@@ -10,8 +12,11 @@ import asyncio
 import pytest
 import websockets
 
+from streamlit.testing.v1 import AppTest
+
 from deploy.client import Report, Session, free_port, start_server, wait_ready
 from deploy.loadtest import check
+from ui.firstpaint import PAINTED
 
 LOADS = {"omega", "m2", "rho2", "steps"}  # some of the kinetostatics page's controls above
 
@@ -93,3 +98,39 @@ def test_phi2_on_the_assur_page_reruns_the_drawing_alone_not_the_structure(strea
         assert "degrees of freedom W" not in run["metrics"]  # the counts are not sent again
     assert upto["whole"] and {"at", "upto"} <= upto["drawn"]
     assert "degrees of freedom W" in upto["metrics"]
+
+
+def test_a_drawing_scale_on_the_gear_page_reruns_the_scales_and_diagram_alone(stream):
+    runs = asyncio.run(_moves(stream, "planetary_gears", "scene=zbirka-6.8",
+                              [("H", 3.0), ("UL", 0.02), ("in5", 50.0), ("H", 2.5)]))
+    pole, scale, given, again = runs
+    for run in (pole, scale, again):
+        assert not run["whole"] and run["drawn"] == {"UL", "Uv", "H"}
+        assert run["figures"] == 0  # the schematic (the open tab) is not sent again
+    assert given["whole"] and {"UL", "Uv", "H", "in5"} <= given["drawn"]
+
+
+def _counting_page():
+    import streamlit as st
+
+    from ui.fragments import fragment
+
+    st.session_state["page_runs"] = st.session_state.get("page_runs", 0) + 1
+
+    @fragment
+    def part():
+        st.session_state["part_runs"] = st.session_state.get("part_runs", 0) + 1
+        st.write("part")
+
+    part()
+
+
+@pytest.mark.parametrize("painted, page_runs", [(False, 1), (True, 2)])
+def test_a_fragment_run_started_by_a_paint_becomes_the_pages_run(painted, page_runs):
+    at = AppTest.from_function(_counting_page)
+    if painted:
+        at.session_state[PAINTED] = True  # (ui.firstpaint.painted, the chart's trigger)
+    at.run()
+    assert not at.exception
+    assert at.session_state["page_runs"] == page_runs and at.session_state["part_runs"] == 1
+    assert PAINTED not in at.session_state

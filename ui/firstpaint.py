@@ -12,7 +12,9 @@ metrics, equations, downloads, the answer and speed panels. Widgets are never le
 (Streamlit forgets a widget a run does not draw). The first chart drawn in the browser
 reports its paint (``ui/plot.js``, trigger "painted"), and the rerun that starts sends the
 whole page. Any later run of the page is whole anyway, so a client that draws no charts
-(a test, the load test) gets the whole page from its second run on.
+(a test, the load test) gets the whole page from its second run on. A chart drawn inside a
+fragment starts a fragment's run with its paint: that run becomes the page's
+(``ui.fragments.fragment``), so what the page left out outside the fragment comes too.
 """
 
 from __future__ import annotations
@@ -22,17 +24,31 @@ import streamlit as st
 PAGE = "first_paint_page"  # the page this run draws (its URL path)
 SEEN = "first_paint_seen"  # the pages that have finished a run in this session
 CHARTED = "first_paint_charted"  # this run has sent a chart
+PAINTED = "first_paint_painted"  # a chart reported its paint: the run it starts is owed whole
 
 
 def begin_run(page: str) -> None:
     """Called by app.py before page ``page`` (its URL path) runs."""
     st.session_state[PAGE] = page
     st.session_state[CHARTED] = False
+    st.session_state.pop(PAINTED, None)  # a whole run pays what a paint asked for
 
 
 def end_run() -> None:
     """Called by app.py after the page ran (or stopped)."""
     st.session_state[SEEN] = st.session_state.get(SEEN, frozenset()) | {st.session_state[PAGE]}
+
+
+def painted() -> None:
+    """A first run's chart was painted (ui/plot.py's trigger): the run that follows must
+    send the whole page."""
+    st.session_state[PAINTED] = True
+
+
+def whole_run_owed() -> bool:
+    """Asked as a fragment's run starts: a chart's paint started it, so the page must run
+    whole instead (once)."""
+    return bool(st.session_state.pop(PAINTED, False))
 
 
 def first_run() -> bool:

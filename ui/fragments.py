@@ -11,6 +11,7 @@ from streamlit.delta_generator import DeltaGenerator
 
 from mechanisms.schema import Scene
 from ui.crank import live
+from ui.firstpaint import whole_run_owed
 from ui.i18n import run_language
 from ui.scenes import driver_position, scene_download
 
@@ -21,9 +22,14 @@ def fragment(func: F) -> F:
     """``func`` as a fragment whose runs know the page's language. A fragment's run skips
     app.py, where ``language_picker`` reads the language once per run; without it each of
     the hundred or so ``t()`` of a run read the session instead (a fifth of a fragment run
-    on the plans page, measured with py-spy)."""
+    on the plans page, measured with py-spy).
+
+    A run that a first chart's paint started becomes the page's run: what a page's first
+    run leaves out may sit outside the fragment (ui/firstpaint.py)."""
     @functools.wraps(func)
     def run(*args, **kwargs):
+        if whole_run_owed():
+            st.rerun(scope="app")
         run_language()
         return func(*args, **kwargs)
 

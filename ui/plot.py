@@ -25,7 +25,7 @@ import streamlit as st
 
 from figures.raw import RawFigure
 from ui.crank import Crank
-from ui.firstpaint import chart_sent
+from ui.firstpaint import chart_sent, painted
 
 ROOT = Path(__file__).resolve().parents[1]
 STATIC = ROOT / "static"
@@ -116,7 +116,7 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     events = ({"on_drag_change": _ignore, "on_click_change": _ignore, "on_joint_change": _ignore}
               if editable else {})
     if first:
-        events["on_painted_change"] = _ignore  # the rerun it starts is what it is for
+        events["on_painted_change"] = painted  # the rerun it starts is what it is for
     if on_crank is not None:
         events["on_at_change"] = lambda: on_crank(float(st.session_state[key]["at"]))
         events["on_frames_change"] = lambda: on_crank(None)
