@@ -11,7 +11,6 @@ import asyncio
 
 import pytest
 import websockets
-
 from streamlit.testing.v1 import AppTest
 
 from deploy.client import Report, Session, free_port, start_server, wait_ready
