@@ -34,6 +34,7 @@ from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.export import chart, csv_button, show_table
 from ui.firstpaint import waiting
+from ui.fragments import fragment
 from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
 from ui.present import look
@@ -148,87 +149,53 @@ def length_sliders(base: Scene) -> dict[int, float]:
     return out
 
 
-with controls:
-    base = scene_picker()
-    seed(defaults(base), st.session_state["scene"])
-    steps = st.select_slider(t("traj.resolution"), RESOLUTIONS, value=360, key="res",
-                             bind="query-params")
-    views = {"steps": "traj.view_steps", "smooth": "traj.view_smooth", "compass": "traj.view_compass"}
-    view = url_choice(st.radio, t("traj.view"), list(views), "view",
-                      format_func=lambda v: t(views[v]), horizontal=True)
-    movable = [p for p in base.point_names if p not in base.frame]
-    points = st.multiselect(t("traj.points"), movable, key="points",
-                            bind="query-params") or movable[-1:]
-    if base.travel:
-        scene = base.with_(travel=travel_sliders(base.travel))
+def paths_tab(scene: Scene, construction: Motion, fine: Motion, steps: int, view: str,
+              points: list[str]) -> float:
+    """The 12 positions and the paths (or the compass construction, or practising it);
+    the ms it took to build the figure."""
+    started = time.perf_counter()
+    numbered = list(dict.fromkeys([crank_pin(scene), *points]))
+    if view == "compass":
+        steps_drawn = compass_steps(construction, points)
+        fig = compass_figure(scene, steps_drawn, compass_texts(steps_drawn), title_of(scene), t,
+                             look())
     else:
-        omega = st.slider(t("traj.omega"), -50.0, 50.0, step=0.5, key="omega", bind="query-params")
-        scene = base.with_(speed=omega)
-    with st.expander(t("traj.lengths")):
-        scene = scene.with_(lengths=length_sliders(base))
-    scene_download(scene)
-
-started = time.perf_counter()
-construction = cycle(scene, 12)
-fine = cycle(scene, steps, order=1)
-solve_ms = (time.perf_counter() - started) * 1e3
-
-with main:
-    for zone in zones(scene.with_(speed=1.0)):
-        where = message(format_ranges(scene, zone.ranges))
-        st.warning(t("traj.dead_zone", group=zone.group, where=where))
-    tabs = [t("traj.tab_paths"), t("traj.tab_animation")] + ([t("traj.tab_field")] if scene.travel else [])
-    tab_paths, tab_anim, *tab_field = st.tabs(tabs, key="tab", on_change="rerun")
-    figure_ms = 0.0
-    if tab_paths.open:
-        started = time.perf_counter()
-        numbered = list(dict.fromkeys([crank_pin(scene), *points]))
-        if view == "compass":
-            steps_drawn = compass_steps(construction, points)
-            fig = compass_figure(scene, steps_drawn, compass_texts(steps_drawn), title_of(scene), t, look())
-        else:
-            sense = 1.0 if scene.driver.speed >= 0 else -1.0
-            fig = paths_figure(scene.with_(speed=sense), steps if view == "smooth" else None,
-                               tuple(numbered), current(), look())
-        figure_ms = (time.perf_counter() - started) * 1e3
-        with tab_paths:
-            if view == "compass" and practice.toggle("pr_compass"):
-                practice.panel(practice_steps.compass(construction,
-                                                      plan_scales(scene, None)["L"]),
-                               "pr_compass", t("practice.sheet_compass"))
-            else:
-                chart(fig, f"{scene.id}-paths", key="paths")
-            if view == "compass":
-                method_doc("compass")
-    if tab_anim.open:
-        with tab_anim:
-            if not fine.feasible.all():
-                st.info(t("traj.rocking"))
-            chart(animation(scene, steps, tuple(points), current(), look()),
-                  f"{scene.id}-animation", key="animation")
-    if tab_field and tab_field[0].open:
-        with tab_field[0]:
-            cycles = st.slider(t("traj.cycles"), 1, 6, 3, key="cycles", bind="query-params")
-            point = points[-1]
-            times, field = field_path(fine, scene.travel, point, cycles)
-            chart(field_figure(times, field, fine.points[point].z, point, steps,
-                               t("traj.field_title", point=point), t, look()),
-                  f"{scene.id}-field", key="field")
-            tr = scene.travel
-            loops, slowest = loops_backward(fine, tr, point)
-            cols = st.columns(3)
-            cols[0].metric(t("traj.omega_t"), f"{num(tr.wheel_omega)} s⁻¹")
-            cols[1].metric(t("traj.omega_b"), f"{num(tr.crank_omega)} s⁻¹")
-            cols[2].metric(t("traj.cycle_time"), f"{num(tr.cycle_time)} s")
-            cols = st.columns(3)
-            cols[0].metric(t("traj.step_time"), f"{num(tr.step_time())} s")
-            cols[1].metric(t("traj.step_distance"), f"{num(tr.step_distance())} m")
-            cols[2].metric(t("traj.travel_per_cycle"), f"{num(tr.speed * tr.cycle_time)} m")
-            st.write(t("traj.loops_yes" if loops else "traj.loops_no", point=point,
-                       speed=num(slowest, 3)))
+        sense = 1.0 if scene.driver.speed >= 0 else -1.0
+        fig = paths_figure(scene.with_(speed=sense), steps if view == "smooth" else None,
+                           tuple(numbered), current(), look())
+    figure_ms = (time.perf_counter() - started) * 1e3
+    if view == "compass" and practice.toggle("pr_compass"):
+        practice.panel(practice_steps.compass(construction, plan_scales(scene, None)["L"]),
+                       "pr_compass", t("practice.sheet_compass"))
+    else:
+        chart(fig, f"{scene.id}-paths", key="paths")
+    if view == "compass":
+        method_doc("compass")
+    return figure_ms
 
 
-def readouts() -> None:
+def field_tab(scene: Scene, fine: Motion, steps: int, point: str) -> None:
+    """The tine's path in the field (the linkage and the travel), and the drive's figures."""
+    cycles = st.slider(t("traj.cycles"), 1, 6, 3, key="cycles", bind="query-params")
+    times, field = field_path(fine, scene.travel, point, cycles)
+    chart(field_figure(times, field, fine.points[point].z, point, steps,
+                       t("traj.field_title", point=point), t, look()),
+          f"{scene.id}-field", key="field")
+    tr = scene.travel
+    loops, slowest = loops_backward(fine, tr, point)
+    cols = st.columns(3)
+    cols[0].metric(t("traj.omega_t"), f"{num(tr.wheel_omega)} s⁻¹")
+    cols[1].metric(t("traj.omega_b"), f"{num(tr.crank_omega)} s⁻¹")
+    cols[2].metric(t("traj.cycle_time"), f"{num(tr.cycle_time)} s")
+    cols = st.columns(3)
+    cols[0].metric(t("traj.step_time"), f"{num(tr.step_time())} s")
+    cols[1].metric(t("traj.step_distance"), f"{num(tr.step_distance())} m")
+    cols[2].metric(t("traj.travel_per_cycle"), f"{num(tr.speed * tr.cycle_time)} m")
+    st.write(t("traj.loops_yes" if loops else "traj.loops_no", point=point,
+               speed=num(slowest, 3)))
+
+
+def readouts(scene: Scene, fine: Motion, points: list[str]) -> None:
     """Beside the controls: the answer box, the cycle time, path lengths, strokes, swings."""
     lengths = {p: path_length(fine.points[p].z) for p in points}
     answers = [Quantity(t("traj.time_per_cycle"), cycle_time(scene), "s")]
@@ -260,21 +227,83 @@ def paths_table(fine: Motion, points: list[str]) -> pd.DataFrame:
     return table
 
 
-def resolution_table() -> None:
-    """Under the chart: what each resolution costs and misses, the paths as CSV, the speed panel."""
+def resolution_table(base: Scene, scene: Scene, fine: Motion, points: list[str], steps: int,
+                     timings: tuple[float, float]) -> None:
+    """Under the chart: what each resolution costs and misses, the paths as CSV, the speed
+    panel. ``timings``: this run's solve and figure, ms."""
     st.header(t("traj.accuracy_title"))
     rows = [{t("traj.col_positions"): r["positions"], t("traj.col_solve"): num(r["solve_ms"], 3),
              t("traj.col_deviation"): num(r["deviation_m"] * 1e3, 3),
              t("traj.col_current"): "◀" if r["positions"] == steps else ""}
             for r in accuracy(base, scene, tuple(points))]
     show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
-    st.caption(t("traj.timing", solve=num(solve_ms, 3), figure=num(figure_ms, 3), steps=steps))
+    st.caption(t("traj.timing", solve=num(timings[0], 3), figure=num(timings[1], 3),
+                 steps=steps))
     csv_button(lambda: paths_table(fine, points), f"{scene.id}-paths.csv", key="csv")
     speed_panel("trajectories", scene.id, ("kinematics", "differences", "peers"))
 
 
-if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
-    with controls:
-        readouts()
+with controls:
+    base = scene_picker()
+    seed(defaults(base), st.session_state["scene"])
+    steps = st.select_slider(t("traj.resolution"), RESOLUTIONS, value=360, key="res",
+                             bind="query-params")
+    views = {"steps": "traj.view_steps", "smooth": "traj.view_smooth", "compass": "traj.view_compass"}
+    view = url_choice(st.radio, t("traj.view"), list(views), "view",
+                      format_func=lambda v: t(views[v]), horizontal=True)
+    movable = [p for p in base.point_names if p not in base.frame]
+    points = st.multiselect(t("traj.points"), movable, key="points",
+                            bind="query-params") or movable[-1:]
+    geometry = st.container()  # ω₂ (or the travel), the lengths, the readouts: the fragment's
+
+
+@fragment
+def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
+    """What ω₂ (or the travel) and the link lengths change, which moving them reruns alone:
+    the solve, the chart, the readouts and the resolution table; not app.py, the scene
+    picker, the resolution, the view and the points, which rerun the page and this with
+    it. Its sliders are drawn on every run (Streamlit forgets a widget a run leaves out)."""
+    with geometry:
+        if base.travel:
+            scene = base.with_(travel=travel_sliders(base.travel))
+        else:
+            omega = st.slider(t("traj.omega"), -50.0, 50.0, step=0.5, key="omega",
+                              bind="query-params")
+            scene = base.with_(speed=omega)
+        with st.expander(t("traj.lengths")):
+            scene = scene.with_(lengths=length_sliders(base))
+        scene_download(scene)
+
+    started = time.perf_counter()
+    construction = cycle(scene, 12)
+    fine = cycle(scene, steps, order=1)
+    solve_ms = (time.perf_counter() - started) * 1e3
+
     with main:
-        resolution_table()
+        for zone in zones(scene.with_(speed=1.0)):
+            where = message(format_ranges(scene, zone.ranges))
+            st.warning(t("traj.dead_zone", group=zone.group, where=where))
+        tabs = [t("traj.tab_paths"), t("traj.tab_animation")]
+        tabs += [t("traj.tab_field")] if scene.travel else []
+        tab_paths, tab_anim, *tab_field = st.tabs(tabs, key="tab", on_change="rerun")
+    figure_ms = 0.0
+    if tab_paths.open:
+        with tab_paths:
+            figure_ms = paths_tab(scene, construction, fine, steps, view, points)
+    if tab_anim.open:
+        with tab_anim:
+            if not fine.feasible.all():
+                st.info(t("traj.rocking"))
+            chart(animation(scene, steps, tuple(points), current(), look()),
+                  f"{scene.id}-animation", key="animation")
+    if tab_field and tab_field[0].open:
+        with tab_field[0]:
+            field_tab(scene, fine, steps, points[-1])
+    if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
+        with geometry:
+            readouts(scene, fine, points)
+        with main:
+            resolution_table(base, scene, fine, points, steps, (solve_ms, figure_ms))
+
+
+drawn(base, steps, view, points)

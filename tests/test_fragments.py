@@ -1,5 +1,6 @@
-"""Moving φ₂ on the kinetostatics, plans or Assur page, the drawing precision on the rotor
-page or a drawing scale on the gear page reruns only what depends on it (a fragment):
+"""Moving φ₂ on the kinetostatics, plans or Assur page, ω₂ or a length on the trajectories
+page, the drawing precision on the rotor page or a drawing scale on the gear page reruns
+only what depends on it (a fragment):
 against a real server, through Streamlit's WebSocket as a browser speaks it
 (deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
 reruns the whole page. A fragment's run that a first chart's paint started runs the whole
@@ -107,6 +108,15 @@ def test_a_drawing_scale_on_the_gear_page_reruns_the_scales_and_diagram_alone(st
         assert not run["whole"] and run["drawn"] == {"UL", "Uv", "H"}
         assert run["figures"] == 0  # the schematic (the open tab) is not sent again
     assert given["whole"] and {"UL", "Uv", "H", "in5"} <= given["drawn"]
+
+
+def test_omega_and_a_length_on_the_trajectories_page_rerun_the_drawing_alone(stream):
+    runs = asyncio.run(_moves(stream, "trajectories", "scene=zbirka-1.1",
+                              [("omega", 12.0), ("L2", 0.05), ("omega", -8.0)]))
+    for run in runs:
+        assert not run["whole"] and {"omega", "L2"} <= run["drawn"]
+        assert all(key == "omega" or key.startswith("L") for key in run["drawn"])
+        assert run["figures"] > 0
 
 
 def _counting_page():
