@@ -73,6 +73,9 @@ def test_a_page_cache_is_applied_once_per_code_and_anew_for_new_code():
     namespace: dict = {}
     exec("def add(x):\n    return x - 1", namespace)  # an edited page: new code
     assert page_cache(decorator)(namespace["add"])(1) == ("cached", 0) and len(applied) == 2
+    exec(compile("def add(x):\n    return x - 1", "<string>", "exec"), again := {})
+    assert page_cache(decorator)(again["add"]) is page_cache(decorator)(namespace["add"])
+    assert len(applied) == 2  # the same page compiled again: the same wrapper, none added
 
 
 def test_a_frozen_figure_keeps_the_json_it_was_frozen_with():

@@ -35,10 +35,12 @@ def page_cache(decorator: Callable[[F], F]) -> Callable[[F], F]:
     every run, and Streamlit's decorator reads and hashes the function's source each time
     it is applied: about 0.5 ms a function, 5 % of a rerun of the trajectories page.
 
-    The wrapper is kept per code object: Streamlit compiles a page once, so each run's
-    function has the last run's code (an edited page compiles anew). Such a function must
-    read only its arguments and the page's imports and constants, as any cached function
-    shared by every session must: the first run's are the ones it sees."""
+    The wrapper is kept per code: each run's function has the last run's code, and code
+    objects compare by their content, so a page compiled again unchanged (Streamlit does
+    when every session has left) finds the same wrapper, and an edited page gets a new one.
+    Such a function must read only its arguments and the page's imports and constants, as
+    any cached function shared by every session must: the first run's are the ones it
+    sees."""
     def apply(func: F) -> F:
         if func.__code__ not in _APPLIED:
             _APPLIED[func.__code__] = decorator(func)
