@@ -18,6 +18,9 @@ def home() -> None:
             st.write(t(chapter.summary))
 
 
+PAGES = "navigation_pages"  # the session's pages and their language
+
+
 def navigation_pages() -> list[st.Page]:
     """The app's pages, made once per session and language: making them (each resolves its
     path and checks its icon) took 3 ms, a twentieth of a page's rerun. Kept per session,
@@ -33,7 +36,6 @@ def navigation_pages() -> list[st.Page]:
     return kept[1]
 
 
-PAGES = "navigation_pages"
 st.set_page_config(page_title="Mehanizmi", page_icon=":material/settings:", layout="wide")
 language_picker()
 projector_switch()

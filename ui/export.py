@@ -74,19 +74,20 @@ def dataframe(table: Table, **options) -> None:
     In the page's language: on a Serbian page every number is written with a decimal
     comma, as text aligned right like a number. The CSV download keeps the numbers and
     their decimal point."""
-    rows = table.to_dict("records") if isinstance(table, pd.DataFrame) else table
-    names = list(table.columns) if isinstance(table, pd.DataFrame) else list(
-        dict.fromkeys(name for row in rows for name in row))
+    if isinstance(table, pd.DataFrame):
+        cells = {name: table[name].tolist() for name in table.columns}
+    else:
+        names = dict.fromkeys(name for row in table for name in row)
+        cells = {name: [row.get(name) for row in table] for name in names}
     serbian = current().startswith("sr")
     columns = []
-    for name in names:
-        values = [row.get(name) for row in rows]
+    for name, values in cells.items():
         if serbian and values and all(isinstance(v, float) or v is None for v in values):
             values = [_cell(v) for v in values]
             options["column_config"] = {name: st.column_config.Column(alignment="right"),
                                         **options.get("column_config", {})}
         columns.append(_column(values))
-    st.dataframe(pa.Table.from_arrays(columns, names=[str(n) for n in names]), **options)
+    st.dataframe(pa.Table.from_arrays(columns, names=[str(n) for n in cells]), **options)
 
 
 def _column(values: list) -> pa.Array:

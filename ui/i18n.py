@@ -68,7 +68,8 @@ def current() -> str:
 def run_language() -> None:
     """Remember the session's language for the rest of this run (a fragment's run, which
     does not pass through ``language_picker``)."""
-    _RUN.language = st.session_state.get("lang") or default_language()
+    _RUN.language = None  # an earlier run's, on this thread
+    _RUN.language = current()
 
 
 def default_language() -> str:

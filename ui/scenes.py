@@ -211,9 +211,3 @@ def driver_speed(scene: Scene) -> Scene:
     else:
         speed = st.slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", bind="query-params")
     return scene.with_(speed=speed)
-
-
-def driver_inputs(base: Scene) -> Scene:
-    """The driver's position and speed sliders (``at``, ``omega`` in the URL): φ₂ and ω₂, or s
-    and v for a slider."""
-    return driver_speed(driver_position(base))
