@@ -3,7 +3,6 @@ in tables; checked live; then studied on every chapter page through its link."""
 
 from __future__ import annotations
 
-import pandas as pd
 import streamlit as st
 
 from figures.builder import builder_figure
@@ -26,8 +25,10 @@ from solvers.structure import StructureError, decompose, degrees_of_freedom, loo
 from ui import builder
 from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
+from ui.editor_tables import TEXT_COLUMNS, frame_of, rows_of
 from ui.export import chart
 from ui.firstpaint import waiting
+from ui.fragments import fragment
 from ui.i18n import current, latex, message, t, title_of
 from ui.present import look
 from ui.scenes import preset_titles, read_upload, scene_download
@@ -35,7 +36,6 @@ from ui.scenes import preset_titles, read_upload, scene_download
 LINKAGE_PAGES = [c for c in CHAPTERS if c.file in (
     "pages/trajectories.py", "pages/velocity_plans.py", "pages/assur_groups.py",
     "pages/kinetostatics.py")]
-TEXT = {"point", "label", "first", "second", "through", "type", "form", "side"}
 LABELS = {"point": "build.col_point", "x": "build.col_x", "y": "build.col_y",
           "member": "build.col_member", "label": "build.col_label", "first": "build.col_first",
           "second": "build.col_second", "length": "build.col_length", "mass": "build.col_mass",
@@ -82,23 +82,11 @@ def column(name: str):
                                                 format_func=lambda s: t(SIDE_LABELS[s]))
     if name == "follows_member":
         return st.column_config.CheckboxColumn(label)
-    if name in TEXT:
+    if name in TEXT_COLUMNS:
         return st.column_config.TextColumn(label)
     if name in ("member", "p", "q"):
         return st.column_config.NumberColumn(label, min_value=1, step=1, format="%d")
     return st.column_config.NumberColumn(label, format="%.6g")
-
-
-def frame_of(table: str, rows: list[dict]) -> pd.DataFrame:
-    frame = pd.DataFrame(rows, columns=list(COLUMNS[table]))
-    for name in COLUMNS[table]:
-        if name == "follows_member":
-            frame[name] = frame[name].fillna(False).astype(bool)
-        elif name in TEXT:
-            frame[name] = frame[name].astype(object)
-        else:
-            frame[name] = pd.to_numeric(frame[name], errors="coerce").astype(float)
-    return frame
 
 
 def edited_tables(doc: dict) -> dict[str, list[dict]]:
@@ -118,7 +106,7 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
                 frame_of(name, rows[name]), key=f"build_{builder.version()}_{name}",
                 num_rows="dynamic", hide_index=True, placeholder="—",
                 column_config={c: column(c) for c in COLUMNS[name]})
-            out[name] = edited.astype(object).where(edited.notna(), None).to_dict("records")
+            out[name] = rows_of(edited)
     return out
 
 
@@ -234,54 +222,63 @@ start_controls()
 if st.session_state.get("build_message"):
     st.error(message(st.session_state["build_message"]))
 
-base = builder.base()
-drawing_col, tables_col = st.columns([3, 2], gap="large")
-with tables_col:
-    edited = edited_tables(base)
-doc = document({k: edited[k] for k in TABLES}, edited["driver"], base)
-builder.remember(doc)
 
-scene, problem, solved = None, None, None
-try:
-    scene = build_scene(doc, source=t("build.tables"))
-    solved = builder.drawing(scene)
-    st.session_state["build_last"] = doc, solved
-except (SceneError, StructureError, Unsolvable) as exc:
-    problem = message(exc)
-last_doc, last = st.session_state.get("build_last", (None, None))
+@fragment
+def workbench() -> None:
+    """The tables, the drawing, the checks and the links: a cell, φ₂ or a drag reruns these
+    alone, not app.py and the start controls above (an eighth of the builder's rerun).
+    Starting anew or uploading runs the whole page."""
+    base = builder.base()
+    drawing_col, tables_col = st.columns([3, 2], gap="large")
+    with tables_col:
+        edited = edited_tables(base)
+    doc = document({k: edited[k] for k in TABLES}, edited["driver"], base)
+    builder.remember(doc)
 
-with drawing_col:
-    if last is not None:
-        mode = st.radio(t("build.click_adds"), ["nothing", "frame", *map(str, last.scene.members)],
-                        format_func=lambda m: t(CLICKS[m]) if m in CLICKS
-                        else t("build.click_member", member=m), horizontal=True, key="build_click")
-        result = chart(builder_figure(last.scene, last.positions, last.rotations, last.paths,
-                                      t("build.drawing"), t, look(), builder.revision()),
-                       f"{last.scene.id}-drawing", "build_fig", editable=True)
-        if problem:  # a drag now would drop what the tables hold: mend them first
-            st.caption(t("build.last_valid"))
-        event = builder.moved(result.drag)
-        if event is not None:
-            if problem:
-                builder.refuse_drag()
-            else:
-                builder.drop(last_doc, last, *event)
-            st.rerun()
-        if result.joint and not problem and (group := builder.group_of_joint(
-                last.scene, str(result.joint.get("point")))):
-            builder.flip(last_doc, last, group)
-            st.rerun()
-        if result.click and mode != "nothing" and not problem:
-            builder.click(last_doc, last, 1 if mode == "frame" else int(mode),
-                          complex(result.click["x"], result.click["y"]), result.click["pixel"])
-            st.rerun()
-    if st.session_state.get("build_flip_error"):
-        st.error(t("build.flip_failed", group=st.session_state.pop("build_flip_error")))
-    if st.session_state.get("build_drag_error"):
-        point, to, why = st.session_state.pop("build_drag_error")
-        st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=message(why)))
-    if not waiting():  # on a fresh visit, after the drawing is painted (ui/firstpaint.py)
-        checks(doc, scene, problem, solved, last_doc)
+    scene, problem, solved = None, None, None
+    try:
+        scene = build_scene(doc, source=t("build.tables"))
+        solved = builder.drawing(scene)
+        st.session_state["build_last"] = doc, solved
+    except (SceneError, StructureError, Unsolvable) as exc:
+        problem = message(exc)
+    last_doc, last = st.session_state.get("build_last", (None, None))
 
-if scene is not None and problem is None and not waiting():
-    study(scene)
+    with drawing_col:
+        if last is not None:
+            mode = st.radio(t("build.click_adds"), ["nothing", "frame", *map(str, last.scene.members)],
+                            format_func=lambda m: t(CLICKS[m]) if m in CLICKS
+                            else t("build.click_member", member=m), horizontal=True, key="build_click")
+            result = chart(builder_figure(last.scene, last.positions, last.rotations, last.paths,
+                                          t("build.drawing"), t, look(), builder.revision()),
+                           f"{last.scene.id}-drawing", "build_fig", editable=True)
+            if problem:  # a drag now would drop what the tables hold: mend them first
+                st.caption(t("build.last_valid"))
+            event = builder.moved(result.drag)
+            if event is not None:
+                if problem:
+                    builder.refuse_drag()
+                else:
+                    builder.drop(last_doc, last, *event)
+                st.rerun()
+            if result.joint and not problem and (group := builder.group_of_joint(
+                    last.scene, str(result.joint.get("point")))):
+                builder.flip(last_doc, last, group)
+                st.rerun()
+            if result.click and mode != "nothing" and not problem:
+                builder.click(last_doc, last, 1 if mode == "frame" else int(mode),
+                              complex(result.click["x"], result.click["y"]), result.click["pixel"])
+                st.rerun()
+        if st.session_state.get("build_flip_error"):
+            st.error(t("build.flip_failed", group=st.session_state.pop("build_flip_error")))
+        if st.session_state.get("build_drag_error"):
+            point, to, why = st.session_state.pop("build_drag_error")
+            st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=message(why)))
+        if not waiting():  # on a fresh visit, after the drawing is painted (ui/firstpaint.py)
+            checks(doc, scene, problem, solved, last_doc)
+
+    if scene is not None and problem is None and not waiting():
+        study(scene)
+
+
+workbench()

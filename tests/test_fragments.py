@@ -1,8 +1,7 @@
 """Moving φ₂ on the kinetostatics, plans or Assur page, ω₂ or a length on the trajectories
-page, the drawing precision on the rotor page or a drawing scale on the gear page reruns
-only what depends on it (a fragment):
-against a real server, through Streamlit's WebSocket as a browser speaks it
-(deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
+page, the drawing precision on the rotor page, a drawing scale on the gear page or φ₂ (or
+a cell) in the builder reruns only what depends on it (a fragment): against a real server,
+through Streamlit's WebSocket as a browser speaks it (deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
 reruns the whole page. A fragment's run that a first chart's paint started runs the whole
 page instead (what the first run left out may sit outside the fragment)."""
 
@@ -117,6 +116,15 @@ def test_omega_and_a_length_on_the_trajectories_page_rerun_the_drawing_alone(str
         assert not run["whole"] and {"omega", "L2"} <= run["drawn"]
         assert all(key == "omega" or key.startswith("L") for key in run["drawn"])
         assert run["figures"] > 0
+
+
+def test_phi2_typed_in_the_builder_reruns_its_workbench_not_the_start_controls(stream):
+    runs = asyncio.run(_moves(stream, "builder", "",
+                              [("build_1_driver_at", 40.0), ("build_1_driver_at", 95.0)]))
+    for run in runs:
+        assert not run["whole"] and "build_1_driver_at" in run["drawn"]
+        assert "build_start" not in run["drawn"]  # the template and preset picker
+        assert run["figures"] > 0  # the drawing at the new φ₂
 
 
 def _counting_page():
