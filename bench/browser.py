@@ -145,6 +145,8 @@ FIRST_PAINT = """(() => {
 BYTES = ("() => [...performance.getEntriesByType('navigation'), "
          "...performance.getEntriesByType('resource')].reduce((n, r) => n + r.transferSize, 0)")
 FLOOR = "(the floor: sidebar, navigation and one small chart, `bench/floor_chart_app.py`)"
+SLIDER_FLOOR = ("(the floor: one length slider redrawing the trajectories page's figure, nothing "
+                "else on the page, `bench/floor_chart_app.py?floor=slider`)")
 OPENED = ["trajectories", "velocity_plans", "assur_groups", "kinetostatics", "planetary_gears",
           "rotor_balancing", "builder"]  # the pages that open with a chart
 
@@ -254,6 +256,9 @@ def table() -> str:
             for name, label, expander in PAGES:
                 first, last = measure(page, f"http://127.0.0.1:{port}/{name}?lang=en", label, expander)
                 rows.append(f"| {name} | {first:.0f} | {last:.0f} |")
+            first, last = measure(page, f"http://127.0.0.1:{floor_port}/?lang=en&floor=slider",
+                                  "(member 2)", None)
+            rows.append(f"| {SLIDER_FLOOR} | {first:.0f} | {last:.0f} |")
             rows += ["", f"| page | φ₂ scrubbed in the browser → first chart painted, ms (median "
                      f"of {CHANGES}) | → all its charts, ms | first touch → frames there (one "
                      "rerun), ms | frames, kB |", "|---|---:|---:|---:|---:|"]

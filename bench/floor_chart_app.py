@@ -1,7 +1,11 @@
 """What every page of the app pays before its own content, for bench/browser.py's
 navigation → first chart: Streamlit's front end, the app's sidebar (language, projector
 mode) and navigation (every page listed), and one small chart drawn by ui/plot.py with the
-bundle the pages use. A page can open no faster than this."""
+bundle the pages use. A page can open no faster than this.
+
+With ``?floor=slider``, the floor of bench/browser.py's slider → figure instead: one length
+slider in a fragment redrawing the trajectories page's first figure (its default scene, the
+12 positions), and nothing else on the page."""
 
 import sys
 from pathlib import Path
@@ -11,16 +15,39 @@ import streamlit as st
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from figures.raw import RawFigure  # noqa: E402
+from figures.trajectories import construction_figure  # noqa: E402
+from solvers.paths import crank_pin  # noqa: E402
+from ui.cache import cycle, preset  # noqa: E402
 from ui.chapters import BUILDER, CHAPTERS, VARIANTS  # noqa: E402
-from ui.i18n import language_picker  # noqa: E402
+from ui.i18n import language_picker, t, title_of  # noqa: E402
 from ui.plot import plot, publish_plotly_js  # noqa: E402
-from ui.present import projector_switch  # noqa: E402
+from ui.present import look, projector_switch  # noqa: E402
+from ui.scenes import preset_ids  # noqa: E402
+
+LABELS = {"svg": "SVG", "png": "PNG", "fullscreen": "full screen"}
 
 
 def page() -> None:
+    if st.query_params.get("floor") == "slider":
+        st.fragment(length_slider)()
+        return
     fig = RawFigure()
     fig.add_raw([{"type": "scatter", "x": [0, 1, 2], "y": [0, 1, 0]}])
-    plot(fig, "floor", "floor", {"svg": "SVG", "png": "PNG", "fullscreen": "full screen"})
+    plot(fig, "floor", "floor", LABELS)
+
+
+def length_slider() -> None:
+    """Member 2's length, as the trajectories page offers it, and that page's figure."""
+    scene = preset(preset_ids("linkage")[0])
+    length = scene.lengths[2]
+    value = st.slider(t("traj.length", link="".join(scene.members[2].axis), member=2),
+                      round(length / 4, 4), round(length * 2, 4), value=length,
+                      step=round(length / 100, 5), format="%.4f", key="L2")
+    moved = scene.with_(lengths={**scene.lengths, 2: value})
+    last = [p for p in scene.point_names if p not in scene.frame][-1]
+    numbered = list(dict.fromkeys([crank_pin(scene), last]))
+    plot(construction_figure(cycle(moved, 12), None, numbered, title_of(scene), t, look()),
+         "floor", "floor", LABELS)
 
 
 publish_plotly_js(Path(__file__).parent / "static")  # Streamlit serves static/ beside the script

@@ -33,13 +33,15 @@ from deploy.client import (Report, Session, free_port, memory_mb, percentile,  #
 from mechanisms import load_preset  # noqa: E402
 from solvers.kinetostatics import analyse  # noqa: E402
 
-# page, link, slider to move and its range; the first page is checked answer by answer
+# page, link, the control a user moves and its range; the first page is checked answer by
+# answer. (Until 2026-11-26 the trajectories sessions asked for a slider "steps" the page no
+# longer had and the gear sessions moved nothing: both reran their page unchanged.)
 PAGES = [
     ("kinetostatics", "scene=predavanja-kinetostatika", "at", (0.0, 359.5)),
-    ("trajectories", "scene=zbirka-1.1", "steps", None),
+    ("trajectories", "scene=zbirka-1.1", "L2", (0.04, 0.09)),  # the crank OA, 0.06 m as given
     ("velocity_plans", "scene=zbirka-2.1", "at", (0.0, 359.5)),
     ("assur_groups", "scene=triad-full-turn", "at", (0.0, 359.5)),
-    ("planetary_gears", "scene=zbirka-6.8", None, None),
+    ("planetary_gears", "scene=zbirka-6.8", "in5", (50.0, 150.0)),  # ω₅, 100 s⁻¹ as given
     ("rotor_balancing", "scene=zbirka-7.1", "precision", (0.1, 2.0)),
 ]
 LECTURE = load_preset("predavanja-kinetostatika")
@@ -61,14 +63,11 @@ async def user(url: str, index: int, until: float, report: Report) -> None:
         await session.run(ws)
         while time.monotonic() < until:
             await asyncio.sleep(rng.uniform(0.5, 2.0))  # a person reads before moving on
-            if slider is None or slider not in session.widgets:
-                await session.run(ws)
-                continue
+            if slider not in session.widgets:
+                report.errors.append(f"{page}: no control {slider!r} to move")
+                return
             widget_id, _ = session.widgets[slider]
-            if slider == "steps":
-                value = float(rng.choice([12, 24, 36, 72]))
-            else:
-                value = round(rng.uniform(*span), 1)
+            value = round(rng.uniform(*span), 4)
             await session.run(ws, [(widget_id, value)])
             if page == "kinetostatics":
                 check(session, value, report)

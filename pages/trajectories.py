@@ -18,6 +18,7 @@ from solvers.diagnostics import dead_zones, format_ranges
 from solvers.kinematics import GroupIssue, Motion
 from solvers.paths import (
     animation_order,
+    crank_pin,
     cycle_time,
     field_path,
     loops_backward,
@@ -106,12 +107,6 @@ def compass_texts(steps: list) -> list[str]:
         values = {k: num(v, 4) if isinstance(v, float) else v for k, v in step.values.items()}
         return t(COMPASS[step.what], **values)
     return [t("compass.step", k=k + 1, n=len(steps), text=words(s)) for k, s in enumerate(steps)]
-
-
-def crank_pin(scene: Scene) -> str:
-    """The driving member's moving point (B of tasks 1.1, C of 1.2): always numbered."""
-    member = scene.members[2]
-    return next(p for p in member.axis[::-1] + tuple(member.points) if p not in scene.frame)
 
 
 def defaults(base: Scene) -> dict[str, object]:

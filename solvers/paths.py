@@ -27,6 +27,13 @@ def cycle_values(scene: Scene, steps: int) -> np.ndarray:
     return scene.driver.at + sense * 2 * math.pi * np.arange(steps) / steps
 
 
+def crank_pin(scene: Scene) -> str:
+    """The driving member's moving point (B of tasks 1.1, C of 1.2): its path is always
+    numbered in the construction."""
+    member = scene.members[DRIVER]
+    return next(p for p in member.axis[::-1] + tuple(member.points) if p not in scene.frame)
+
+
 def chord_deviation(scene: Scene, steps: int, points: list[str],
                     reference: Motion | None = None) -> dict[str, float]:
     """Largest distance (m) between each point's exact path and the polyline through N positions.
