@@ -224,17 +224,23 @@ def paths_table(fine: Motion, points: list[str]) -> pd.DataFrame:
 
 def resolution_table(base: Scene, scene: Scene, fine: Motion, points: list[str], steps: int,
                      timings: tuple[float, float]) -> None:
-    """Under the chart: what each resolution costs and misses, the paths as CSV, the speed
-    panel. ``timings``: this run's solve and figure, ms."""
-    st.header(t("traj.accuracy_title"))
-    rows = [{t("traj.col_positions"): r["positions"], t("traj.col_solve"): num(r["solve_ms"], 3),
-             t("traj.col_deviation"): num(r["deviation_m"] * 1e3, 3),
-             t("traj.col_current"): "◀" if r["positions"] == steps else ""}
-            for r in accuracy(base, scene, tuple(points))]
-    show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
-    st.caption(t("traj.timing", solve=num(timings[0], 3), figure=num(timings[1], 3),
-                 steps=steps))
-    csv_button(lambda: paths_table(fine, points), f"{scene.id}-paths.csv", key="csv")
+    """Under the chart: the paths as CSV; what each resolution costs and misses, in a section
+    filled only while open (with it, each new length measured the paths' errors at four
+    resolutions and sent the table: a sixth of the step's rerun and its heaviest element in
+    the browser); the speed panel. ``timings``: this run's solve and figure, ms."""
+    csv_button(lambda: paths_table(fine, points), f"{scene.id}-paths.csv", key="csv",
+               label=t("traj.csv_paths"))
+    section = st.expander(t("traj.accuracy_title"), key="accuracy_open", on_change="rerun")
+    if section.open:
+        with section:
+            rows = [{t("traj.col_positions"): r["positions"],
+                     t("traj.col_solve"): num(r["solve_ms"], 3),
+                     t("traj.col_deviation"): num(r["deviation_m"] * 1e3, 3),
+                     t("traj.col_current"): "◀" if r["positions"] == steps else ""}
+                    for r in accuracy(base, scene, tuple(points))]
+            show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
+            st.caption(t("traj.timing", solve=num(timings[0], 3), figure=num(timings[1], 3),
+                         steps=steps))
     speed_panel("trajectories", scene.id, ("kinematics", "differences", "peers"))
 
 

@@ -114,26 +114,31 @@ def test_turning_the_crank_the_other_way_renumbers_the_positions(app_url, browse
     keep(shot)
 
 
-# when the first chart is painted and when the first table shows, from the page's start
+# when the first chart is painted and when the first of what follows it shows (a table; on
+# the trajectories page, whose table's section opens shut, the readouts), from the page's start
 FIRST_THINGS = """(() => {
+  const follows = window.__follows || '[data-testid=stDataFrame]';
   const poll = () => {
     const gd = document.querySelector('.js-plotly-plot');
     if (!window.__chartAt && gd && gd._fullLayout) window.__chartAt = performance.now();
-    if (!window.__tableAt && document.querySelector('[data-testid=stDataFrame]'))
+    if (!window.__tableAt && document.querySelector(follows))
       window.__tableAt = performance.now();
     if (!window.__tableAt) requestAnimationFrame(poll);
   };
   requestAnimationFrame(poll);
 })();"""
+READOUTS = "window.__follows = '[data-testid=stMetric]';"
 
 
 @pytest.mark.parametrize("path", ["trajectories", "velocity_plans", "kinetostatics", "home"])
 def test_a_fresh_visit_paints_the_chart_first_and_the_tables_follow_by_themselves(
         app_url, browser, path):
-    """ui/firstpaint.py: a page's first run leaves the tables out; the chart's first paint
-    brings them with no touch of the student's. Also when the student comes from the home
-    page (the same session, another page)."""
+    """ui/firstpaint.py: a page's first run leaves the tables (the trajectories page: its
+    readouts) out; the chart's first paint brings them with no touch of the student's. Also
+    when the student comes from the home page (the same session, another page)."""
     page = browser.new_page()
+    if path in ("trajectories", "home"):  # (home: the student goes on to the trajectories)
+        page.add_init_script(READOUTS)
     page.add_init_script(FIRST_THINGS)
     if path == "home":
         page.goto(f"{app_url}/?lang=en")

@@ -47,7 +47,7 @@ def test_a_longer_crank_draws_a_bigger_crank_circle():
 def test_the_resolution_table_follows_the_lengths_and_times_each_mechanism_once():
     """A length changes the drawn paths' error (the crank pin's circle: r(1 − cos 15°) at 12
     positions) but not the solve times, measured once for the mechanism as loaded."""
-    at = fourbar()
+    at = fourbar(accuracy_open=True)
 
     def table():
         frame = at.dataframe[0].value
@@ -90,8 +90,21 @@ def test_a_mechanism_with_a_dead_zone_warns_and_rocks():
     assert any("rocks" in m.value or "limit position" in m.value for m in at.info)
 
 
-def test_the_speed_accuracy_table_covers_every_resolution():
+def test_the_speed_accuracy_section_is_filled_only_while_open():
+    """Closed (as a page opens), a length step measures no path errors and sends no table;
+    the paths' CSV stays under the chart."""
     at = fourbar()
+    assert not at.dataframe
+    assert [e.label for e in at.expander if e.label == "Speed and accuracy"]
+    paths = [b for b in at.get("download_button") if b.proto.label.startswith("Download the paths")]
+    assert len(paths) == 1
+    at.session_state["accuracy_open"] = True
+    at.run()
+    assert len(at.dataframe) == 1
+
+
+def test_the_speed_accuracy_table_covers_every_resolution():
+    at = fourbar(accuracy_open=True)
     table = at.dataframe[0].value
     assert list(table.iloc[:, 0]) == [12, 72, 360, 3600]
     deviation = [float(v) for v in table.iloc[:, 2]]

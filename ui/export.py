@@ -18,14 +18,16 @@ Rows = list[dict[str, Any]]  # a table as its rows, each {column: value}
 Table = Rows | pd.DataFrame
 
 
-def csv_button(table: Table | Callable[[], Table], filename: str, key: str) -> None:
+def csv_button(table: Table | Callable[[], Table], filename: str, key: str,
+               label: str | None = None) -> None:
     """The table as CSV, made and written only when the button is pressed (not on every
-    rerun): ``table`` may be the function that makes it."""
+    rerun): ``table`` may be the function that makes it. ``label``: for a table the page
+    does not show (the button's own words say what it holds)."""
     def data() -> bytes:
         made = table() if callable(table) else table
         return pd.DataFrame(made).to_csv(index=False).encode("utf-8")
 
-    st.download_button(t("export.csv"), data, filename, mime="text/csv", key=key,
+    st.download_button(label or t("export.csv"), data, filename, mime="text/csv", key=key,
                        on_click="ignore", icon=":material/download:")
 
 
