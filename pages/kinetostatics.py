@@ -129,12 +129,12 @@ def inertia_table(k: Kinetostatics, i: int) -> Rows:
 
 def driving_metrics(k: Kinetostatics, i: int) -> None:
     unit, symbol = ("N·m", "M_p") if k.rotating else ("N", "F_p")
-    row = st.container(horizontal=True)  # one block, not five (columns), on every φ₂ step
+    cols = st.columns(4)
     # units beside the names: four values with their units did not fit a column and were cut
-    row.metric(f"{t('forces.by_groups', symbol=symbol)} [{unit}]", num(k.driving[i], 5))
-    row.metric(f"{t('forces.by_lever', symbol=symbol)} [{unit}]", num(k.driving_lever[i], 5))
-    row.metric(f"{t('forces.by_power', symbol=symbol)} [{unit}]", num(k.driving_power[i], 5))
-    row.metric(f"{t('forces.power')} [W]", num(k.power[i], 5))
+    cols[0].metric(f"{t('forces.by_groups', symbol=symbol)} [{unit}]", num(k.driving[i], 5))
+    cols[1].metric(f"{t('forces.by_lever', symbol=symbol)} [{unit}]", num(k.driving_lever[i], 5))
+    cols[2].metric(f"{t('forces.by_power', symbol=symbol)} [{unit}]", num(k.driving_power[i], 5))
+    cols[3].metric(f"{t('forces.power')} [W]", num(k.power[i], 5))
     st.caption(t("forces.agreement", spread=sci(k.disagreement[i], 1),
                  residual=sci(k.power_residual[i], 1)))
     if k.crank_force is not None:
