@@ -16,38 +16,34 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from figures.raw import RawFigure  # noqa: E402
 from figures.trajectories import construction_figure  # noqa: E402
-from solvers.paths import crank_pin  # noqa: E402
+from solvers.paths import numbered_points  # noqa: E402
 from ui.cache import cycle, preset  # noqa: E402
 from ui.chapters import BUILDER, CHAPTERS, VARIANTS  # noqa: E402
 from ui.i18n import language_picker, t, title_of  # noqa: E402
 from ui.plot import plot, publish_plotly_js  # noqa: E402
 from ui.present import look, projector_switch  # noqa: E402
-from ui.scenes import preset_ids  # noqa: E402
+from ui.scenes import length_slider, preset_ids  # noqa: E402
 
 LABELS = {"svg": "SVG", "png": "PNG", "fullscreen": "full screen"}
 
 
 def page() -> None:
     if st.query_params.get("floor") == "slider":
-        st.fragment(length_slider)()
+        st.fragment(slider_floor)()
         return
     fig = RawFigure()
     fig.add_raw([{"type": "scatter", "x": [0, 1, 2], "y": [0, 1, 0]}])
     plot(fig, "floor", "floor", LABELS)
 
 
-def length_slider() -> None:
+def slider_floor() -> None:
     """Member 2's length, as the trajectories page offers it, and that page's figure."""
     scene = preset(preset_ids("linkage")[0])
-    length = scene.lengths[2]
-    value = st.slider(t("traj.length", link="".join(scene.members[2].axis), member=2),
-                      round(length / 4, 4), round(length * 2, 4), value=length,
-                      step=round(length / 100, 5), format="%.4f", key="L2")
+    value = length_slider(scene, 2, value=scene.lengths[2])
     moved = scene.with_(lengths={**scene.lengths, 2: value})
-    last = [p for p in scene.point_names if p not in scene.frame][-1]
-    numbered = list(dict.fromkeys([crank_pin(scene), last]))
-    plot(construction_figure(cycle(moved, 12), None, numbered, title_of(scene), t, look()),
-         "floor", "floor", LABELS)
+    last = [p for p in scene.point_names if p not in scene.frame][-1]  # the page's default
+    plot(construction_figure(cycle(moved, 12), None, numbered_points(scene, [last]),
+                             title_of(scene), t, look()), "floor", "floor", LABELS)
 
 
 publish_plotly_js(Path(__file__).parent / "static")  # Streamlit serves static/ beside the script

@@ -18,10 +18,10 @@ from solvers.diagnostics import dead_zones, format_ranges
 from solvers.kinematics import GroupIssue, Motion
 from solvers.paths import (
     animation_order,
-    crank_pin,
     cycle_time,
     field_path,
     loops_backward,
+    numbered_points,
     path_errors,
     path_length,
     solve_times,
@@ -39,7 +39,7 @@ from ui.fragments import fragment
 from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
 from ui.present import look
-from ui.scenes import scene_download, scene_picker
+from ui.scenes import length_slider, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed, url_choice
 
@@ -133,15 +133,8 @@ def travel_sliders(base: Travel) -> Travel:
 
 
 def length_sliders(base: Scene) -> dict[int, float]:
-    """One slider per link, from a quarter to twice its length in the scene."""
-    out = {}
-    for number, length in base.lengths.items():
-        member = base.members[number]
-        label = t("traj.length", link="".join(member.axis), member=number)
-        out[number] = st.slider(label, round(length / 4, 4), round(length * 2, 4),
-                                step=round(length / 100, 5), format="%.4f", key=f"L{number}",
-                                bind="query-params")
-    return out
+    """One slider per link (``ui.scenes.length_slider``), kept in the URL."""
+    return {number: length_slider(base, number, bind="query-params") for number in base.lengths}
 
 
 def paths_tab(scene: Scene, construction: Motion, fine: Motion, steps: int, view: str,
@@ -149,7 +142,7 @@ def paths_tab(scene: Scene, construction: Motion, fine: Motion, steps: int, view
     """The 12 positions and the paths (or the compass construction, or practising it);
     the ms it took to build the figure."""
     started = time.perf_counter()
-    numbered = list(dict.fromkeys([crank_pin(scene), *points]))
+    numbered = numbered_points(scene, points)
     if view == "compass":
         steps_drawn = compass_steps(construction, points)
         fig = compass_figure(scene, steps_drawn, compass_texts(steps_drawn), title_of(scene), t,

@@ -27,11 +27,12 @@ def cycle_values(scene: Scene, steps: int) -> np.ndarray:
     return scene.driver.at + sense * 2 * math.pi * np.arange(steps) / steps
 
 
-def crank_pin(scene: Scene) -> str:
-    """The driving member's moving point (B of tasks 1.1, C of 1.2): its path is always
-    numbered in the construction."""
+def numbered_points(scene: Scene, points: list[str]) -> list[str]:
+    """The points whose positions the 12-step construction numbers: the driving member's
+    moving point (B of tasks 1.1, C of 1.2) always, first, then ``points``."""
     member = scene.members[DRIVER]
-    return next(p for p in member.axis[::-1] + tuple(member.points) if p not in scene.frame)
+    pin = next(p for p in member.axis[::-1] + tuple(member.points) if p not in scene.frame)
+    return list(dict.fromkeys([pin, *points]))
 
 
 def chord_deviation(scene: Scene, steps: int, points: list[str],

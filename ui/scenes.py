@@ -204,6 +204,15 @@ def driver_position(base: Scene) -> Scene:
     return base.with_(at=at)
 
 
+def length_slider(base: Scene, number: int, **options) -> float:
+    """Member ``number``'s length (key ``L<number>``), from a quarter to twice its length in
+    ``base``: the trajectories page's, and its floor's in bench/floor_chart_app.py."""
+    length, member = base.lengths[number], base.members[number]
+    return st.slider(t("traj.length", link="".join(member.axis), member=number),
+                     round(length / 4, 4), round(length * 2, 4), step=round(length / 100, 5),
+                     format="%.4f", key=f"L{number}", **options)
+
+
 def driver_speed(scene: Scene) -> Scene:
     """The driver's speed slider (``omega`` in the URL): ω₂, or v for a slider."""
     if scene.driver.kind == "rotating":
