@@ -1,5 +1,6 @@
 """Serve the app: ``streamlit run`` with Nagle's algorithm off on the server's connections,
-and static files gzipped once for a browser that accepts it.
+static files gzipped once for a browser that accepts it, and the sessions' page scripts run
+one at a time (scripts/turns.py).
 
 Nagle: Streamlit (1.67) creates its listening socket without naming TCP as the protocol, and
 asyncio sets TCP_NODELAY only on sockets that name it. With Nagle's algorithm on, every
@@ -41,6 +42,7 @@ from streamlit.web.server.starlette import starlette_app
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import page_head  # noqa: E402
+import turns  # noqa: E402
 from icon_font import FONT, ROOT, STATIC, cut_path  # noqa: E402
 
 COMPRESSIBLE = (b"text/", b"application/javascript", b"application/json", b"image/svg+xml")
@@ -212,6 +214,7 @@ _streamlit_middleware = starlette_app.create_streamlit_middleware
 def main() -> None:
     asyncio.base_events._set_nodelay = _set_nodelay  # called for every accepted connection
     starlette_app.create_streamlit_middleware = _with_precompressed
+    turns.install()  # one page script at a time (scripts/turns.py)
     sys.argv = ["streamlit", "run", *sys.argv[1:]]
     cli.main()
 

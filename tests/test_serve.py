@@ -45,6 +45,8 @@ def test_without_the_launcher_such_connections_keep_nagle_s_algorithm():
 
 def test_the_launcher_turns_nagle_s_algorithm_off_on_every_accepted_connection(monkeypatch):
     monkeypatch.setattr(asyncio.base_events, "_set_nodelay", asyncio.base_events._set_nodelay)
+    monkeypatch.setattr(serve.turns.script_runner.ScriptRunner, "_run_script",
+                        serve.turns.script_runner.ScriptRunner._run_script)
     started = []
     monkeypatch.setattr(serve.cli, "main", lambda: started.append(serve.sys.argv))
     monkeypatch.setattr(serve.sys, "argv", ["serve.py", "app.py", "--server.port", "8999"])

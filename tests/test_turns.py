@@ -1,0 +1,76 @@
+"""scripts/turns.py: page scripts run one at a time, and none waits longer than its bound."""
+
+from __future__ import annotations
+
+import threading
+
+from streamlit.runtime.scriptrunner import script_runner
+
+from scripts import serve, turns
+
+
+def _runs(wait: float) -> tuple:
+    """A run that holds until told (``first``) and one that only records its start."""
+    release, started, second_started = threading.Event(), threading.Event(), threading.Event()
+
+    def run(name: str) -> None:
+        if name == "first":
+            started.set()
+            release.wait(10)
+        else:
+            second_started.set()
+
+    in_turn = turns.taking_turns(run, wait)
+    first = threading.Thread(target=in_turn, args=("first",))
+    second = threading.Thread(target=in_turn, args=("second",))
+    first.start()
+    assert started.wait(10)
+    second.start()
+    return first, second, release, second_started
+
+
+def test_a_run_waits_for_the_one_in_progress():
+    first, second, release, second_started = _runs(wait=10)
+    assert not second_started.wait(0.3)  # the first still holds its turn
+    release.set()
+    assert second_started.wait(5)  # and gave it up when it finished
+    for thread in (first, second):
+        thread.join(5)
+
+
+def test_a_long_run_holds_the_others_back_no_longer_than_the_bound():
+    first, second, release, second_started = _runs(wait=0.05)
+    assert second_started.wait(5)  # started beside the first, which still runs
+    assert first.is_alive()
+    release.set()
+    for thread in (first, second):
+        thread.join(5)
+
+
+def test_a_failing_run_gives_up_its_turn():
+    def fail() -> None:
+        raise RuntimeError("a page's exception")
+
+    in_turn = turns.taking_turns(fail, wait=10)
+    for _ in range(2):  # the second would wait 10 s if the first had kept the turn
+        try:
+            in_turn()
+        except RuntimeError:
+            pass
+    done = threading.Event()
+    threading.Thread(target=turns.taking_turns(done.set, wait=10)).start()
+    assert done.wait(1)
+
+
+def test_the_launcher_makes_every_script_run_take_turns(monkeypatch):
+    original = script_runner.ScriptRunner._run_script
+    monkeypatch.setattr(script_runner.ScriptRunner, "_run_script", original)
+    monkeypatch.setattr(serve.cli, "main", lambda: None)
+    monkeypatch.setattr(serve.sys, "argv", ["serve.py", "app.py"])
+    monkeypatch.setattr(serve.asyncio.base_events, "_set_nodelay",
+                        serve.asyncio.base_events._set_nodelay)
+    monkeypatch.setattr(serve.starlette_app, "create_streamlit_middleware",
+                        serve.starlette_app.create_streamlit_middleware)
+    serve.main()
+    wrapped = script_runner.ScriptRunner._run_script
+    assert wrapped is not original and wrapped.__wrapped__ is original
