@@ -19,7 +19,8 @@ ROOT = Path(__file__).resolve().parents[1]
 
 @dataclass
 class Report:
-    times: list[float] = field(default_factory=list)
+    times: list[float] = field(default_factory=list)  # reruns: a control sent → script finished
+    opening: list[float] = field(default_factory=list)  # a page opened → its first run finished
     by_page: dict[str, list[float]] = field(default_factory=dict)
     errors: list[str] = field(default_factory=list)
     wrong: list[str] = field(default_factory=list)
@@ -38,6 +39,7 @@ class Session:
         self.drawn: set[str] = set()  # the widgets the last run drew (a fragment's: its own)
         self.whole = True  # the last run was the page's, not a fragment's
         self.page_hash = ""
+        self.opened = False  # the page's first run has finished
 
     async def run(self, ws, states=()) -> None:
         msg = BackMsg()
@@ -68,6 +70,10 @@ class Session:
                                           ForwardMsg.FINISHED_FRAGMENT_RUN_SUCCESSFULLY):
                     self.whole = fm.script_finished == ForwardMsg.FINISHED_SUCCESSFULLY
                     took = time.perf_counter() - start
+                    if not self.opened:
+                        self.opened = True
+                        self.report.opening.append(took)
+                        return
                     self.report.times.append(took)
                     self.report.by_page.setdefault(self.page, []).append(took)
                     return

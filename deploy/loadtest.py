@@ -7,8 +7,10 @@
 Loopback only, and it stops by itself. Each session works one chapter page; on the
 kinetostatics page every answer is checked against the solver run here for that
 session's own φ₂, so one user's input showing up in another's page is caught. Reported:
-reruns, errors, wrong answers, the p50/p95/max rerun time (slider sent → script finished)
-and the server's memory before and after (when it started the server itself).
+reruns, errors, wrong answers, the p50/p95/max rerun time (slider sent → script finished),
+apart from it the sessions' first runs (page opened → script finished, all sessions at
+once) and both together, and the server's memory before and after (when it started the
+server itself).
 """
 
 from __future__ import annotations
@@ -103,6 +105,12 @@ async def load(url: str, sessions: int, seconds: float, pid: int | None = None) 
     return report
 
 
+def spread(seconds: list[float]) -> str:
+    ordered = sorted(seconds)
+    return (f"p50 {1e3 * statistics.median(ordered):.0f} ms, p95 {1e3 * percentile(ordered, 0.95):.0f} ms, "
+            f"max {1e3 * ordered[-1]:.0f} ms")
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--url", help="a running app (http://127.0.0.1:PORT); default: start one")
@@ -134,9 +142,10 @@ def main(argv: list[str] | None = None) -> int:
     print(f"{args.sessions} sessions for {args.seconds:.0f} s against {url}")
     print(f"reruns: {len(times)}, errors: {len(report.errors)}, wrong answers: {len(report.wrong)}")
     if times:
-        print(f"rerun time: p50 {1e3 * statistics.median(times):.0f} ms, "
-              f"p95 {1e3 * percentile(times, 0.95):.0f} ms, "
-              f"max {1e3 * times[-1]:.0f} ms")
+        print(f"rerun time: {spread(times)}")
+    if report.opening:  # all at once, as when a lecturer says "open the page"
+        print(f"pages opened: {len(report.opening)}, first run: {spread(report.opening)}")
+        print(f"all runs together: {spread(times + report.opening)}")
     for page, page_times in sorted(report.by_page.items()):
         print(f"  {page:16s} {len(page_times):5d} reruns, p50 {1e3 * statistics.median(page_times):5.0f} ms, "
               f"p95 {1e3 * percentile(page_times, 0.95):5.0f} ms")

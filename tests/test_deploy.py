@@ -15,10 +15,12 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def test_a_short_load_test_runs_clean(capsys):
     """Six sessions, one per page, for a few seconds against a server of its own: no error,
-    no answer from another session, every page rerun."""
+    no answer from another session, every page rerun, and the six openings told apart from
+    the reruns."""
     assert main(["--sessions", "6", "--seconds", "6"]) == 0
     out = capsys.readouterr().out
     assert "errors: 0, wrong answers: 0" in out
+    assert "pages opened: 6, first run: p50" in out and "all runs together: p50" in out
     for page in ("kinetostatics", "trajectories", "velocity_plans", "assur_groups",
                  "planetary_gears", "rotor_balancing"):
         assert page in out
