@@ -5,8 +5,8 @@ time (the GIL). With a class working at once, five to ten runs share the CPU by 
 5 ms, so each takes several times its own work, and the event loop that sends their
 messages waits behind them. Letting one run finish before the next starts costs the class
 no CPU and shortens every run but the last in the queue: with 30 sessions on one process
-(deploy/loadtest.py, docs/deploy.md) p95 went from 574–588 to 330–402 ms, in turn on the
-same machine. Two at a time was no better than none.
+(deploy/loadtest.py) the reruns' p95 went from 474–676 to 299–323 ms, in three paired runs
+(docs/performance.md). Two at a time was no better than none.
 
 A run waits for its turn at most ``WAIT`` seconds and then runs beside the others, as
 Streamlit would have run it: a long run (the textbook check, a speed panel) delays the rest
