@@ -106,9 +106,10 @@ async def load(url: str, sessions: int, seconds: float, pid: int | None = None) 
 
 
 def spread(seconds: list[float]) -> str:
+    """p50, p95 and max of some run times, in ms."""
     ordered = sorted(seconds)
-    return (f"p50 {1e3 * statistics.median(ordered):.0f} ms, p95 {1e3 * percentile(ordered, 0.95):.0f} ms, "
-            f"max {1e3 * ordered[-1]:.0f} ms")
+    return (f"p50 {1e3 * statistics.median(ordered):.0f} ms, "
+            f"p95 {1e3 * percentile(ordered, 0.95):.0f} ms, max {1e3 * ordered[-1]:.0f} ms")
 
 
 def main(argv: list[str] | None = None) -> int:
