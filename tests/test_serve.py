@@ -1,6 +1,7 @@
 """scripts/serve.py: the server's connections send at once (TCP_NODELAY), also on a
 listening socket made the way Streamlit makes it (no protocol named, proto 0); a static
-file's best encodings are kept on disk and the next server serves them from there."""
+file's best encodings are kept on disk and the next server serves them from there; page
+scripts take turns (scripts/turns.py)."""
 
 from __future__ import annotations
 
@@ -11,6 +12,7 @@ import socket
 import time
 
 import brotli
+from streamlit.runtime.scriptrunner.script_runner import ScriptRunner
 
 from scripts import serve
 
@@ -43,16 +45,31 @@ def test_without_the_launcher_such_connections_keep_nagle_s_algorithm():
     assert accepted_nodelay() == 0
 
 
-def test_the_launcher_turns_nagle_s_algorithm_off_on_every_accepted_connection(monkeypatch):
+def launch(monkeypatch) -> list:
+    """scripts/serve.py's main with Streamlit's own left out, every global it patches put
+    back after the test; the arguments it would have handed to ``streamlit run``."""
     monkeypatch.setattr(asyncio.base_events, "_set_nodelay", asyncio.base_events._set_nodelay)
-    monkeypatch.setattr(serve.turns.script_runner.ScriptRunner, "_run_script",
-                        serve.turns.script_runner.ScriptRunner._run_script)
+    monkeypatch.setattr(serve.starlette_app, "create_streamlit_middleware",
+                        serve.starlette_app.create_streamlit_middleware)
+    monkeypatch.setattr(ScriptRunner, "_run_script", ScriptRunner._run_script)
     started = []
     monkeypatch.setattr(serve.cli, "main", lambda: started.append(serve.sys.argv))
     monkeypatch.setattr(serve.sys, "argv", ["serve.py", "app.py", "--server.port", "8999"])
     serve.main()
-    assert started == [["streamlit", "run", "app.py", "--server.port", "8999"]]
+    return started
+
+
+def test_the_launcher_turns_nagle_s_algorithm_off_on_every_accepted_connection(monkeypatch):
+    assert launch(monkeypatch) == [["streamlit", "run", "app.py", "--server.port", "8999"]]
     assert accepted_nodelay() == 1
+
+
+def test_the_launcher_makes_every_script_run_take_turns(monkeypatch):
+    """scripts/turns.py, tested on its own in tests/test_turns.py."""
+    original = ScriptRunner._run_script
+    launch(monkeypatch)
+    assert ScriptRunner._run_script is not original
+    assert ScriptRunner._run_script.__wrapped__ is original
 
 
 SCRIPT = b"function draw(plan) { return plan.poles.map((p) => p.scale); }\n" * 400

@@ -4,9 +4,7 @@ from __future__ import annotations
 
 import threading
 
-from streamlit.runtime.scriptrunner import script_runner
-
-from scripts import serve, turns
+from scripts import turns
 
 
 def _runs(wait: float) -> tuple:
@@ -61,16 +59,3 @@ def test_a_failing_run_gives_up_its_turn():
     threading.Thread(target=turns.taking_turns(done.set, wait=10)).start()
     assert done.wait(1)
 
-
-def test_the_launcher_makes_every_script_run_take_turns(monkeypatch):
-    original = script_runner.ScriptRunner._run_script
-    monkeypatch.setattr(script_runner.ScriptRunner, "_run_script", original)
-    monkeypatch.setattr(serve.cli, "main", lambda: None)
-    monkeypatch.setattr(serve.sys, "argv", ["serve.py", "app.py"])
-    monkeypatch.setattr(serve.asyncio.base_events, "_set_nodelay",
-                        serve.asyncio.base_events._set_nodelay)
-    monkeypatch.setattr(serve.starlette_app, "create_streamlit_middleware",
-                        serve.starlette_app.create_streamlit_middleware)
-    serve.main()
-    wrapped = script_runner.ScriptRunner._run_script
-    assert wrapped is not original and wrapped.__wrapped__ is original
