@@ -8,17 +8,21 @@ import numpy as np
 import pandas as pd
 import streamlit as st
 
+from figures.raw import RawFigure
 from figures.style import Look
 from figures.trajectories import animation_figure, compass_figure, construction_figure, field_figure
 from mechanisms.schema import Scene, Travel
 from methods import practice_steps
 from methods.compass import construction as compass_steps
 from methods.scales import plan_scales
-from solvers.diagnostics import dead_zones, format_ranges
+from solvers import solve
+from solvers.diagnostics import Unsolvable, dead_zones, format_ranges
 from solvers.kinematics import GroupIssue, Motion
+from solvers.structure import StructureError
 from solvers.paths import (
     animation_order,
     cycle_time,
+    cycle_values,
     field_path,
     loops_backward,
     numbered_points,
@@ -32,6 +36,7 @@ from ui import practice
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, cycle, page_cache
 from ui.chapters import page_title
+from ui.crank import Crank, along, crank_frames, live
 from ui.docs import method_doc
 from ui.export import chart, csv_button, show_table
 from ui.firstpaint import waiting
@@ -39,12 +44,15 @@ from ui.fragments import fragment
 from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
 from ui.present import look
-from ui.scenes import length_slider, scene_download, scene_picker
+from ui.scenes import length_range, length_slider, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
 from ui.url import seed, url_choice
 
 RESOLUTIONS = (12, 72, 360, 3600)
 MAX_FRAMES = 120
+STRIDE = 5  # the chart's length control: a frame every 5 of its slider's steps (36 frames)
+SMOOTH_FRAMES = 360  # the finest smooth paths in those frames (3600 would send 5 MB)
+CHART_LENGTH = "chart_length"  # session: the length the chart's control moves ("L3")
 
 page_title("pages/trajectories.py")
 
@@ -94,6 +102,52 @@ def paths_figure(scene: Scene, smooth: int | None, numbered: tuple[str, ...], la
                                look_).freeze()
 
 
+@page_cache(st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR))
+def length_frames(scene: Scene, number: int, values: tuple[float, ...], smooth: int | None,
+                  numbered: tuple[str, ...], language: str, look_: Look) -> str | None:
+    """The paths figure with member ``number`` at each length of ``values`` (the chart's own
+    length control), once per geometry of the other members: ``scene`` has that member at
+    its length as loaded, so the length the page shows is not part of the key."""
+    def draw(_: int, length: float) -> dict[str, RawFigure] | None:
+        at = scene.with_(lengths={number: length})
+        try:
+            steps = solve(at, cycle_values(at, 12))
+            fine = None if smooth is None else solve(at, cycle_values(at, smooth), order=1)
+        except (Unsolvable, StructureError):  # a class III group that cannot close at all
+            return None
+        if not steps.feasible.any():
+            return None
+        return {"paths": construction_figure(steps, fine, list(numbered), title_of(at), t, look_)}
+
+    return crank_frames(draw, values, unit=float).get("paths")
+
+
+def length_control(base: Scene, scene: Scene, smooth: int | None, numbered: tuple[str, ...],
+                   asked: bool | str) -> Crank:
+    """The paths chart's own control of a link's length: the one last picked in its list
+    (member 2's at first), every ``STRIDE`` steps of that length's slider, with the frames
+    when the student asked. Letting go sets the slider (``L<number>``): a length moves in the
+    browser as φ₂ does on the plans page, where a rerun took 300 ms to redraw."""
+    keys = {f"L{n}": n for n in base.lengths}
+    if asked in keys:
+        st.session_state[CHART_LENGTH] = asked
+    number = keys.get(st.session_state.get(CHART_LENGTH), next(iter(base.lengths)))
+    lo, hi, step = length_range(base.lengths[number])
+    length = scene.lengths[number]
+    values = along(lo, hi, STRIDE * step, length)
+    frames = None
+    if asked:
+        others = {n: v for n, v in scene.lengths.items() if n != number}
+        frames = length_frames(base.with_(lengths=others, speed=scene.driver.speed), number,
+                               values, smooth, numbered, current(), look())
+    links = {n: "".join(base.members[n].axis) for n in base.lengths}
+    return Crank(values, min(range(len(values)), key=lambda k: abs(values[k] - length)),
+                 "lengths", frames, label=links[number], key=f"L{number}", unit=" m",
+                 step=f"{STRIDE * step:g} m", wraps=False,
+                 choices=tuple((f"L{n}", t("traj.chart_length", link=links[n], member=n))
+                               for n in base.lengths))
+
+
 controls, main = page_columns()
 
 
@@ -137,26 +191,30 @@ def length_sliders(base: Scene) -> dict[int, float]:
     return {number: length_slider(base, number, bind="query-params") for number in base.lengths}
 
 
-def paths_tab(scene: Scene, construction: Motion, fine: Motion, steps: int, view: str,
-              points: list[str]) -> float:
-    """The 12 positions and the paths (or the compass construction, or practising it);
-    the ms it took to build the figure."""
+def paths_tab(base: Scene, scene: Scene, construction: Motion, steps: int, view: str,
+              points: list[str], asked: bool | str) -> float:
+    """The 12 positions and the paths with the chart's own length control (or the compass
+    construction, or practising it); the ms it took to build the figure. ``asked``: the
+    control was touched (``ui.crank.live``)."""
     started = time.perf_counter()
-    numbered = numbered_points(scene, points)
+    numbered = tuple(numbered_points(scene, points))
+    control = None
     if view == "compass":
         steps_drawn = compass_steps(construction, points)
         fig = compass_figure(scene, steps_drawn, compass_texts(steps_drawn), title_of(scene), t,
                              look())
     else:
-        sense = 1.0 if scene.driver.speed >= 0 else -1.0
-        fig = paths_figure(scene.with_(speed=sense), steps if view == "smooth" else None,
-                           tuple(numbered), current(), look())
+        sensed = scene.with_(speed=1.0 if scene.driver.speed >= 0 else -1.0)
+        smooth = steps if view == "smooth" else None
+        fig = paths_figure(sensed, smooth, numbered, current(), look())
+        if smooth is None or smooth <= SMOOTH_FRAMES:
+            control = length_control(base, sensed, smooth, numbered, asked)
     figure_ms = (time.perf_counter() - started) * 1e3
     if view == "compass" and practice.toggle("pr_compass"):
         practice.panel(practice_steps.compass(construction, plan_scales(scene, None)["L"]),
                        "pr_compass", t("practice.sheet_compass"))
     else:
-        chart(fig, f"{scene.id}-paths", key="paths")
+        chart(fig, f"{scene.id}-paths", key="paths", crank=control)
     if view == "compass":
         method_doc("compass")
     return figure_ms
@@ -257,6 +315,7 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
     the solve, the chart, the readouts and the resolution table; not app.py, the scene
     picker, the resolution, the view and the points, which rerun the page and this with
     it. Its sliders are drawn on every run (Streamlit forgets a widget a run leaves out)."""
+    asked = live()
     with geometry:
         if base.travel:
             scene = base.with_(travel=travel_sliders(base.travel))
@@ -269,8 +328,13 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
         scene_download(scene)
 
     started = time.perf_counter()
-    construction = cycle(scene, 12)
-    fine = cycle(scene, steps, order=1)
+    try:
+        construction = cycle(scene, 12)
+        fine = cycle(scene, steps, order=1)
+    except (Unsolvable, StructureError) as exc:  # lengths a class III group cannot close with
+        with main:
+            st.error(t("traj.unbuildable", reason=message(exc)))
+        return
     solve_ms = (time.perf_counter() - started) * 1e3
 
     with main:
@@ -283,7 +347,7 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
     figure_ms = 0.0
     if tab_paths.open:
         with tab_paths:
-            figure_ms = paths_tab(scene, construction, fine, steps, view, points)
+            figure_ms = paths_tab(base, scene, construction, steps, view, points, asked)
     if tab_anim.open:
         with tab_anim:
             if not fine.feasible.all():

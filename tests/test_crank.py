@@ -9,7 +9,7 @@ import pytest
 from figures.raw import RawFigure
 from tests.test_pages import charts, decode, page
 from mechanisms import load_preset
-from ui.crank import LIVE, Crank, crank_frames, nearest, task_turn, turn
+from ui.crank import LIVE, Crank, along, crank_frames, nearest, task_turn, turn
 
 
 def drawing(_: int, angle: float) -> dict[str, RawFigure] | None:
@@ -141,3 +141,50 @@ def test_a_new_scene_brings_its_own_frames():
     k = after["crank"]["index"]  # the task's own φ₂ = 50.29°, a frame of its own
     assert after["crank"]["values"][k] == pytest.approx(50.2857)
     same_drawing(rebuilt(after["crank"]["turn"], k), after["figure"])
+
+
+def test_a_length_s_frames_run_along_its_slider_with_the_shown_length_among_them():
+    assert along(0.025, 0.2, 0.005, 0.1) == tuple(round(0.025 + 0.005 * k, 6) for k in range(36))
+    off = along(0.025, 0.2, 0.005, 0.101)  # set between two frames with the page's slider
+    assert len(off) == 37 and 0.101 in off and list(off) == sorted(off)
+
+
+# --- the trajectories page: the chart's own control of a link's length
+
+def test_the_length_frames_drawn_at_the_page_s_length_are_the_page_s_figure():
+    at = page("pages/trajectories.py", lang="en", scene="four-bar-crank-rocker")
+    control = charts(at)["paths"]["crank"]
+    assert control["turn"] is None and control["key"] == "L2" and not control["wraps"]
+    assert [key for key, _ in control["choices"]] == ["L2", "L3", "L4"]
+    at.session_state[LIVE] = "L3"  # what picking member 3 in the control's list sets
+    at.run()
+    sent = charts(at)["paths"]
+    control = sent["crank"]
+    assert control["key"] == "L3" and control["label"] == "AB" and control["unit"] == " m"
+    k = control["index"]
+    assert control["values"][k] == 0.35 and len(control["turn"]["frames"]) == 36
+    same_drawing(rebuilt(control["turn"], k), sent["figure"])
+    at.session_state["L3"] = control["values"][k + 4]  # let go four frames on: the page follows
+    at.session_state[LIVE] = True
+    at.run()
+    moved = charts(at)["paths"]
+    assert moved["crank"]["key"] == "L3" and moved["crank"]["index"] == k + 4
+    same_drawing(rebuilt(moved["crank"]["turn"], k + 4), moved["figure"])
+    assert moved["crank"]["turn"] == control["turn"]  # the same frames: the shown length is no key
+    assert moved["figure"] != sent["figure"]
+    at.run()  # any other rerun sends no frames, and the list keeps the length picked
+    assert charts(at)["paths"]["crank"]["turn"] is None
+    assert charts(at)["paths"]["crank"]["key"] == "L3"
+
+
+def test_a_length_no_position_can_be_built_with_is_a_gap_and_the_page_says_why():
+    at = page("pages/trajectories.py", lang="en", scene="triad-full-turn")
+    at.session_state[LIVE] = "L3"
+    at.run()
+    control = charts(at)["paths"]["crank"]
+    frames = control["turn"]["frames"]
+    assert frames[0] is None and frames[control["index"]] is not None  # a triad that cannot close
+    at.session_state["L3"] = control["values"][0]  # let go there
+    at.run()
+    assert not at.exception
+    assert "cannot be assembled" in at.error[0].value and "III(3,4,5,6)" in at.error[0].value

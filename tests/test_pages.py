@@ -126,7 +126,7 @@ def test_every_chart_is_drawn_in_place_in_the_house_style(chapter):
         layout = body["figure"]["layout"]
         assert "Source Sans" in layout["font"]["family"] and layout["title"]["x"] == 0.0
         assert body["src"].endswith(".js") and body["filename"]
-        crank = {"play", "pause", "unreachable"} if body["crank"] else set()  # a chart's own φ₂
+        crank = {"play", "pause", "unreachable", "choice"} if body["crank"] else set()  # its own φ₂
         assert set(body["labels"]) == {"svg", "png", "fullscreen"} | crank
 
 

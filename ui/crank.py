@@ -1,6 +1,8 @@
 """The crank angle in the browser (issue 21): a page's figures at every few degrees of φ₂,
 sent once per geometry, so that the chart element (ui/plot.js) redraws them locally while a
-student scrubs or plays φ₂, with no rerun until the slider is released.
+student scrubs or plays φ₂, with no rerun until the slider is released. The same control
+moves a link's length on the trajectories page (issue 38): there a rerun is 1.5–2.5 times
+Streamlit's own floor in the browser, which alone is about 150 ms.
 
 Each frame carries only what differs from the first one: the traces that moved and the
 layout keys that changed (a title with the angle, the letters). A position the mechanism
@@ -26,19 +28,33 @@ LIVE = "crank_live"  # session key: the student asked for the frames (see live()
 
 @dataclass(frozen=True)
 class Crank:
-    """A chart's own φ₂ control: the frame angles (degrees), the one showing, the group of
-    charts that move together, and the frames themselves (JSON) once the student has asked
-    for them by touching the control — ordinary reruns do not pay for 72 figures."""
+    """A chart's own control of φ₂ (or of another quantity, ``key``): the frame values, the
+    one showing, the group of charts that move together, and the frames themselves (JSON)
+    once the student has asked for them by touching the control — ordinary reruns do not pay
+    for 72 figures.
+
+    ``key``: the session key and URL parameter the control sets when let go; ``unit`` is
+    shown after the value and ``step`` names what a step button adds. ``choices``: other
+    quantities the control can move instead, (key, name) each, offered in a list beside it;
+    picking one asks for its frames."""
 
     values: tuple[float, ...]
     index: int
     group: str
     frames: str | None = None  # {"base", "frames"} from crank_frames
     label: str = "φ₂"
+    key: str = "at"
+    unit: str = "°"
+    step: str = f"{STEP_DEG:g}°"
+    choices: tuple[tuple[str, str], ...] = ()
+    wraps: bool = True  # a step past the last value comes round to the first (not a length)
 
     def json(self) -> str:
         return (f'{{"values": {json.dumps(list(self.values))}, "index": {self.index}, '
                 f'"group": {json.dumps(self.group)}, "label": {json.dumps(self.label)}, '
+                f'"key": {json.dumps(self.key)}, "unit": {json.dumps(self.unit)}, '
+                f'"step": {json.dumps(self.step)}, "choices": {json.dumps(self.choices)}, '
+                f'"wraps": {json.dumps(self.wraps)}, '
                 f'"turn": {self.frames or "null"}}}')
 
 
@@ -67,12 +83,23 @@ def _apart(a: float, b: float) -> float:
     return abs((a - b + 180.0) % 360.0 - 180.0)
 
 
+def along(lo: float, hi: float, step: float, value: float) -> tuple[float, ...]:
+    """The frame values along a slider's range ``lo`` … ``hi``, ``step`` apart, with the
+    slider's own ``value`` among them (a student may have set it between two frames)."""
+    grid = [round(lo + k * step, 6) for k in range(int((hi - lo) / step + 1e-9) + 1)]
+    if min(abs(g - value) for g in grid) > 1e-9:
+        grid = sorted(grid + [value])
+    return tuple(grid)
+
+
 def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
-                 values: tuple[float, ...]) -> dict[str, str]:
+                 values: tuple[float, ...], unit: Callable[[float], float] = math.radians
+                 ) -> dict[str, str]:
     """``draw(k, φ₂ in rad)`` gives a page's figures at frame k, by name (None where the
     mechanism cannot be drawn); per name, the JSON of its frames, each a patch on the first.
+    ``unit`` turns a value into what ``draw`` takes (``float`` for a length in metres).
     Numbers are rounded to 5 significant digits (a tenth of a millimetre on a drawing)."""
-    drawn = [draw(k, math.radians(v)) for k, v in enumerate(values)]
+    drawn = [draw(k, unit(v)) for k, v in enumerate(values)]
     names = next((list(d) for d in drawn if d), [])
     out = {}
     for name in names:
@@ -130,7 +157,8 @@ def _patch(base: dict, spec: dict, varying: set[str]) -> dict:
     return patch
 
 
-def live() -> bool:
+def live() -> bool | str:
     """Whether this run answers a touch of a chart's φ₂ control (the frames are sent then),
-    read once a run: any other rerun, a geometry change among them, sends none."""
-    return bool(st.session_state.pop(LIVE, False))
+    read once a run: any other rerun, a geometry change among them, sends none. A control
+    with choices says which one the student picked (its key)."""
+    return st.session_state.pop(LIVE, False)

@@ -36,22 +36,25 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
     """A Plotly chart whose toolbar saves it as SVG (to print) or PNG, and shows it full screen.
     Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE).
     ``editable``: its shapes drag and its paper clicks (ui.plot.plot), read from the result.
-    ``crank``: its own φ₂ control (ui.crank); letting go of it sets the page's φ₂ (``at``).
+    ``crank``: its own φ₂ control (ui.crank); letting go of it sets the page's φ₂ (``at``),
+    or the quantity the control moves (``crank.key``).
     On a Serbian page its numbers have a decimal comma (Plotly's ``separators``)."""
     labels = {"svg": t("export.save_svg"), "png": t("export.save_png"),
               "fullscreen": t("export.fullscreen")}
+    turned = None
     if crank is not None:
-        labels.update(play=t("fig.play"), pause=t("fig.pause"), unreachable=t("fig.unreachable"))
-    return plot(fig, key, filename, labels, editable, crank, None if crank is None else _turned,
+        labels.update(play=t("fig.play"), pause=t("fig.pause"), choice=t("fig.choice"),
+                      unreachable=t("fig.unreachable" if crank.key == "at" else "fig.unbuildable"))
+
+        def turned(value: float | None, asked: bool | str) -> None:
+            """The student touched the control or picked one of its choices (None), or let
+            go of it at ``value``: the rerun that follows sends the frames (of the choice
+            ``asked`` names), and takes the quantity from the control."""
+            st.session_state[LIVE] = asked
+            if value is not None:
+                st.session_state[crank.key] = value
+    return plot(fig, key, filename, labels, editable, crank, turned,
                 separators=",." if current().startswith("sr") else None)
-
-
-def _turned(degrees: float | None) -> None:
-    """The student touched a chart's φ₂ control (None) or let go of it at ``degrees``: the
-    rerun that follows sends the frames, and takes φ₂ from the control."""
-    st.session_state[LIVE] = True
-    if degrees is not None:
-        st.session_state["at"] = degrees
 
 
 def print_button(svg: Callable[[], str], filename: str, key: str) -> None:

@@ -126,7 +126,9 @@ function listen(gd, send) {
 // φ₂ in the browser (ui/crank.py): a slider and play controls under the chart. The first
 // touch asks the server for the figure's frames over a turn (the trigger "frames"); from
 // then on every chart of the same group redraws locally while φ₂ moves, and only letting
-// go (or pausing, or a step button) goes back to the server, as the trigger "at".
+// go (or pausing, or a step button) goes back to the server, as the trigger "at". The same
+// control moves a link's length (spec.key "L3", in metres), with a list of the lengths it
+// can move (spec.choices): picking one asks for that one's frames.
 function frameFigure(gd, k) {
   const turn = gd.__crank.spec.turn;
   const patch = turn && turn.frames[k];
@@ -144,10 +146,11 @@ function showIndex(crank, k) {
   crank.index = k;
   crank.range.value = String(k);
   const reachable = !spec.turn || spec.turn.frames[k];
-  crank.label.textContent = `${spec.label} = ${spec.values[k]}°${reachable ? "" : " ✕"}`;
+  const value = String(spec.values[k]).replace(".", crank.decimal);
+  crank.label.textContent = `${spec.label} = ${value}${spec.unit}${reachable ? "" : " ✕"}`;
   crank.label.title = reachable ? "" : crank.unreachable;  // why the chart does not move
-  // a screen reader names the slider and reads the angle, not the frame's index
-  crank.range.setAttribute("aria-label", `${spec.label} [°]`);
+  // a screen reader names the slider and reads the value, not the frame's index
+  crank.range.setAttribute("aria-label", `${spec.label} [${spec.unit.trim()}]`);
   crank.range.setAttribute("aria-valuetext", crank.label.textContent);
 }
 
@@ -161,16 +164,24 @@ function moveCrank(gd, k, release) {
   const { spec } = gd.__crank;
   window.dispatchEvent(new CustomEvent("mehanizmi-crank", { detail: { group: spec.group, index: k } }));
   const url = new URL(window.location.href);  // the link follows φ₂ while it moves
-  url.searchParams.set("at", String(spec.values[k]));
+  url.searchParams.set(spec.key, String(spec.values[k]));
   window.history.replaceState(window.history.state, "", url);
   if (release) gd.__send.current("at", spec.values[k]);
 }
 
-function askFrames(gd) {
+function askFrames(gd, choice) {
   const crank = gd.__crank;
-  if (crank.spec.turn || crank.asked) return;
+  if (choice === undefined && (crank.spec.turn || crank.asked)) return;
   crank.asked = true;
-  gd.__send.current("frames", true);
+  gd.__send.current("frames", choice === undefined ? true : choice);
+}
+
+// the list of what the control moves (spec.choices: [key, name] each), kept up to date
+function showChoices(crank) {
+  const { choices, key } = crank.spec;
+  crank.choice.hidden = choices.length < 2;
+  crank.choice.replaceChildren(...choices.map(([value, name]) => new Option(name, value)));
+  crank.choice.value = key;
 }
 
 function crankButton(text, title, click) {
@@ -188,12 +199,13 @@ function crankControls(gd, labels) {
   if (crank.box) return;
   const box = document.createElement("div");
   box.className = "mehanizmi-crank";
-  box.style.cssText = "display:flex;align-items:center;gap:0.5em;padding:0.3em 0;font-size:0.9em";
+  box.style.cssText = "display:flex;flex-wrap:wrap;align-items:center;gap:0.5em;padding:0.3em 0;"
+    + "font-size:0.9em";  // on a phone the slider and its value take a row of their own
   const range = document.createElement("input");
   range.type = "range";
   range.min = "0";
   range.step = "1";
-  range.style.flex = "1";
+  range.style.flex = "1 1 10em";
   const label = document.createElement("span");
   label.style.minWidth = "6.5em";
   const n = () => crank.spec.values.length;
@@ -226,18 +238,24 @@ function crankControls(gd, labels) {
     play.setAttribute("aria-label", labels.play);
     return true;
   };
+  // a turn goes round; a length stops at its slider's ends
+  const next = (by) => (crank.spec.wraps ? (crank.index + by + n()) % n()
+    : Math.min(Math.max(crank.index + by, 0), n() - 1));
   const step = (by) => () => {
     crank.stop();
     askFrames(gd);
-    moveCrank(gd, (crank.index + by + n()) % n(), true);
+    moveCrank(gd, next(by), true);
   };
   range.addEventListener("pointerdown", () => askFrames(gd));
   range.addEventListener("input", () => { crank.stop(); moveCrank(gd, Number(range.value), false); });
   range.addEventListener("change", () => moveCrank(gd, Number(range.value), true));
-  box.append(crankButton("◀", `${crank.spec.label} −5°`, step(-1)), play,
-             crankButton("▶|", `${crank.spec.label} +5°`, step(1)), range, label);
+  const choice = document.createElement("select");
+  choice.setAttribute("aria-label", labels.choice);
+  choice.addEventListener("change", () => { crank.stop(); askFrames(gd, choice.value); });
+  const back = crankButton("◀", "", step(-1)), forward = crankButton("▶|", "", step(1));
+  box.append(choice, back, play, forward, range, label);
   gd.after(box);
-  Object.assign(crank, { box, range, label });
+  Object.assign(crank, { box, range, label, choice, back, forward });
   crank.follow = (e) => {
     if (e.detail.group === crank.spec.group) showFrame(gd, e.detail.index);
   };
@@ -250,13 +268,21 @@ function updateCrank(gd, spec) {
     return;
   }
   const crank = gd.__crank = gd.__crank || {};
+  const same = crank.spec && crank.spec.key === spec.crank.key;
   crank.spec = spec.crank;
   crank.unreachable = spec.labels.unreachable;
+  crank.decimal = spec.separators ? spec.separators[0] : ".";
   crank.asked = false;
   crankControls(gd, spec.labels);
   crank.range.max = String(spec.crank.values.length - 1);
-  // the server's φ₂, unless the student is on the control
-  const onIt = crank.box.contains(document.activeElement) && spec.crank.turn;
+  for (const [button, sign] of [[crank.back, "−"], [crank.forward, "+"]]) {
+    const title = `${spec.crank.label} ${sign}${spec.crank.step.replace(".", crank.decimal)}`;
+    button.title = title;
+    button.setAttribute("aria-label", title);
+  }
+  showChoices(crank);
+  // the server's value, unless the student is on the control (moving the same quantity)
+  const onIt = same && crank.box.contains(document.activeElement) && spec.crank.turn;
   showIndex(crank, onIt ? crank.index : spec.crank.index);
   if (crank.playing && spec.crank.turn) crank.start();
 }

@@ -85,7 +85,7 @@ def bundle_url(fig: RawFigure) -> str:
 
 def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
          editable: bool = False, crank: Crank | None = None,
-         on_crank: Callable[[float | None], None] | None = None, separators: str | None = None):
+         on_crank: Callable[[float | None, bool | str], None] | None = None, separators: str | None = None):
     """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns. Its
     toolbar saves it as ``filename``.svg or .png; ``labels`` name the buttons ("svg", "png",
     "fullscreen").
@@ -95,9 +95,10 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     to x, y), ``click`` ({x, y}) or ``joint`` ({point}: a joint double-clicked), each set for
     that one rerun.
 
-    ``crank``: the chart's own φ₂ control (ui/crank.py). ``on_crank`` is called before the
-    rerun the control starts: with the angle in degrees when the student lets go of it, with
-    None when they first touch it (to ask for the frames).
+    ``crank``: the chart's own φ₂ (or length) control (ui/crank.py). ``on_crank(value, asked)``
+    is called before the rerun the control starts: with the value (degrees, metres) when the
+    student lets go of it, with None when they first touch it or pick another of its choices,
+    to ask for the frames (``asked``: True, or the key of the choice picked).
 
     ``separators``: Plotly's decimal and thousands marks for the page's language (",." on
     a Serbian page), put into the figure's layout in the browser so that a cached figure
@@ -118,8 +119,8 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     if first:
         events["on_painted_change"] = painted  # the rerun it starts is what it is for
     if on_crank is not None:
-        events["on_at_change"] = lambda: on_crank(float(st.session_state[key]["at"]))
-        events["on_frames_change"] = lambda: on_crank(None)
+        events["on_at_change"] = lambda: on_crank(float(st.session_state[key]["at"]), True)
+        events["on_frames_change"] = lambda: on_crank(None, st.session_state[key]["frames"])
     return _render(key=key, data=body.encode("utf-8"), **events)
 
 

@@ -204,13 +204,18 @@ def driver_position(base: Scene) -> Scene:
     return base.with_(at=at)
 
 
+def length_range(length: float) -> tuple[float, float, float]:
+    """A length slider's ends and step: a quarter to twice ``length``, in hundredths of it."""
+    return round(length / 4, 4), round(length * 2, 4), round(length / 100, 5)
+
+
 def length_slider(base: Scene, number: int, **options) -> float:
     """Member ``number``'s length (key ``L<number>``), from a quarter to twice its length in
     ``base``: the trajectories page's, and its floor's in bench/floor_chart_app.py."""
-    length, member = base.lengths[number], base.members[number]
-    return st.slider(t("traj.length", link="".join(member.axis), member=number),
-                     round(length / 4, 4), round(length * 2, 4), step=round(length / 100, 5),
-                     format="%.4f", key=f"L{number}", **options)
+    member = base.members[number]
+    lo, hi, step = length_range(base.lengths[number])
+    return st.slider(t("traj.length", link="".join(member.axis), member=number), lo, hi,
+                     step=step, format="%.4f", key=f"L{number}", **options)
 
 
 def driver_speed(scene: Scene) -> Scene:
