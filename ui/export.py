@@ -41,20 +41,24 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
     On a Serbian page its numbers have a decimal comma (Plotly's ``separators``)."""
     labels = {"svg": t("export.save_svg"), "png": t("export.save_png"),
               "fullscreen": t("export.fullscreen")}
-    turned = None
     if crank is not None:
         labels.update(play=t("fig.play"), pause=t("fig.pause"), choice=t("fig.choice"),
                       unreachable=t("fig.unreachable" if crank.key == "at" else "fig.unbuildable"))
-
-        def turned(value: float | None, asked: bool | str) -> None:
-            """The student touched the control or picked one of its choices (None), or let
-            go of it at ``value``: the rerun that follows sends the frames (of the choice
-            ``asked`` names), and takes the quantity from the control."""
-            st.session_state[LIVE] = asked
-            if value is not None:
-                st.session_state[crank.key] = value
-    return plot(fig, key, filename, labels, editable, crank, turned,
+    return plot(fig, key, filename, labels, editable, crank,
+                None if crank is None else _turned(crank.key),
                 separators=",." if current().startswith("sr") else None)
+
+
+def _turned(key: str) -> Callable[[float | None, bool | str], None]:
+    """What a chart's own control does before the rerun it starts."""
+    def turned(value: float | None, asked: bool | str) -> None:
+        """The student touched the control or picked one of its choices (None), or let go of
+        it at ``value``: the rerun that follows sends the frames (of the choice ``asked``
+        names), and takes the quantity ``key`` from the control."""
+        st.session_state[LIVE] = asked
+        if value is not None:
+            st.session_state[key] = value
+    return turned
 
 
 def print_button(svg: Callable[[], str], filename: str, key: str) -> None:
