@@ -459,6 +459,49 @@ def test_scrubbing_phi2_redraws_the_plans_locally_and_letting_go_updates_the_tab
     assert label.get_attribute("title").startswith("The mechanism cannot be assembled")
 
 
+# the first point of E's path on the trajectories chart, as the browser holds it
+E_START = ("() => { const g = document.querySelector('.mehanizmi-plot');"
+           " const t = g.data.find(t => (t.name || '').includes('of E'));"
+           " return [+t.x[0], +t.y[0]]; }")
+METRICS = "() => [...document.querySelectorAll('[data-testid=stMetric]')].map(m => m.innerText).join('|')"
+
+
+def test_a_link_s_length_moves_the_paths_in_the_browser_and_letting_go_sets_its_slider(
+        app_url, browser, tmp_path):
+    """Picking member 3 in the chart's list brings its frames; scrubbing moves E's path to
+    where the solver puts it with that length, without a rerun (the readouts stay, the link
+    says L3=…); letting go reruns once: the page's own slider and the readouts follow."""
+    from mechanisms import load_preset
+    from solvers import solve
+    from solvers.paths import cycle_values
+
+    page = open_page(browser, f"{app_url}/trajectories?lang=en&scene=four-bar-crank-rocker")
+    page.locator(".mehanizmi-crank select").select_option("L3")
+    page.wait_for_function("() => { const c = document.querySelector('.mehanizmi-plot').__crank;"
+                           " return c.spec.turn && c.spec.key === 'L3'; }", timeout=30_000)
+    wait_idle(page)
+    readouts, start = page.evaluate(METRICS), page.evaluate(E_START)
+    values = page.evaluate("() => document.querySelector('.mehanizmi-plot').__crank.spec.values")
+    scrub(page, 20, release=False)
+    page.wait_for_function(f"s => ({E_START})()[0] !== s[0]", arg=start, timeout=5_000)
+    longer = load_preset("four-bar-crank-rocker").with_(lengths={3: values[20]})
+    e = solve(longer, cycle_values(longer, 12)).points["E"].z[0]
+    x, y = page.evaluate(E_START)
+    assert abs(complex(x, y) - e) < 1e-4  # 5 digits sent
+    assert f"L3={values[20]}" in page.url
+    assert page.locator(".mehanizmi-crank span").first.inner_text() == f"AB = {values[20]} m"
+    assert page.evaluate(METRICS) == readouts  # no rerun yet
+    shot = tmp_path / "trajectories-length-scrubbed.png"
+    page.screenshot(path=str(shot))
+    keep(shot)
+    scrub(page, 20, release=True)
+    page.wait_for_function(f"r => ({METRICS})() !== r", arg=readouts, timeout=30_000)
+    wait_idle(page)
+    page.get_by_text("Link lengths", exact=True).click()
+    slider = page.locator("[data-testid='stSlider'] input[type='range'][aria-label*='(member 3)']")
+    assert float(slider.input_value()) == values[20]
+
+
 def test_scrubbing_phi2_moves_the_loads_and_the_force_polygon_in_the_browser(app_url, browser,
                                                                             tmp_path):
     """The kinetostatics page's charts carry φ₂ frames too: the free body and its polygon
