@@ -1,8 +1,9 @@
 """In a real browser (Debian's chromium through Playwright): a slider moved with the arrow
 key → the page's figure redrawn, median of 20 changes per page, against a server on this
 machine. This is what a user waits for: the rerun, the network, and Plotly drawing. Also
-φ₂ scrubbed in the browser (ui/crank.py), and each page opened in a fresh browser context:
-navigation → first chart painted, and the bytes transferred by then.
+φ₂ (on the trajectories page a link's length) scrubbed in the browser (ui/crank.py), and
+each page opened in a fresh browser context: navigation → first chart painted, and the
+bytes transferred by then.
 
     .venv/bin/python bench/browser.py           # print the table
     .venv/bin/python bench/browser.py --write   # and regenerate its part of docs/performance.md
@@ -103,21 +104,23 @@ SCRUB = """([k, charts]) => new Promise((resolve) => {
     return out;
   };
   const range = document.querySelector('.mehanizmi-crank input');
-  range.value = String(k);
+  range.value = String(k % (Number(range.max) + 1));
   range.dispatchEvent(new Event('input'));
 })"""
 LOADED = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
           ".every(g => g.__crank && g.__crank.spec.turn)")
 FRAME_BYTES = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
                ".reduce((n, g) => n + JSON.stringify(g.__crank.spec.turn).length, 0)")
-# the pages whose charts carry φ₂ frames, on a scene that turns all the way round
-SCRUBBED = ["velocity_plans", "assur_groups?scene=triad-full-turn", "kinetostatics"]
+# the pages whose charts carry φ₂ frames, on a scene that turns all the way round, and the
+# trajectories page, whose chart moves a link's length (member 2's: the control's first)
+SCRUBBED = ["velocity_plans", "assur_groups?scene=triad-full-turn", "kinetostatics",
+            "trajectories"]
 
 
 def scrub(page, url: str) -> tuple[float, float, float, float]:
-    """Medians (ms) of a φ₂ step redrawn in the browser, to the first chart painted and to
-    all; the ms from the first touch of the control to the frames there (one rerun); and the
-    frames' size in kB."""
+    """Medians (ms) of a φ₂ (or length) step redrawn in the browser, to the first chart
+    painted and to all; the ms from the first touch of the control to the frames there (one
+    rerun); and the frames' size in kB."""
     page.goto(url)
     page.wait_for_selector(".mehanizmi-crank input", timeout=60_000)
     page.wait_for_timeout(1500)
@@ -126,7 +129,7 @@ def scrub(page, url: str) -> tuple[float, float, float, float]:
     page.wait_for_function(LOADED, timeout=60_000, polling="raf")
     first = page.evaluate("() => performance.now()") - start
     charts = page.locator(".mehanizmi-crank").count()
-    times = [page.evaluate(SCRUB, [k % 72, charts]) for k in range(1, CHANGES + 1)]
+    times = [page.evaluate(SCRUB, [k, charts]) for k in range(1, CHANGES + 1)]
     return (statistics.median(t[0] for t in times), statistics.median(t[1] for t in times), first,
             page.evaluate(FRAME_BYTES) / 1e3)
 
@@ -259,7 +262,8 @@ def table() -> str:
             first, last = measure(page, f"http://127.0.0.1:{floor_port}/?lang=en&floor=slider",
                                   "(member 2)", None)
             rows.append(f"| {SLIDER_FLOOR} | {first:.0f} | {last:.0f} |")
-            rows += ["", f"| page | φ₂ scrubbed in the browser → first chart painted, ms (median "
+            rows += ["", f"| page | φ₂ (trajectories: a link's length) scrubbed in the browser "
+                     f"→ first chart painted, ms (median "
                      f"of {CHANGES}) | → all its charts, ms | first touch → frames there (one "
                      "rerun), ms | frames, kB |", "|---|---:|---:|---:|---:|"]
             for name in SCRUBBED:
