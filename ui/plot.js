@@ -296,6 +296,26 @@ function dropCrank(gd) {
   gd.__crank = null;
 }
 
+// A horizontal legend under a chart wraps into as many rows as the chart's width needs, and
+// the figure's bottom margin (figures/style.margins) is sized for the page's main column.
+// On a phone it wraps into more rows and covered the x axis's labels and title: the margin
+// grows to the legend's measured height (one more draw), and the chart keeps that room for
+// the figures and frames it draws next.
+function withLegendRoom(gd, layout) {
+  const margin = layout.margin || {};
+  return gd.__legendRoom > margin.b ? { ...layout, margin: { ...margin, b: gd.__legendRoom } } : layout;
+}
+
+function fitLegend(gd) {
+  const { legend, font, margin, showlegend } = gd._fullLayout;
+  if (!showlegend || !legend || legend.orientation !== "h" || !legend._height) return null;
+  const room = Math.ceil(2 * font.size + 30 + legend._height);  // the axis's labels and title
+  if (room <= margin.b + font.size) return null;  // as on the desktop: the title only nears it
+  gd.__legendRoom = room;
+  gd.__layout = withLegendRoom(gd, gd.__layout);
+  return gd.__Plotly.relayout(gd, { "margin.b": room });
+}
+
 // A page's first run in a session leaves out what can wait until its first chart is on the
 // screen (ui/firstpaint.py); the first chart drawn says so once, after the frame that paints
 // it, and the rerun that starts brings the rest. (A chart of that first run keeps gd.__first
@@ -336,10 +356,12 @@ export default function (component) {
     gd.__config = config;  // the frames of φ₂ are drawn with the same config (see BUTTONS)
     // the page's decimal mark on ticks and hover labels (Serbian: 0,25), frames included
     if (spec.separators) spec.figure.layout = { ...spec.figure.layout, separators: spec.separators };
+    spec.figure.layout = withLegendRoom(gd, spec.figure.layout);
     gd.__layout = spec.figure.layout;  // and over the same layout
     if (gd.__Plotly && gd.__Plotly !== Plotly) gd.__Plotly.purge(gd);  // drawn by another bundle
     gd.__Plotly = Plotly;
     Plotly.react(gd, { ...spec.figure, config })
+      .then(() => fitLegend(gd))
       .then(() => {
         if (spec.editable) listen(gd, gd.__send);
         if (spec.first && gd.__first) reportFirstPaint(gd);  // (not if a whole run's figure came since)
