@@ -30,8 +30,15 @@ import websockets
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from deploy.client import (Report, Session, free_port, memory_mb, percentile,  # noqa: E402
-                           start_server, wait_ready)
+from deploy.client import (  # noqa: E402
+    Report,
+    Session,
+    free_port,
+    memory_mb,
+    percentile,
+    start_server,
+    wait_ready,
+)
 from mechanisms import load_preset  # noqa: E402
 from solvers.kinetostatics import analyse  # noqa: E402
 

@@ -18,7 +18,6 @@ from methods.scales import plan_scales
 from solvers import solve
 from solvers.diagnostics import Unsolvable, dead_zones, format_ranges
 from solvers.kinematics import GroupIssue, Motion
-from solvers.structure import StructureError
 from solvers.paths import (
     animation_order,
     cycle_time,
@@ -32,6 +31,7 @@ from solvers.paths import (
     strokes,
     swings,
 )
+from solvers.structure import StructureError
 from ui import practice
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, cycle, page_cache

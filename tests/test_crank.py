@@ -7,8 +7,8 @@ import math
 import pytest
 
 from figures.raw import RawFigure
-from tests.test_pages import charts, decode, page
 from mechanisms import load_preset
+from tests.test_pages import charts, decode, page
 from ui.crank import LIVE, Crank, along, crank_frames, nearest, task_turn, turn
 
 

@@ -12,8 +12,8 @@ import math
 import pandas as pd
 import streamlit as st
 
-from figures.practice import practice_figure
 from figures.plans import plain
+from figures.practice import practice_figure
 from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, polar
 from ui.export import chart
 from ui.i18n import num, t
