@@ -123,12 +123,15 @@ def length_frames(scene: Scene, number: int, values: tuple[float, ...], smooth: 
 
 
 def length_control(base: Scene, scene: Scene, smooth: int | None, numbered: tuple[str, ...],
-                   asked: bool | str) -> Crank:
+                   asked: bool | str) -> Crank | None:
     """The paths chart's own control of a link's length: the one last picked in its list
     (member 2's at first), every ``STRIDE`` steps of that length's slider, with the frames
     when the student asked. Letting go sets the slider (``L<number>``): a length moves in the
-    browser as φ₂ does on the plans page, where a rerun took 300 ms to redraw."""
+    browser as φ₂ does on the plans page, where a rerun took 300 ms to redraw. None for a
+    scene without a link length."""
     keys = {f"L{n}": n for n in base.lengths}
+    if not keys:
+        return None
     if asked in keys:
         st.session_state[CHART_LENGTH] = asked
     number = keys.get(st.session_state.get(CHART_LENGTH), next(iter(base.lengths)))
