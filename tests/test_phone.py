@@ -64,13 +64,17 @@ LEGEND_CLEARS = """() => { const svg = document.querySelector('.js-plotly-plot')
   const axis = [...svg.querySelectorAll('.xaxislayer-above .xtick text, .g-xtitle text')];
   return [legend.getBoundingClientRect().top,
           Math.max(...axis.map(e => e.getBoundingClientRect().bottom))]; }"""
+# the first chart's title: where it ends on the right, and where the chart does
+TITLE_FITS = """() => { const svg = document.querySelector('.js-plotly-plot');
+  const title = svg.querySelector('.gtitle');
+  return title && [title.getBoundingClientRect().right, svg.getBoundingClientRect().right]; }"""
 
 
 @pytest.mark.parametrize("name", PAGES)
 def test_the_first_chart_is_on_the_first_screen_and_nothing_scrolls_sideways(app_url, phone, name,
                                                                              tmp_path):
     """… and the chart's legend, wrapped into more rows than on a desktop, leaves its x axis's
-    labels and title uncovered (ui/plot.js grows the margin)."""
+    labels and title uncovered, and its title wraps within its width (ui/plot.js)."""
     page = phone(f"{app_url}/{name}?lang=sr")
     height = page.evaluate("() => window.innerHeight")
     top = page.evaluate(CHART_TOP)
@@ -79,6 +83,10 @@ def test_the_first_chart_is_on_the_first_screen_and_nothing_scrolls_sideways(app
     if clears is not None:
         legend, axis = clears
         assert axis <= legend, f"the legend starts at {legend:.0f} px, over the x axis (to {axis:.0f})"
+    fits = page.evaluate(TITLE_FITS)
+    if fits is not None:
+        title, chart = fits
+        assert title <= chart, f"the title runs to {title:.0f} px, past the chart's edge at {chart:.0f}"
     assert page.evaluate("() => document.documentElement.scrollWidth <= window.innerWidth")
     main = page.evaluate(MAIN_WIDTHS)  # Streamlit's main area scrolls on its own
     assert main[0] <= main[1], f"the page scrolls sideways: {main[0]} px wide in {main[1]}"

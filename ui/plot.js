@@ -137,7 +137,7 @@ function frameFigure(gd, k) {
   const data = patch.all  // every trace: a number is the first frame's trace of that index
     ? patch.all.map((tr) => (typeof tr === "number" ? turn.base.data[tr] : tr))
     : turn.base.data.map((tr, i) => (moved[i] ? { ...tr, ...moved[i] } : tr));
-  return { data, layout: patch.layout ? { ...gd.__layout, ...patch.layout } : gd.__layout };
+  return { data, layout: fitted(gd, patch.layout ? { ...gd.__layout, ...patch.layout } : gd.__layout) };
 }
 
 // the control's slider and words at frame k (✕ where the mechanism cannot be drawn)
@@ -296,23 +296,47 @@ function dropCrank(gd) {
   gd.__crank = null;
 }
 
-// A horizontal legend under a chart wraps into as many rows as the chart's width needs, and
-// the figure's bottom margin (figures/style.margins) is sized for the page's main column.
-// On a phone it wraps into more rows and covered the x axis's labels and title: the margin
-// grows to the legend's measured height (one more draw), and the chart keeps that room for
-// the figures and frames it draws next.
-function withLegendRoom(gd, layout) {
-  const margin = layout.margin || {};
-  return gd.__legendRoom > margin.b ? { ...layout, margin: { ...margin, b: gd.__legendRoom } } : layout;
+// A figure's margins are fixed (figures/style.margins), sized for the page's main column; on
+// a phone a chart is half as wide. Each figure and frame is drawn with:
+// - its title in as many lines as the chart's width needs (Plotly draws a title on one line,
+//   and a scene's name ran off the chart's right edge), the top margin grown by the lines;
+// - the room its legend took when drawn (fitLegend).
+const MEASURE = document.createElement("canvas").getContext("2d");
+
+function fitted(gd, layout) {
+  const title = layout.title || {};
+  const size = (title.font || {}).size || 18;
+  const lines = titleLines(title.text || "", size, (layout.font || {}).family, gd.clientWidth);
+  const margin = { ...layout.margin };
+  if (gd.__legendRoom > margin.b) margin.b = gd.__legendRoom;
+  if (lines.length > 1) margin.t = (margin.t ?? 100) + (lines.length - 1) * Math.ceil(1.3 * size);
+  if (lines.length < 2 && margin.b === (layout.margin || {}).b) return layout;
+  return { ...layout, margin, title: { ...title, text: lines.join("<br>") } };
 }
 
+function titleLines(text, size, family, width) {
+  if (!width || text.includes("<br>")) return [text];
+  MEASURE.font = `bold ${size}px ${family || "sans-serif"}`;
+  const wide = (words) => MEASURE.measureText(words.replace(/<[^>]+>/g, "")).width > width - 10;
+  const lines = [""];
+  for (const word of text.split(" ")) {
+    const line = lines[lines.length - 1];
+    if (line && wide(`${line} ${word}`)) lines.push(word);
+    else lines[lines.length - 1] = line ? `${line} ${word}` : word;
+  }
+  return lines;
+}
+
+// A horizontal legend under a chart wraps into as many rows as the chart's width needs. On a
+// phone it wraps into more rows than the margin has room for and covered the x axis's labels
+// and title: the margin grows to the legend's measured height (one more draw), and the
+// chart keeps that room for the figures and frames it draws next.
 function fitLegend(gd) {
   const { legend, font, margin, showlegend } = gd._fullLayout;
   if (!showlegend || !legend || legend.orientation !== "h" || !legend._height) return null;
   const room = Math.ceil(2 * font.size + 30 + legend._height);  // the axis's labels and title
   if (room <= margin.b + font.size) return null;  // as on the desktop: the title only nears it
   gd.__legendRoom = room;
-  gd.__layout = withLegendRoom(gd, gd.__layout);
   return gd.__Plotly.relayout(gd, { "margin.b": room });
 }
 
@@ -356,11 +380,10 @@ export default function (component) {
     gd.__config = config;  // the frames of φ₂ are drawn with the same config (see BUTTONS)
     // the page's decimal mark on ticks and hover labels (Serbian: 0,25), frames included
     if (spec.separators) spec.figure.layout = { ...spec.figure.layout, separators: spec.separators };
-    spec.figure.layout = withLegendRoom(gd, spec.figure.layout);
     gd.__layout = spec.figure.layout;  // and over the same layout
     if (gd.__Plotly && gd.__Plotly !== Plotly) gd.__Plotly.purge(gd);  // drawn by another bundle
     gd.__Plotly = Plotly;
-    Plotly.react(gd, { ...spec.figure, config })
+    Plotly.react(gd, { ...spec.figure, layout: fitted(gd, spec.figure.layout), config })
       .then(() => fitLegend(gd))
       .then(() => {
         if (spec.editable) listen(gd, gd.__send);
