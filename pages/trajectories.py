@@ -146,7 +146,7 @@ def length_control(base: Scene, scene: Scene, smooth: int | None, numbered: tupl
     links = {n: "".join(base.members[n].axis) for n in base.lengths}
     return Crank(values, min(range(len(values)), key=lambda k: abs(values[k] - length)),
                  "lengths", frames, label=links[number], key=f"L{number}", unit=" m",
-                 step=f"{STRIDE * step:g} m", wraps=False,
+                 step=f"{STRIDE * step:g} m", wraps=False, unreachable="fig.unbuildable",
                  choices=tuple((f"L{n}", t("traj.chart_length", link=links[n], member=n))
                                for n in base.lengths))
 

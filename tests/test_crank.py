@@ -184,6 +184,8 @@ def test_a_length_no_position_can_be_built_with_is_a_gap_and_the_page_says_why()
     control = charts(at)["paths"]["crank"]
     frames = control["turn"]["frames"]
     assert frames[0] is None and frames[control["index"]] is not None  # a triad that cannot close
+    why = charts(at)["paths"]["labels"]["unreachable"]  # the gap's tooltip names the length
+    assert why.startswith("The mechanism cannot be assembled with this length")
     at.session_state["L3"] = control["values"][0]  # let go there
     at.run()
     assert not at.exception

@@ -34,9 +34,10 @@ class Crank:
     for 72 figures.
 
     ``key``: the session key and URL parameter the control sets when let go; ``unit`` is
-    shown after the value and ``step`` names what a step button adds. ``choices``: other
-    quantities the control can move instead, (key, name) each, offered in a list beside it;
-    picking one asks for its frames."""
+    shown after the value and ``step`` names what a step button adds; ``unreachable`` is the
+    string (its key) that says why a gap in the frames is one. ``choices``: other quantities
+    the control can move instead, (key, name) each, offered in a list beside it; picking one
+    asks for its frames."""
 
     values: tuple[float, ...]
     index: int
@@ -48,6 +49,7 @@ class Crank:
     step: str = f"{STEP_DEG:g}°"
     choices: tuple[tuple[str, str], ...] = ()
     wraps: bool = True  # a step past the last value comes round to the first (not a length)
+    unreachable: str = "fig.unreachable"
 
     def json(self) -> str:
         return (f'{{"values": {json.dumps(list(self.values))}, "index": {self.index}, '

@@ -43,7 +43,7 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
               "fullscreen": t("export.fullscreen")}
     if crank is not None:
         labels.update(play=t("fig.play"), pause=t("fig.pause"), choice=t("fig.choice"),
-                      unreachable=t("fig.unreachable" if crank.key == "at" else "fig.unbuildable"))
+                      unreachable=t(crank.unreachable))
     return plot(fig, key, filename, labels, editable, crank,
                 None if crank is None else _turned(crank.key),
                 separators=",." if current().startswith("sr") else None)

@@ -85,7 +85,8 @@ def bundle_url(fig: RawFigure) -> str:
 
 def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
          editable: bool = False, crank: Crank | None = None,
-         on_crank: Callable[[float | None, bool | str], None] | None = None, separators: str | None = None):
+         on_crank: Callable[[float | None, bool | str], None] | None = None,
+         separators: str | None = None):
     """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns. Its
     toolbar saves it as ``filename``.svg or .png; ``labels`` name the buttons ("svg", "png",
     "fullscreen").
