@@ -90,6 +90,9 @@ def type_cell(page, header: str, row: int, column: int, text: str, redraws: bool
         page.wait_for_timeout(300)  # the tab's content laid out
         box = grid.bounding_box()
         page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * row + 17)
+        if not grid.evaluate("g => g.contains(document.activeElement)"):
+            continue  # the click missed the grid (still laid out): the keys below would go to
+            # the tabs, whose arrow keys switch tabs and take the table away
         page.keyboard.press("Home")  # the row's first column, however the grid is scrolled
         for _ in range(column):
             page.keyboard.press("ArrowRight")
