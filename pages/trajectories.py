@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 import numpy as np
 import pandas as pd
@@ -36,7 +37,7 @@ from ui import practice
 from ui.benchmarks import speed_panel
 from ui.cache import BY_REPR, cycle, page_cache
 from ui.chapters import page_title
-from ui.crank import Crank, along, crank_frames, live
+from ui.crank import Crank, Ranged, crank_frames, live, slider_control
 from ui.docs import method_doc
 from ui.export import chart, csv_button, show_table
 from ui.firstpaint import waiting
@@ -50,9 +51,14 @@ from ui.url import seed, url_choice
 
 RESOLUTIONS = (12, 72, 360, 3600)
 MAX_FRAMES = 120
-STRIDE = 5  # the chart's length control: a frame every 5 of its slider's steps (36 frames)
-SMOOTH_FRAMES = 360  # the finest smooth paths in those frames (3600 would send 5 MB)
-CHART_LENGTH = "chart_length"  # session: the length the chart's control moves ("L3")
+SMOOTH_FRAMES = 360  # the finest paths a chart's control has frames of (3600 would send 5 MB)
+CHART_LENGTH = "chart_length"  # session: the length the paths chart's control moves ("L3")
+CHART_TRAVEL = "chart_travel"  # session: what of the travel the field chart's control moves
+# the hay tedder's travel (task 1.3), slider by slider: its label, Travel's field, range, unit
+TRAVEL = {"vR": ("traj.v_R", "speed", 0.5, 8.0, 0.1, " m/s"),
+          "Rt": ("traj.R_t", "wheel_radius", 0.15, 0.6, 0.01, " m"),
+          "Ra": ("traj.R_a", "sprocket_wheel", 0.02, 0.2, 0.005, " m"),
+          "Rb": ("traj.R_b", "sprocket_crank", 0.02, 0.2, 0.005, " m")}
 
 page_title("pages/trajectories.py")
 
@@ -124,31 +130,63 @@ def length_frames(scene: Scene, number: int, values: tuple[float, ...], smooth: 
 
 def length_control(base: Scene, scene: Scene, smooth: int | None, numbered: tuple[str, ...],
                    asked: bool | str) -> Crank | None:
-    """The paths chart's own control of a link's length: the one last picked in its list
-    (member 2's at first), every ``STRIDE`` steps of that length's slider, with the frames
-    when the student asked. Letting go sets the slider (``L<number>``): a length moves in the
-    browser as φ₂ does on the plans page, where a rerun took 300 ms to redraw. None for a
-    scene without a link length."""
-    keys = {f"L{n}": n for n in base.lengths}
-    if not keys:
+    """The paths chart's own control of a link's length (``ui.crank.slider_control``), the
+    one last picked in its list, member 2's at first: a length moves in the browser as φ₂
+    does on the plans page, where a rerun took 300 ms to redraw. None for a scene without a
+    link length."""
+    if not base.lengths:
         return None
-    if asked in keys:
-        st.session_state[CHART_LENGTH] = asked
-    number = keys.get(st.session_state.get(CHART_LENGTH), next(iter(base.lengths)))
-    lo, hi, step = length_range(base.lengths[number])
-    length = scene.lengths[number]
-    values = along(lo, hi, STRIDE * step, length)
-    frames = None
-    if asked:
-        others = {n: v for n, v in scene.lengths.items() if n != number}
-        frames = length_frames(base.with_(lengths=others, speed=scene.driver.speed), number,
-                               values, smooth, numbered, current(), look())
     links = {n: "".join(base.members[n].axis) for n in base.lengths}
-    return Crank(values, min(range(len(values)), key=lambda k: abs(values[k] - length)),
-                 "lengths", frames, label=links[number], key=f"L{number}", unit=" m",
-                 step=f"{STRIDE * step:g} m", wraps=False, unreachable="fig.unbuildable",
-                 choices=tuple((f"L{n}", t("traj.chart_length", link=links[n], member=n))
-                               for n in base.lengths))
+    sliders = {f"L{n}": Ranged(links[n], t("traj.chart_length", link=links[n], member=n),
+                               *length_range(length), " m", scene.lengths[n])
+               for n, length in base.lengths.items()}
+
+    def frames(key: str, values: tuple[float, ...]) -> str | None:
+        number = int(key[1:])
+        others = {n: v for n, v in scene.lengths.items() if n != number}
+        return length_frames(base.with_(lengths=others, speed=scene.driver.speed), number,
+                             values, smooth, numbered, current(), look())
+
+    return slider_control(sliders, CHART_LENGTH, "lengths", asked, frames, "fig.unbuildable")
+
+
+@page_cache(st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR))
+def travel_frames(scene: Scene, field: str, values: tuple[float, ...], steps: int, cycles: int,
+                  point: str, language: str, look_: Look) -> str | None:
+    """The field chart with the travel's ``field`` at each of ``values``, once per geometry
+    and the rest of the travel: ``scene`` has that field at a fixed value, so the one the
+    page shows is not part of the key. The linkage is solved once: the travel changes only
+    ω₂, so only the times at which the point passes its positions."""
+    positions = solve(scene, cycle_values(scene, steps))
+
+    def draw(_: int, value: float) -> dict[str, RawFigure]:
+        at = scene.with_(travel=replace(scene.travel, **{field: value}))
+        times, path = field_path(replace(positions, scene=at), at.travel, point, cycles)
+        return {"field": field_figure(times, path, positions.points[point].z, point, steps,
+                                      t("traj.field_title", point=point), t, look_)}
+
+    return crank_frames(draw, values, unit=float).get("field")
+
+
+def travel_control(scene: Scene, steps: int, cycles: int, point: str,
+                   asked: bool | str) -> Crank:
+    """The field chart's own control of the chain drive (``ui.crank.slider_control``), R_t
+    at first: the tine's loops open and close in the browser as the drive's ratio moves. Not
+    v_R: the crank is driven from the ground wheel, so the machine travels 2π·R_t·R_b/R_a a
+    crank turn at any speed, and v_R changes only the times, not the path."""
+    def words(label: str) -> tuple[str, str]:  # "⟨v_R⟩ — travel speed … [m/s]": v_R, its name
+        text = t(label)
+        return text.split(" — ")[0], text.rsplit(" [", 1)[0]
+
+    sliders = {key: Ranged(*words(label), lo, hi, step, unit, getattr(scene.travel, field))
+               for key, (label, field, lo, hi, step, unit) in TRAVEL.items() if key != "vR"}
+
+    def frames(key: str, values: tuple[float, ...]) -> str | None:
+        field, lo = TRAVEL[key][1], TRAVEL[key][2]
+        fixed = scene.with_(travel=replace(scene.travel, **{field: lo}))
+        return travel_frames(fixed, field, values, steps, cycles, point, current(), look())
+
+    return slider_control(sliders, CHART_TRAVEL, "travel", asked, frames, "fig.unreachable")
 
 
 controls, main = page_columns()
@@ -179,14 +217,10 @@ def defaults(base: Scene) -> dict[str, object]:
 
 
 def travel_sliders(base: Travel) -> Travel:
-    """v_R and the chain drive of task 1.3."""
-    def slider(label: str, key: str, lo: float, hi: float, step: float) -> float:
-        return st.slider(t(label), lo, hi, step=step, key=key, bind="query-params")
-
-    return Travel(speed=slider("traj.v_R", "vR", 0.5, 8.0, 0.1),
-                  wheel_radius=slider("traj.R_t", "Rt", 0.15, 0.6, 0.01),
-                  sprocket_wheel=slider("traj.R_a", "Ra", 0.02, 0.2, 0.005),
-                  sprocket_crank=slider("traj.R_b", "Rb", 0.02, 0.2, 0.005), angle=base.angle)
+    """v_R and the chain drive of task 1.3, kept in the URL."""
+    return Travel(**{field: st.slider(t(label), lo, hi, step=step, key=key, bind="query-params")
+                     for key, (label, field, lo, hi, step, _) in TRAVEL.items()},
+                  angle=base.angle)
 
 
 def length_sliders(base: Scene) -> dict[int, float]:
@@ -223,13 +257,15 @@ def paths_tab(base: Scene, scene: Scene, construction: Motion, steps: int, view:
     return figure_ms
 
 
-def field_tab(scene: Scene, fine: Motion, steps: int, point: str) -> None:
-    """The tine's path in the field (the linkage and the travel), and the drive's figures."""
+def field_tab(scene: Scene, fine: Motion, steps: int, point: str, asked: bool | str) -> None:
+    """The tine's path in the field (the linkage and the travel) with the chart's own control
+    of the travel, and the drive's figures."""
     cycles = st.slider(t("traj.cycles"), 1, 6, 3, key="cycles", bind="query-params")
     times, field = field_path(fine, scene.travel, point, cycles)
+    control = travel_control(scene, steps, cycles, point, asked) if steps <= SMOOTH_FRAMES else None
     chart(field_figure(times, field, fine.points[point].z, point, steps,
                        t("traj.field_title", point=point), t, look()),
-          f"{scene.id}-field", key="field")
+          f"{scene.id}-field", key="field", crank=control)
     tr = scene.travel
     loops, slowest = loops_backward(fine, tr, point)
     cols = st.columns(3)
@@ -359,7 +395,7 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
                   f"{scene.id}-animation", key="animation")
     if tab_field and tab_field[0].open:
         with tab_field[0]:
-            field_tab(scene, fine, steps, points[-1])
+            field_tab(scene, fine, steps, points[-1], asked)
     if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
         with geometry:
             readouts(scene, fine, points)

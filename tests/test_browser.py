@@ -501,6 +501,54 @@ def test_a_link_s_length_moves_the_paths_in_the_browser_and_letting_go_sets_its_
     assert float(slider.input_value()) == values[20]
 
 
+# the end of the longest line on the chart (the tine's path in the field), as the browser holds it
+FIELD_END = ("() => { const g = document.querySelector('.mehanizmi-plot');"
+             " const t = g._fullData.reduce((a, b) => (b.x.length > a.x.length ? b : a));"
+             " return [+t.x[t.x.length - 1], +t.y[t.y.length - 1]]; }")
+
+
+def test_the_chain_drive_moves_the_tine_s_field_path_in_the_browser(app_url, browser, tmp_path):
+    """On a Serbian page: touching the field chart's control brings R_t's frames; scrubbing
+    moves the tine's path to where the solver puts it with that wheel, without a rerun (the
+    link says Rt=…, the value has a decimal comma); letting go reruns once and ω_b follows."""
+    from dataclasses import replace
+
+    from mechanisms import load_preset
+    from solvers import solve
+    from solvers.paths import cycle_values, field_path
+
+    page = open_page(browser, f"{app_url}/trajectories?lang=sr&scene=zbirka-1.3")
+    page.get_by_role("tab", name="Na njivi").click()
+    page.wait_for_selector(".mehanizmi-crank input", timeout=30_000)
+    page.locator(".mehanizmi-crank input").first.dispatch_event("pointerdown")
+    page.wait_for_function("() => { const c = document.querySelector('.mehanizmi-plot').__crank;"
+                           " return c.spec.turn && c.spec.key === 'Rt'; }", timeout=30_000)
+    wait_idle(page)
+    readouts, end = page.evaluate(METRICS), page.evaluate(FIELD_END)
+    values = page.evaluate("() => document.querySelector('.mehanizmi-plot').__crank.spec.values")
+    scrub(page, 30, release=False)
+    page.wait_for_function(f"s => ({FIELD_END})()[0] !== s[0]", arg=end, timeout=5_000)
+    tedder = load_preset("zbirka-1.3")
+    wheel = tedder.with_(travel=replace(tedder.travel, wheel_radius=values[30]))
+    point = [p for p in wheel.point_names if p not in wheel.frame][-1]
+    _, path = field_path(solve(wheel, cycle_values(wheel, 360)), wheel.travel, point, 3)
+    x, y = page.evaluate(FIELD_END)
+    assert abs(complex(x, y) - path[-1]) < 1e-4 * abs(path[-1])  # 5 digits sent
+    assert f"Rt={values[30]}" in page.url
+    assert page.locator(".mehanizmi-crank span").first.inner_text() == (
+        f"R_t = {values[30]} m".replace(".", ","))
+    assert page.evaluate(METRICS) == readouts  # no rerun yet
+    page.locator(".mehanizmi-crank").scroll_into_view_if_needed()
+    shot = tmp_path / "trajectories-field-scrubbed-sr.png"
+    page.screenshot(path=str(shot))
+    keep(shot)
+    scrub(page, 30, release=True)
+    page.wait_for_function(f"r => ({METRICS})() !== r", arg=readouts, timeout=30_000)
+    omega_b = tedder.travel.speed / values[30] * tedder.travel.sprocket_wheel / (
+        tedder.travel.sprocket_crank)
+    assert f"{omega_b:.4g}".replace(".", ",") + " s⁻¹" in page.evaluate(METRICS)
+
+
 def test_scrubbing_phi2_moves_the_loads_and_the_force_polygon_in_the_browser(app_url, browser,
                                                                             tmp_path):
     """The kinetostatics page's charts carry φ₂ frames too: the free body and its polygon

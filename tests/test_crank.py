@@ -177,6 +177,30 @@ def test_the_length_frames_drawn_at_the_page_s_length_are_the_page_s_figure():
     assert charts(at)["paths"]["crank"]["key"] == "L3"
 
 
+def test_the_tedder_s_travel_moves_on_the_field_chart_and_its_frames_are_the_page_s_figure():
+    at = page("pages/trajectories.py", lang="en", scene="zbirka-1.3", tab="In the field", Rt=0.4)
+    control = charts(at)["field"]["crank"]
+    assert control["turn"] is None and control["key"] == "Rt" and control["unit"] == " m"
+    assert [key for key, _ in control["choices"]] == ["Rt", "Ra", "Rb"]  # v_R moves no path
+    assert control["values"][control["index"]] == 0.4 and control["step"] == "0.01 m"
+    at.session_state[LIVE] = "Ra"  # picking R_a, the sprocket on the wheel's shaft, in the list
+    at.run()
+    sent = charts(at)["field"]
+    control = sent["crank"]
+    assert control["key"] == "Ra" and control["label"] == "R_a" and control["unit"] == " m"
+    k = control["index"]
+    assert len(control["turn"]["frames"]) == len(control["values"]) == 37
+    same_drawing(rebuilt(control["turn"], k), sent["figure"])
+    at.session_state["Ra"] = control["values"][k + 6]  # let go: the drive turns the crank faster
+    at.session_state[LIVE] = True
+    at.run()
+    moved = charts(at)["field"]
+    assert moved["crank"]["index"] == k + 6 and moved["crank"]["turn"] == control["turn"]
+    same_drawing(rebuilt(moved["crank"]["turn"], k + 6), moved["figure"])
+    assert moved["figure"] != sent["figure"]
+    assert at.slider(key="Ra").value == control["values"][k + 6]  # the page's slider follows
+
+
 def test_a_length_no_position_can_be_built_with_is_a_gap_and_the_page_says_why():
     at = page("pages/trajectories.py", lang="en", scene="triad-full-turn")
     at.session_state[LIVE] = "L3"

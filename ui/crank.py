@@ -1,8 +1,9 @@
 """The crank angle in the browser (issue 21): a page's figures at every few degrees of φ₂,
 sent once per geometry, so that the chart element (ui/plot.js) redraws them locally while a
 student scrubs or plays φ₂, with no rerun until the slider is released. The same control
-moves a link's length on the trajectories page (issue 38): there a rerun is 1.5–2.5 times
-Streamlit's own floor in the browser, which alone is about 150 ms.
+moves one of a page's sliders (``slider_control``: a link's length, the hay tedder's travel)
+on the trajectories page (issue 38): there a rerun is 1.5–2.5 times Streamlit's own floor in
+the browser, which alone is about 150 ms.
 
 Each frame carries only what differs from the first one: the traces that moved and the
 layout keys that changed (a title with the angle, the letters). A position the mechanism
@@ -15,6 +16,7 @@ import json
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import streamlit as st
 from plotly.io.json import to_json_plotly
@@ -23,6 +25,7 @@ from figures.raw import RawFigure
 from mechanisms.schema import Scene
 
 STEP_DEG = 5.0  # 72 frames a turn: smooth to scrub, small enough to send
+FRAMES = 36  # about this many frames along a slider's range (a link's length: every 5th step)
 LIVE = "crank_live"  # session key: the student asked for the frames (see live())
 
 
@@ -92,6 +95,41 @@ def along(lo: float, hi: float, step: float, value: float) -> tuple[float, ...]:
     if min(abs(g - value) for g in grid) > 1e-9:
         grid = sorted(grid + [value])
     return tuple(grid)
+
+
+class Ranged(NamedTuple):
+    """A page's slider that a chart's own control can move: its symbol on the chart, its name
+    in the control's list, its range and step, its unit and the value the page shows."""
+
+    label: str
+    name: str
+    lo: float
+    hi: float
+    step: float
+    unit: str
+    value: float
+
+
+def slider_control(sliders: dict[str, Ranged], remembered: str, group: str, asked: bool | str,
+                   frames: Callable[[str, tuple[float, ...]], str | None],
+                   unreachable: str) -> Crank:
+    """A chart's own control of one of the page's ``sliders`` (by their keys): the one last
+    picked in its list (kept in the session as ``remembered``; the first at first), at about
+    ``FRAMES`` values along its range, the page's value among them, with their frames
+    (``frames(key, values)``, a page's cached crank_frames) when the student asked
+    (``asked``: live()). Letting go sets that slider (ui.export.chart)."""
+    if asked in sliders:
+        st.session_state[remembered] = asked
+    key = st.session_state.get(remembered)
+    key = key if key in sliders else next(iter(sliders))
+    shown = sliders[key]
+    stride = max(1, round((shown.hi - shown.lo) / shown.step / FRAMES)) * shown.step
+    values = along(shown.lo, shown.hi, stride, shown.value)
+    return Crank(values, min(range(len(values)), key=lambda k: abs(values[k] - shown.value)),
+                 group, frames(key, values) if asked else None, label=shown.label, key=key,
+                 unit=shown.unit, step=f"{round(stride, 6):g}{shown.unit}", wraps=False,
+                 unreachable=unreachable,
+                 choices=tuple((k, slider.name) for k, slider in sliders.items()))
 
 
 def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
