@@ -112,26 +112,31 @@ LOADED = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
 FRAME_BYTES = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
                ".reduce((n, g) => n + JSON.stringify(g.__crank.spec.turn).length, 0)")
 # the pages whose charts carry φ₂ frames, on a scene that turns all the way round, and the
-# trajectories page, whose chart moves a link's length (member 2's: the control's first)
-SCRUBBED = ["velocity_plans", "assur_groups?scene=triad-full-turn", "kinetostatics",
-            "trajectories"]
+# trajectories page, whose paths chart moves a link's length (member 2's: the control's
+# first) and whose tedder's field chart moves the chain drive (R_t first); the tab to open
+SCRUBBED = [("velocity_plans", None), ("assur_groups?scene=triad-full-turn", None),
+            ("kinetostatics", None), ("trajectories", None),
+            ("trajectories?scene=zbirka-1.3", "In the field")]
 
 
-def scrub(page, url: str) -> tuple[float, float, float, float]:
-    """Medians (ms) of a φ₂ (or length) step redrawn in the browser, to the first chart
-    painted and to all; the ms from the first touch of the control to the frames there (one
-    rerun); and the frames' size in kB."""
+def scrub(page, url: str, tab: str | None) -> tuple[float, float, float, float]:
+    """Medians (ms) of a φ₂ (or length, or drive) step redrawn in the browser, to the first
+    chart painted and to all; the ms from the first touch of the control to the frames there
+    (one rerun); and the frames' size in kB."""
     page.goto(url)
+    if tab:
+        page.get_by_role("tab", name=tab).click(timeout=60_000)
     page.wait_for_selector(".mehanizmi-crank input", timeout=60_000)
     page.wait_for_timeout(1500)
     start = page.evaluate("() => performance.now()")
     page.locator(".mehanizmi-crank input").first.dispatch_event("pointerdown")
     page.wait_for_function(LOADED, timeout=60_000, polling="raf")
     first = page.evaluate("() => performance.now()") - start
+    size = page.evaluate(FRAME_BYTES) / 1e3  # as sent: Plotly decodes typed arrays in place
     charts = page.locator(".mehanizmi-crank").count()
     times = [page.evaluate(SCRUB, [k, charts]) for k in range(1, CHANGES + 1)]
     return (statistics.median(t[0] for t in times), statistics.median(t[1] for t in times), first,
-            page.evaluate(FRAME_BYTES) / 1e3)
+            size)
 
 
 # Navigation → first chart painted, in a fresh browser context each time (nothing cached):
@@ -262,14 +267,16 @@ def table() -> str:
             first, last = measure(page, f"http://127.0.0.1:{floor_port}/?lang=en&floor=slider",
                                   "(member 2)", None)
             rows.append(f"| {SLIDER_FLOOR} | {first:.0f} | {last:.0f} |")
-            rows += ["", f"| page | φ₂ (trajectories: a link's length) scrubbed in the browser "
+            rows += ["", f"| page | φ₂ (trajectories: a link's length, or the tedder's R_t) "
+                     "scrubbed in the browser "
                      f"→ first chart painted, ms (median "
                      f"of {CHANGES}) | → all its charts, ms | first touch → frames there (one "
                      "rerun), ms | frames, kB |", "|---|---:|---:|---:|---:|"]
-            for name in SCRUBBED:
+            for name, tab in SCRUBBED:
                 url = f"http://127.0.0.1:{port}/{name}{'&' if '?' in name else '?'}lang=en"
-                first, every, touch, size = scrub(page, url)
-                rows.append(f"| {name} | {first:.0f} | {every:.0f} | {touch:.0f} | {size:.0f} |")
+                first, every, touch, size = scrub(page, url, tab)
+                shown = f"{name}, {tab}" if tab else name
+                rows.append(f"| {shown} | {first:.0f} | {every:.0f} | {touch:.0f} | {size:.0f} |")
             context.close()
             browser = p.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
                                         args=["--no-sandbox", "--disable-gpu",
