@@ -37,6 +37,7 @@ class Session:
         self.metrics: dict[str, str] = {}
         self.figure_bytes = 0  # of the last run
         self.drawn: set[str] = set()  # the widgets the last run drew (a fragment's: its own)
+        self.kinds: set[str] = set()  # the kinds of element it drew ("dataframe", "slider", …)
         self.whole = True  # the last run was the page's, not a fragment's
         self.page_hash = ""
         self.opened = False  # the page's first run has finished
@@ -56,7 +57,7 @@ class Session:
                 state.double_array_value.data.append(value)
         start = time.perf_counter()
         await ws.send(msg.SerializeToString())
-        self.metrics, self.figure_bytes, self.drawn = {}, 0, set()
+        self.metrics, self.figure_bytes, self.drawn, self.kinds = {}, 0, set(), set()
         while True:
             fm = ForwardMsg()
             fm.ParseFromString(await ws.recv())
@@ -80,6 +81,7 @@ class Session:
 
     def _element(self, element, fragment: str) -> None:
         which = element.WhichOneof("type")
+        self.kinds.add(which)
         if which in ("slider", "number_input"):
             widget_id = getattr(element, which).id
             key = widget_id.rsplit("-", 1)[-1]

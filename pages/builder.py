@@ -4,6 +4,7 @@ in tables; checked live; then studied on every chapter page through its link."""
 from __future__ import annotations
 
 import streamlit as st
+from streamlit.delta_generator import DeltaGenerator
 
 from figures.builder import builder_figure
 from mechanisms import SceneError
@@ -90,11 +91,11 @@ def column(name: str):
 
 
 def edited_tables(doc: dict) -> dict[str, list[dict]]:
-    """The driver and the six tables as the user has edited them. Only the open tab's table
-    is sent to the browser (six editors doubled the rerun: 49 → 22 ms with one); switching
-    tabs first folds the edits into the tables' document (ui.builder.fold)."""
+    """The six tables as the user has edited them. Only the open tab's table is sent to the
+    browser (six editors doubled the rerun: 49 → 22 ms with one); switching tabs first folds
+    the edits into the tables' document (ui.builder.fold)."""
     rows = tables(doc)
-    out: dict = {"driver": driver_inputs(driver_values(doc))}
+    out: dict = {}
     tabs = st.tabs([t(TABS[n][0]) for n in TABLES], key="build_tab", on_change=builder.fold)
     for tab, name in zip(tabs, TABLES):
         if not tab.open:
@@ -225,14 +226,29 @@ if st.session_state.get("build_message"):
 
 @fragment
 def workbench() -> None:
-    """The tables, the drawing, the checks and the links: a cell, φ₂ or a drag reruns these
-    alone, not app.py and the start controls above (an eighth of the builder's rerun).
-    Starting anew or uploading runs the whole page."""
+    """The tables: a cell reruns them and what they drive (``driven``), not app.py and the
+    start controls above (an eighth of the builder's rerun). Starting anew or uploading runs
+    the whole page."""
     base = builder.base()
     drawing_col, tables_col = st.columns([3, 2], gap="large")
     with tables_col:
+        driver_place = st.container()  # above the tables: written by driven()
         edited = edited_tables(base)
-    doc = document({k: edited[k] for k in TABLES}, edited["driver"], base)
+    driven(base, edited, drawing_col, driver_place)
+
+
+@fragment
+def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerator,
+           driver_place: DeltaGenerator) -> None:
+    """The driver's row, the drawing, the checks and the links: φ₂ typed or a drag reruns
+    these alone, not the tables' editor and tabs (a fifth of the rerun), which then come
+    with the tables as the last run of ``workbench`` left them. A button here that gives the
+    tables a new document (a group's other assembly) reruns the page, tables first."""
+    if builder.base() != base:
+        st.rerun(scope="app")
+    with driver_place:
+        driver = driver_inputs(driver_values(base))
+    doc = document(edited, driver, base)
     builder.remember(doc)
 
     scene, problem, solved = None, None, None

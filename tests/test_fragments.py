@@ -1,7 +1,8 @@
 """Moving φ₂ on the kinetostatics, plans or Assur page, ω₂ or a length on the trajectories
 page, the drawing precision on the rotor page, a drawing scale on the gear page or φ₂ (or
-a cell) in the builder reruns only what depends on it (a fragment): against a real server,
-through Streamlit's WebSocket as a browser speaks it (deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
+a cell) in the builder reruns only what depends on it (a fragment; φ₂ in the builder: not
+its tables): against a real server, through Streamlit's WebSocket as a browser speaks it
+(deploy/client.py). The answers after a fragment's run are this φ₂'s; any other control
 reruns the whole page. A fragment's run that a first chart's paint started runs the whole
 page instead (what the first run left out may sit outside the fragment)."""
 
@@ -44,7 +45,7 @@ async def _moves(url: str, page: str, link: str, moves: list[tuple[str, float]])
         await session.run(ws)
         for key, value in moves:
             await session.run(ws, [(session.widgets[key][0], value)])
-            runs.append({"whole": session.whole, "drawn": set(session.drawn),
+            runs.append({"whole": session.whole, "drawn": set(session.drawn), "kinds": session.kinds,
                          "figures": session.figure_bytes, "metrics": dict(session.metrics)})
             if page == "kinetostatics" and key == "at":
                 check(session, value, report)
@@ -118,12 +119,13 @@ def test_omega_and_a_length_on_the_trajectories_page_rerun_the_drawing_alone(str
         assert run["figures"] > 0
 
 
-def test_phi2_typed_in_the_builder_reruns_its_workbench_not_the_start_controls(stream):
+def test_phi2_typed_in_the_builder_reruns_the_drawing_not_the_tables_or_start_controls(stream):
     runs = asyncio.run(_moves(stream, "builder", "",
                               [("build_1_driver_at", 40.0), ("build_1_driver_at", 95.0)]))
     for run in runs:
         assert not run["whole"] and "build_1_driver_at" in run["drawn"]
         assert "build_start" not in run["drawn"]  # the template and preset picker
+        assert "dataframe" not in run["kinds"]  # the tables' editor, which φ₂ does not change
         assert run["figures"] > 0  # the drawing at the new φ₂
 
 
