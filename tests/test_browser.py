@@ -465,6 +465,20 @@ E_START = ("() => { const g = document.querySelector('.mehanizmi-plot');"
 METRICS = "() => [...document.querySelectorAll('[data-testid=stMetric]')].map(m => m.innerText).join('|')"
 
 
+def scrubbed_to(page, key: str, k: int, where: str) -> tuple[str, list, list]:
+    """Once the chart's control has the frames of ``key``, scrub to frame k without letting
+    go: the readouts before, the control's values, and ``where`` (a point the chart draws,
+    as JavaScript reads it) once it has moved."""
+    page.wait_for_function("k => { const c = document.querySelector('.mehanizmi-plot').__crank;"
+                           " return c.spec.turn && c.spec.key === k; }", arg=key, timeout=30_000)
+    wait_idle(page)
+    readouts, before = page.evaluate(METRICS), page.evaluate(where)
+    values = page.evaluate("() => document.querySelector('.mehanizmi-plot').__crank.spec.values")
+    scrub(page, k, release=False)
+    page.wait_for_function(f"s => ({where})()[0] !== s[0]", arg=before, timeout=5_000)
+    return readouts, values, page.evaluate(where)
+
+
 def test_a_link_s_length_moves_the_paths_in_the_browser_and_letting_go_sets_its_slider(
         app_url, browser, tmp_path):
     """Picking member 3 in the chart's list brings its frames; scrubbing moves E's path to
@@ -476,16 +490,9 @@ def test_a_link_s_length_moves_the_paths_in_the_browser_and_letting_go_sets_its_
 
     page = open_page(browser, f"{app_url}/trajectories?lang=en&scene=four-bar-crank-rocker")
     page.locator(".mehanizmi-crank select").select_option("L3")
-    page.wait_for_function("() => { const c = document.querySelector('.mehanizmi-plot').__crank;"
-                           " return c.spec.turn && c.spec.key === 'L3'; }", timeout=30_000)
-    wait_idle(page)
-    readouts, start = page.evaluate(METRICS), page.evaluate(E_START)
-    values = page.evaluate("() => document.querySelector('.mehanizmi-plot').__crank.spec.values")
-    scrub(page, 20, release=False)
-    page.wait_for_function(f"s => ({E_START})()[0] !== s[0]", arg=start, timeout=5_000)
+    readouts, values, (x, y) = scrubbed_to(page, "L3", 20, E_START)
     longer = load_preset("four-bar-crank-rocker").with_(lengths={3: values[20]})
     e = solve(longer, cycle_values(longer, 12)).points["E"].z[0]
-    x, y = page.evaluate(E_START)
     assert abs(complex(x, y) - e) < 1e-4  # 5 digits sent
     assert f"L3={values[20]}" in page.url
     assert page.locator(".mehanizmi-crank span").first.inner_text() == f"AB = {values[20]} m"
@@ -521,18 +528,11 @@ def test_the_chain_drive_moves_the_tine_s_field_path_in_the_browser(app_url, bro
     page.get_by_role("tab", name="Na njivi").click()
     page.wait_for_selector(".mehanizmi-crank input", timeout=30_000)
     page.locator(".mehanizmi-crank input").first.dispatch_event("pointerdown")
-    page.wait_for_function("() => { const c = document.querySelector('.mehanizmi-plot').__crank;"
-                           " return c.spec.turn && c.spec.key === 'Rt'; }", timeout=30_000)
-    wait_idle(page)
-    readouts, end = page.evaluate(METRICS), page.evaluate(FIELD_END)
-    values = page.evaluate("() => document.querySelector('.mehanizmi-plot').__crank.spec.values")
-    scrub(page, 30, release=False)
-    page.wait_for_function(f"s => ({FIELD_END})()[0] !== s[0]", arg=end, timeout=5_000)
+    readouts, values, (x, y) = scrubbed_to(page, "Rt", 30, FIELD_END)
     tedder = load_preset("zbirka-1.3")
     wheel = tedder.with_(travel=replace(tedder.travel, wheel_radius=values[30]))
     point = [p for p in wheel.point_names if p not in wheel.frame][-1]
     _, path = field_path(solve(wheel, cycle_values(wheel, 360)), wheel.travel, point, 3)
-    x, y = page.evaluate(FIELD_END)
     assert abs(complex(x, y) - path[-1]) < 1e-4 * abs(path[-1])  # 5 digits sent
     assert f"Rt={values[30]}" in page.url
     assert page.locator(".mehanizmi-crank span").first.inner_text() == (

@@ -45,7 +45,8 @@ async def _moves(url: str, page: str, link: str, moves: list[tuple[str, float]])
         await session.run(ws)
         for key, value in moves:
             await session.run(ws, [(session.widgets[key][0], value)])
-            runs.append({"whole": session.whole, "drawn": set(session.drawn), "kinds": session.kinds,
+            runs.append({"whole": session.whole, "drawn": set(session.drawn),
+                         "kinds": session.kinds,
                          "figures": session.figure_bytes, "metrics": dict(session.metrics)})
             if page == "kinetostatics" and key == "at":
                 check(session, value, report)
