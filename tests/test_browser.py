@@ -508,6 +508,30 @@ def test_a_link_s_length_moves_the_paths_in_the_browser_and_letting_go_sets_its_
     assert float(slider.input_value()) == values[20]
 
 
+# every frame the chart's control shows, in order, recorded from the page's own frames
+SHOWN = """() => { const c = document.querySelector('.mehanizmi-plot').__crank; window.__shown = [];
+  const poll = () => { const s = window.__shown;
+    if (s[s.length - 1] !== c.index) s.push(c.index);
+    requestAnimationFrame(poll); };
+  poll(); }"""
+
+
+def test_a_played_length_goes_back_and_forth_between_its_slider_s_ends(app_url, browser):
+    """Play on the length control runs to twice the length and comes back down, frame by
+    frame, instead of jumping to a quarter of it (a turn of φ₂ goes round)."""
+    page = open_page(browser, f"{app_url}/trajectories?lang=en&scene=four-bar-crank-rocker")
+    page.evaluate(SHOWN)
+    page.locator(".mehanizmi-crank button[aria-label='Play']").click()
+    last = page.evaluate("() => document.querySelector('.mehanizmi-plot').__crank.spec.values"
+                         ".length - 1")
+    page.wait_for_function("n => { const s = window.__shown, i = s.indexOf(n);"
+                           " return i >= 0 && s.length > i + 2; }", arg=last, timeout=30_000)
+    shown = page.evaluate("() => window.__shown")
+    top = shown.index(last)  # (a frame drawn slowly may let the next tick pass unrecorded)
+    after = shown[top + 1:top + 3]
+    assert last - 3 <= after[0] < last and after[1] < after[0]  # back down, not round to the start
+
+
 # the end of the longest line on the chart (the tine's path in the field), as the browser holds it
 FIELD_END = ("() => { const g = document.querySelector('.mehanizmi-plot');"
              " const t = g._fullData.reduce((a, b) => (b.x.length > a.x.length ? b : a));"

@@ -227,7 +227,7 @@ function crankControls(gd, labels) {
     play.textContent = "❚❚";
     play.title = labels.pause;
     play.setAttribute("aria-label", labels.pause);
-    timer = setInterval(() => moveCrank(gd, (crank.index + 1) % n(), false), 80);
+    timer = setInterval(() => moveCrank(gd, ahead(), false), 80);
   };
   crank.stop = () => {
     if (timer === null) return false;
@@ -238,7 +238,14 @@ function crankControls(gd, labels) {
     play.setAttribute("aria-label", labels.play);
     return true;
   };
-  // a turn goes round; a length stops at its slider's ends
+  // played, a turn goes round; a length goes back and forth between its slider's ends
+  let heading = 1;
+  const ahead = () => {
+    if (crank.spec.wraps) return (crank.index + 1) % n();
+    if (crank.index + heading < 0 || crank.index + heading > n() - 1) heading = -heading;
+    return crank.index + heading;
+  };
+  // a step goes round a turn; a length stops at its slider's ends
   const next = (by) => (crank.spec.wraps ? (crank.index + by + n()) % n()
     : Math.min(Math.max(crank.index + by, 0), n() - 1));
   const step = (by) => () => {
