@@ -5,10 +5,11 @@ import json
 import math
 
 import pytest
+from streamlit.testing.v1 import AppTest
 
 from figures.raw import RawFigure
 from mechanisms import load_preset
-from tests.test_pages import charts, decode, page
+from tests.test_pages import ROOT, charts, decode, page
 from ui.crank import LIVE, Crank, along, crank_frames, nearest, task_turn, turn
 
 
@@ -199,6 +200,22 @@ def test_the_tedder_s_travel_moves_on_the_field_chart_and_its_frames_are_the_pag
     same_drawing(rebuilt(moved["crank"]["turn"], k + 6), moved["figure"])
     assert moved["figure"] != sent["figure"]
     assert at.slider(key="Ra").value == control["values"][k + 6]  # the page's slider follows
+
+
+def test_the_link_picked_in_the_chart_s_list_is_kept_in_the_page_s_link():
+    at = page("pages/trajectories.py", lang="en", scene="four-bar-crank-rocker")
+    assert "chart_length" not in at.query_params  # member 2's, the first: nothing to say
+    at.session_state[LIVE] = "L4"
+    at.run()
+    assert at.query_params["chart_length"] == "L4"
+    opened = AppTest.from_file(str(ROOT / "app.py"), default_timeout=60)  # the link, reloaded
+    opened.query_params.update(lang="en", scene="four-bar-crank-rocker", chart_length="L4")
+    opened.run()
+    opened.switch_page("pages/trajectories.py").run()
+    assert charts(opened)["paths"]["crank"]["key"] == "L4"
+    opened.session_state[LIVE] = "L2"
+    opened.run()
+    assert "chart_length" not in opened.query_params
 
 
 def test_a_length_no_position_can_be_built_with_is_a_gap_and_the_page_says_why():

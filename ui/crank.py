@@ -114,14 +114,20 @@ def slider_control(sliders: dict[str, Ranged], remembered: str, group: str, aske
                    frames: Callable[[str, tuple[float, ...]], str | None],
                    unreachable: str) -> Crank:
     """A chart's own control of one of the page's ``sliders`` (by their keys): the one last
-    picked in its list (kept in the session as ``remembered``; the first at first), at about
-    ``FRAMES`` values along its range, the page's value among them, with their frames
-    (``frames(key, values)``, a page's cached crank_frames) when the student asked
+    picked in its list (the first at first), kept in the session and in the link as
+    ``remembered`` (``?chart_length=L3``), so a reload or a shared link moves the same one;
+    at about ``FRAMES`` values along its range, the page's value among them, with their
+    frames (``frames(key, values)``, a page's cached crank_frames) when the student asked
     (``asked``: live()). Letting go sets that slider (ui.export.chart)."""
+    first = next(iter(sliders))
     if asked in sliders:
         st.session_state[remembered] = asked
-    key = st.session_state.get(remembered)
-    key = key if key in sliders else next(iter(sliders))
+    key = st.session_state.get(remembered, st.query_params.get(remembered))
+    key = st.session_state[remembered] = key if key in sliders else first
+    if key == first:
+        st.query_params.pop(remembered, None)
+    else:
+        st.query_params[remembered] = key
     shown = sliders[key]
     stride = max(1, round((shown.hi - shown.lo) / shown.step / FRAMES)) * shown.step
     values = along(shown.lo, shown.hi, stride, shown.value)
