@@ -69,12 +69,20 @@ TITLE_FITS = """() => { const svg = document.querySelector('.js-plotly-plot');
   const title = svg.querySelector('.gtitle');
   return title && [title.getBoundingClientRect().right, svg.getBoundingClientRect().right]; }"""
 
+# how far the first chart's labels beside points (a force's value, a joint's letter) run
+# past its plot area on the right, px (0 or less: none)
+LABELS_FIT = """() => { const gd = document.querySelector('.js-plotly-plot');
+  const size = gd._fullLayout._size, right = gd.getBoundingClientRect().left + size.l + size.w;
+  return Math.max(0, ...[...gd.querySelectorAll('.textpoint text')]
+    .map(e => e.getBoundingClientRect().right - right)); }"""
+
 
 @pytest.mark.parametrize("name", PAGES)
 def test_the_first_chart_is_on_the_first_screen_and_nothing_scrolls_sideways(app_url, phone, name,
                                                                              tmp_path):
     """… and the chart's legend, wrapped into more rows than on a desktop, leaves its x axis's
-    labels and title uncovered, and its title wraps within its width (ui/plot.js)."""
+    labels and title uncovered, its title wraps within its width, and no label beside a
+    point is cut at the plot's right edge (ui/plot.js)."""
     page = phone(f"{app_url}/{name}?lang=sr")
     height = page.evaluate("() => window.innerHeight")
     top = page.evaluate(CHART_TOP)
@@ -87,6 +95,8 @@ def test_the_first_chart_is_on_the_first_screen_and_nothing_scrolls_sideways(app
     if fits is not None:
         title, chart = fits
         assert title <= chart, f"the title runs to {title:.0f} px, past the chart's edge at {chart:.0f}"
+    over = page.evaluate(LABELS_FIT)
+    assert over <= 1, f"a label runs {over:.0f} px past the plot's right edge"
     assert page.evaluate("() => document.documentElement.scrollWidth <= window.innerWidth")
     main = page.evaluate(MAIN_WIDTHS)  # Streamlit's main area scrolls on its own
     assert main[0] <= main[1], f"the page scrolls sideways: {main[0]} px wide in {main[1]}"

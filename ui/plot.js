@@ -157,7 +157,10 @@ function showIndex(crank, k) {
 function showFrame(gd, k) {
   showIndex(gd.__crank, k);
   const fig = frameFigure(gd, k);
-  if (fig && gd.__Plotly) schedule(gd, () => gd.__Plotly.react(gd, { ...fig, config: gd.__config }));
+  if (fig && gd.__Plotly) {
+    schedule(gd, () => gd.__Plotly.react(gd, { ...fig, config: gd.__config })
+      .then(() => keepLabelsInside(gd)));
+  }
 }
 
 function moveCrank(gd, k, release) {
@@ -347,6 +350,20 @@ function fitLegend(gd) {
   return gd.__Plotly.relayout(gd, { "margin.b": room });
 }
 
+// A label beside a point is written to its right ("top right": a force's value at its
+// arrow's middle). On a phone's narrow chart one near the plot's right edge ran past it and
+// was cut ("F₅ = 10" for 100 N): such a label moves left until it ends at the edge. Checked
+// after every draw, as Plotly places the labels anew; on a desktop no label reaches the edge.
+function keepLabelsInside(gd) {
+  const size = gd._fullLayout && gd._fullLayout._size;
+  if (!size) return;
+  const right = gd.getBoundingClientRect().left + size.l + size.w;
+  for (const text of gd.querySelectorAll(".textpoint text")) {
+    const over = text.getBoundingClientRect().right - right;
+    if (over > 1) text.setAttribute("x", String(Number(text.getAttribute("x")) - over - 2));
+  }
+}
+
 // A page's first run in a session leaves out what can wait until its first chart is on the
 // screen (ui/firstpaint.py); the first chart drawn says so once, after the frame that paints
 // it, and the rerun that starts brings the rest. (A chart of that first run keeps gd.__first
@@ -392,6 +409,7 @@ export default function (component) {
     gd.__Plotly = Plotly;
     Plotly.react(gd, { ...spec.figure, layout: fitted(gd, spec.figure.layout), config })
       .then(() => fitLegend(gd))
+      .then(() => keepLabelsInside(gd))
       .then(() => {
         if (spec.editable) listen(gd, gd.__send);
         if (spec.first && gd.__first) reportFirstPaint(gd);  // (not if a whole run's figure came since)
