@@ -126,7 +126,7 @@ def slider_control(sliders: dict[str, Ranged], remembered: str, group: str, aske
     key = st.session_state[remembered] = key if key in sliders else first
     if key == first:
         st.query_params.pop(remembered, None)
-    else:
+    elif st.query_params.get(remembered) != key:  # (each write sends the browser a message)
         st.query_params[remembered] = key
     shown = sliders[key]
     stride = max(1, round((shown.hi - shown.lo) / shown.step / FRAMES)) * shown.step
