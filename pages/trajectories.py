@@ -182,8 +182,8 @@ def travel_control(scene: Scene, steps: int, cycles: int, point: str,
                for key, (label, field, lo, hi, step, unit) in TRAVEL.items() if key != "vR"}
 
     def frames(key: str, values: tuple[float, ...]) -> str | None:
-        field, lo = TRAVEL[key][1], TRAVEL[key][2]
-        fixed = scene.with_(travel=replace(scene.travel, **{field: lo}))
+        field = TRAVEL[key][1]
+        fixed = scene.with_(travel=replace(scene.travel, **{field: sliders[key].lo}))
         return travel_frames(fixed, field, values, steps, cycles, point, current(), look())
 
     return slider_control(sliders, CHART_TRAVEL, "travel", asked, frames, "fig.unreachable")
