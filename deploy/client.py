@@ -36,6 +36,8 @@ class Session:
         self.fragments: dict[str, str] = {}  # widget id → the fragment that drew it, if any
         self.metrics: dict[str, str] = {}
         self.figure_bytes = 0  # of the last run
+        self.charts = 0  # the charts it drew
+        self.script_bytes = 0  # the charts' script sent with them (ui/plot.py)
         self.drawn: set[str] = set()  # the widgets the last run drew (a fragment's: its own)
         self.kinds: set[str] = set()  # the kinds of element it drew ("dataframe", "slider", …)
         self.whole = True  # the last run was the page's, not a fragment's
@@ -58,6 +60,7 @@ class Session:
         start = time.perf_counter()
         await ws.send(msg.SerializeToString())
         self.metrics, self.figure_bytes, self.drawn, self.kinds = {}, 0, set(), set()
+        self.charts = self.script_bytes = 0
         while True:
             fm = ForwardMsg()
             fm.ParseFromString(await ws.recv())
@@ -94,6 +97,8 @@ class Session:
             self.metrics[element.metric.label] = element.metric.body
         elif which == "bidi_component" and element.bidi_component.component_name == "mehanizmi_plot":
             self.figure_bytes += len(element.bidi_component.bytes)
+            self.script_bytes += len(element.bidi_component.js_content)
+            self.charts += 1
 
 
 def percentile(values: list[float], q: float) -> float:

@@ -7,6 +7,8 @@ here takes a wait or some script off the way to that chart; none of them saves b
   as it runs in a chart, and the chart then finds the bundle's promise under its own URL.
   Before, the bundle was fetched early (a preload) but it ran only once the first chart
   element had mounted: 0.2–0.3 s of script on the way to the first chart.
+- The charts' own script (ui/plot.py publishes it as a static file) is fetched from the
+  head, so the first chart does not wait for it once Streamlit has drawn the chart's element.
 - Streamlit's front end is told where its server is (``window.__streamlit``). Without it, on
   a page such as ``/kinetostatics`` the front end first asks
   ``/kinetostatics/_stcore/health``, gets a 404, and only then tries the root. That is a
@@ -28,6 +30,11 @@ def basic_bundle(static: Path = ROOT / "static") -> Path | None:
     return next(iter(sorted(static.glob("plotly-basic-*.min.js"))), None)
 
 
+def chart_script(static: Path = ROOT / "static") -> Path | None:
+    """The charts' script as ui/plot.py published it (named by its content), if it did."""
+    return max(static.glob("plot-*.js"), key=lambda p: p.stat().st_mtime, default=None)
+
+
 def base_url(base_path: str) -> str:
     """The server's path from Streamlit's ``server.baseUrlPath``: "" → "/", "a/b" → "/a/b/"."""
     return "".join(f"/{part}" for part in base_path.split("/") if part) + "/"
@@ -38,10 +45,12 @@ def head(base_path: str, static: Path = ROOT / "static") -> str:
     base = json.dumps(base_url(base_path))
     server = (f"window.__streamlit = {{...window.__streamlit, "
               f"BACKEND_BASE_URL: new URL({base}, location.href).href}};")
+    script = chart_script(static)
+    fetched = "" if script is None else f'<link rel="modulepreload" href="app/static/{script.name}">'
     bundle = basic_bundle(static)
     if bundle is None:
-        return f"<script>{server}</script>"
+        return f"{fetched}<script>{server}</script>"
     src = f"app/static/{bundle.name}"  # as ui/plot.py names it: a page is one level deep
-    return (f'<link rel="preload" as="script" href="{src}">'
+    return (f'<link rel="preload" as="script" href="{src}">{fetched}'
             f"<script>{server}\n(() => {{\n{LOADER}"
             f"plotly({json.dumps(src)});\n}})();</script>")

@@ -15,7 +15,8 @@ compressed once (Brotli, or gzip for a client without it), the first time it is 
 and kept: every later request is served from memory. The best-quality encodings are also
 kept on disk by content (``.cache/compressed/``), so a server that starts again (a deploy,
 each browser test's server) serves them at once instead of compressing the same megabytes
-anew. Our bundles get the year-long immutable lifetime Streamlit gives its own.
+anew. Our bundles and the charts' script get the year-long immutable lifetime Streamlit
+gives its own (their names carry a version or a hash of their content).
 Streamlit's icon font is served cut to the icons the app can show (scripts/icon_font.py),
 and a page's HTML gets the tags of scripts/page_head.py (Plotly started from the head, the
 server's address given).
@@ -49,6 +50,7 @@ COMPRESSIBLE = (b"text/", b"application/javascript", b"application/json", b"imag
 SMALLEST = 1024  # below this the gzip header is not worth it
 PREFIXES = ("/static/", "/app/static/")
 YEAR = b"public, immutable, max-age=31536000"
+NAMED = ("/app/static/plotly-", "/app/static/plot-")  # Plotly's bundles, ui/plot.py's script
 STORE = ROOT / ".cache" / "compressed"  # best encodings by content: <sha256>.<coding>
 
 
@@ -111,7 +113,7 @@ class PrecompressedStatic:
         if packed is None:
             packed = self._compress(key, data, coding)
         kept = [(k, v) for k, v in headers if k != b"vary"]
-        if path.startswith("/app/static/plotly-"):  # named by version: never changes
+        if path.startswith(NAMED):  # named by version or content: never changes
             kept = [(k, v) for k, v in kept if k != b"cache-control"] + [(b"cache-control", YEAR)]
         kept += [(b"content-encoding", coding), (b"vary", b"Accept-Encoding")]
         await send(_sized({**start, "headers": kept}, packed))

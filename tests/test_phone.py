@@ -151,7 +151,8 @@ def test_the_server_sends_scripts_and_plotly_compressed_when_asked(app_url):
                   or ".js" in part.split('"')[0])
     plotly = next((ROOT / "static").glob("plotly-basic-*.min.js"), None) or next(
         (ROOT / "static").glob("plotly-*.min.js"))
-    for path in (script.lstrip("./"), f"app/static/{plotly.name}"):
+    chart_js = page.split('<link rel="modulepreload" href="')[1].split('"')[0]  # ui/plot.py's
+    for path in (script.lstrip("./"), f"app/static/{plotly.name}", chart_js):
         plain = urllib.request.urlopen(f"{app_url}/{path}")
         body = plain.read()
         assert plain.headers.get("Content-Encoding") is None
@@ -171,17 +172,21 @@ def test_the_server_sends_scripts_and_plotly_compressed_when_asked(app_url):
 
 def test_a_page_starts_the_charts_bundle_from_its_head_and_asks_no_wrong_path(app_url, phone):
     """scripts/page_head.py in chromium: the page's HTML starts Plotly's basic bundle under
-    the URL the charts use, the bundle is fetched once and the chart drawn with it, and the
-    front end asks the server's health at the root only (not first under the page's path)."""
+    the URL the charts use, the bundle and the charts' script are each fetched once and the
+    chart drawn with them, and the front end asks the server's health at the root only (not
+    first under the page's path)."""
     from figures.raw import RawFigure
-    from ui.plot import bundle_url
+    from ui.plot import bundle_url, publish_chart_js
 
     wanted = bundle_url(RawFigure())
     html = urllib.request.urlopen(f"{app_url}/kinetostatics").read().decode()
     assert f'plotly("{wanted}");' in html
+    chart_js = publish_chart_js()  # the charts' own script, preloaded as a module
+    assert f'<link rel="modulepreload" href="{chart_js}">' in html
     asked: list[str] = []
     page = phone(f"{app_url}/kinetostatics?lang=sr", asked)
     assert [url for url in asked if url.endswith(wanted)] == [f"{app_url}/{wanted}"]
+    assert [url for url in asked if url.endswith(chart_js)] == [f"{app_url}/{chart_js}"]
     assert page.evaluate("() => Object.keys(window.__mehanizmiPlotly)") == [wanted]
     health = [url for url in asked if "_stcore/health" in url]
     assert health and all(url == f"{app_url}/_stcore/health" for url in health), health

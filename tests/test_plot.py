@@ -1,5 +1,6 @@
 """ui.plot: plotly.js is served from Plotly's own bundles, copied once, the smallest that
-draws a chart's traces chosen per chart."""
+draws a chart's traces chosen per chart; the charts' own script is a static file named by
+its content, which the component imports."""
 
 from __future__ import annotations
 
@@ -9,7 +10,8 @@ import plotly
 import pytest
 
 from figures.raw import RawFigure
-from ui.plot import PLOTLY_JS_VERSION, bundle_url, publish_plotly_js
+from ui.plot import (LOADER, PLOTLY_JS_VERSION, bundle_url, chart_module, publish_chart_js,
+                     publish_plotly_js)
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -31,6 +33,20 @@ def test_the_bundles_are_copied_once_smallest_first_the_full_one_last(tmp_path):
     full.write_text("kept")
     publish_plotly_js(static)
     assert full.read_text() == "kept"  # an existing copy is not written again
+
+
+def test_the_charts_script_is_published_by_its_content_and_an_older_one_removed(tmp_path):
+    static = tmp_path / "static"
+    static.mkdir()
+    (static / "plot-000000000000.js").write_text("an older version")
+    url = publish_chart_js(static)
+    (script,) = static.glob("plot-*.js")
+    assert url == f"app/static/{script.name}" and script.name != "plot-000000000000.js"
+    assert script.read_text(encoding="utf-8") == LOADER + (ROOT / "ui" / "plot.js").read_text(
+        encoding="utf-8")
+    assert publish_chart_js(static) == url  # the same content, the same name
+    module = chart_module(url)
+    assert f'import(new URL("{url}", document.baseURI).href)' in module and len(module) < 300
 
 
 def test_without_npm_bundles_the_full_bundle_draws_everything(tmp_path, monkeypatch):

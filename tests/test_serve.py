@@ -119,14 +119,18 @@ def test_the_best_encodings_are_stored_by_content_and_a_new_server_serves_them(t
 
 def test_a_page_head_names_the_server_s_path_and_starts_the_charts_bundle(tmp_path):
     """scripts/page_head.py: Streamlit's front end is told the server's path (no 404 probe
-    first), and Plotly's basic bundle is started by the charts' own loader, under the URL
-    the charts ask for (ui/plot.py), so a chart finds it already loading."""
+    first), Plotly's basic bundle is started by the charts' own loader, under the URL the
+    charts ask for (ui/plot.py), so a chart finds it already loading, and the charts' script
+    is fetched as a module from the head."""
     from scripts import page_head
 
     assert [page_head.base_url(p) for p in ("", "/", "mehanizmi", "/a/b/")] == \
         ["/", "/", "/mehanizmi/", "/a/b/"]
     (tmp_path / "plotly-basic-9.9.9.min.js").write_text("")
+    assert "modulepreload" not in page_head.head("", static=tmp_path)  # no script published
+    (tmp_path / "plot-0123456789ab.js").write_text("")
     tags = page_head.head("mehanizmi", static=tmp_path)
+    assert '<link rel="modulepreload" href="app/static/plot-0123456789ab.js">' in tags
     assert 'BACKEND_BASE_URL: new URL("/mehanizmi/", location.href).href' in tags
     loader = (page_head.ROOT / "ui" / "plotly_loader.js").read_text(encoding="utf-8")
     assert page_head.LOADER == loader

@@ -11,10 +11,16 @@ Plotly's own bundles that draws its traces (npm, pinned in package.json at the v
 ``plotly`` package ships): the 1.2 MB "basic" bundle runs in 0.3 s in chromium here where
 the full 4.8 MB one took 1.2 s, most of a page's first paint (bench/browser.py). Without
 ``npm ci`` the full bundle from the ``plotly`` package serves every chart.
+
+The component's own script (the bundles' loader, then ui/plot.js) is a static file too,
+named by its content; the component is given a two-line module that imports it. Given
+inline, its 20 kB rode along with every chart of every rerun: a plans page rerun sent
+92 kB, 31 kB without it (bench/pages.py).
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 from collections.abc import Callable
@@ -37,9 +43,6 @@ BUNDLES = {"basic": {"scatter", "bar", "pie"},
 
 # the bundles' loader, shared with the page's head (scripts/serve.py starts Plotly from there)
 LOADER = Path(__file__).with_name("plotly_loader.js").read_text(encoding="utf-8")
-_render = st.components.v2.component(
-    "mehanizmi_plot", js=LOADER + Path(__file__).with_suffix(".js").read_text(encoding="utf-8"),
-    isolate_styles=False)  # plotly.js styles the chart from the page's own stylesheet
 
 
 def _bundle_source(name: str) -> Path | None:
@@ -53,13 +56,13 @@ def _bundle_source(name: str) -> Path | None:
     return package / f"plotly-{name}.min.js" if version == PLOTLY_JS_VERSION else None
 
 
-def _publish(source: Path, name: str, static: Path) -> str:
-    """Copy ``source`` into ``static`` as ``name`` (once); its URL relative to a page."""
+def _publish(content: Callable[[], bytes], name: str, static: Path) -> str:
+    """Write ``content()`` into ``static`` as ``name`` (once); its URL relative to a page."""
     target = static / name
     if not target.exists():
         static.mkdir(exist_ok=True)
         partial = target.with_suffix(f".{os.getpid()}.partial")  # one per process (deploy/)
-        partial.write_bytes(source.read_bytes())
+        partial.write_bytes(content())
         partial.replace(target)  # atomic: a server never serves half a file
     return f"app/static/{name}"  # a page is one level deep
 
@@ -71,10 +74,31 @@ def publish_plotly_js(static: Path = STATIC) -> list[tuple[set[str] | None, str]
     for name, types in BUNDLES.items():
         source = _bundle_source(name)
         if source is not None:
-            bundles.append((types, _publish(source, f"plotly-{name}-{PLOTLY_JS_VERSION}.min.js",
-                                            static)))
+            bundles.append((types, _publish(source.read_bytes,
+                                            f"plotly-{name}-{PLOTLY_JS_VERSION}.min.js", static)))
     full = Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
-    return bundles + [(None, _publish(full, f"plotly-{PLOTLY_JS_VERSION}.min.js", static))]
+    return bundles + [(None, _publish(full.read_bytes, f"plotly-{PLOTLY_JS_VERSION}.min.js",
+                                      static))]
+
+
+def publish_chart_js(static: Path = STATIC) -> str:
+    """The charts' script (the bundles' loader, then ui/plot.js) put where Streamlit serves
+    static files, named by its content (``plot-<hash>.js``: a browser may keep it a year,
+    scripts/serve.py); an older version is removed, so that scripts/page_head.py finds this
+    one. Its URL relative to a page."""
+    text = (LOADER + Path(__file__).with_suffix(".js").read_text(encoding="utf-8")).encode()
+    name = f"plot-{hashlib.sha256(text).hexdigest()[:12]}.js"
+    for old in static.glob("plot-*.js"):
+        if old.name != name:
+            old.unlink(missing_ok=True)
+    return _publish(lambda: text, name, static)
+
+
+def chart_module(url: str) -> str:
+    """The component's script: it imports the charts' script from ``url`` (relative to the
+    page, as Plotly's bundles are) once per page and hands each chart to it."""
+    return (f"const drawn = import(new URL({json.dumps(url)}, document.baseURI).href);\n"
+            "export default async (component) => (await drawn).default(component);\n")
 
 
 def bundle_url(fig: RawFigure) -> str:
@@ -130,3 +154,6 @@ def _ignore() -> None:
 
 
 _URLS = publish_plotly_js()
+_render = st.components.v2.component(
+    "mehanizmi_plot", js=chart_module(publish_chart_js()),
+    isolate_styles=False)  # plotly.js styles the chart from the page's own stylesheet
