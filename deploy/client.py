@@ -38,6 +38,7 @@ class Session:
         self.figure_bytes = 0  # of the last run
         self.charts = 0  # the charts it drew
         self.script_bytes = 0  # the charts' script sent with them (ui/plot.py)
+        self.written = 0  # downloads whose file the run wrote (not deferred to a click)
         self.drawn: set[str] = set()  # the widgets the last run drew (a fragment's: its own)
         self.kinds: set[str] = set()  # the kinds of element it drew ("dataframe", "slider", …)
         self.whole = True  # the last run was the page's, not a fragment's
@@ -60,7 +61,7 @@ class Session:
         start = time.perf_counter()
         await ws.send(msg.SerializeToString())
         self.metrics, self.figure_bytes, self.drawn, self.kinds = {}, 0, set(), set()
-        self.charts = self.script_bytes = 0
+        self.charts = self.script_bytes = self.written = 0
         while True:
             fm = ForwardMsg()
             fm.ParseFromString(await ws.recv())
@@ -91,6 +92,8 @@ class Session:
             self.widgets[key] = (widget_id, "slider" if which == "slider" else "number")
             self.fragments[widget_id] = fragment
             self.drawn.add(key)
+        elif which == "download_button" and element.download_button.url:
+            self.written += 1
         elif which == "exception":
             self.report.errors.append(f"{self.page}: {element.exception.message[:200]}")
         elif which == "metric":

@@ -5,6 +5,7 @@ browser is a failure, never a silent skip.
 """
 
 import json
+import math
 import os
 import shutil
 from pathlib import Path
@@ -368,6 +369,20 @@ def test_a_table_downloads_as_csv_when_asked(app_url, browser, tmp_path):
         page.get_by_role("button", name="Download the table (CSV)").first.click()
     text = Path(download.value.path()).read_text(encoding="utf-8")
     assert text.splitlines()[0].startswith("F_pq,") and "F_45" in text
+
+
+def test_the_scene_downloads_at_the_angle_the_page_shows(app_url, browser):
+    """The scene's TOML is written when its button is pressed (deferred, as the tables'), at
+    the φ₂ the page was moved to, and reads back as that scene."""
+    from mechanisms.loader import parse_scene
+
+    page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=zbirka-2.1&at=75",
+                     size=(1600, 1100))
+    with page.expect_download(timeout=30_000) as download:
+        page.get_by_role("button", name="Download this scene (TOML)").click()
+    assert download.value.suggested_filename == "zbirka-2.1.toml"
+    scene = parse_scene(Path(download.value.path()).read_bytes())
+    assert scene.id == "zbirka-2.1" and math.isclose(math.degrees(scene.driver.at), 75.0)
 
 
 @pytest.mark.parametrize("fmt, start", [("SVG", "<svg"), ("PNG", "\x89PNG")])

@@ -47,7 +47,7 @@ async def _moves(url: str, page: str, link: str, moves: list[tuple[str, float]])
             await session.run(ws, [(session.widgets[key][0], value)])
             runs.append({"whole": session.whole, "drawn": set(session.drawn),
                          "kinds": session.kinds, "charts": session.charts,
-                         "script": session.script_bytes,
+                         "script": session.script_bytes, "written": session.written,
                          "figures": session.figure_bytes, "metrics": dict(session.metrics)})
             if page == "kinetostatics" and key == "at":
                 check(session, value, report)
@@ -89,6 +89,7 @@ def test_phi2_on_the_plans_page_reruns_the_plans_alone(stream):
         assert run["figures"] > 0  # the plans at this φ₂
         # the charts' script is a static file (ui/plot.py): each chart names it, 20 kB once
         assert run["charts"] == 3 and run["script"] < 3 * 300
+        assert run["written"] == 0  # the scene, tables and plans downloads wait for a click
     assert speed["whole"] and controls | {"at", "step"} <= speed["drawn"]
 
 

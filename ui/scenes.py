@@ -178,10 +178,10 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
 
 
 def scene_download(scene) -> None:
-    """The current scene, with the user's changes, as a TOML file that uploads again."""
-    text = to_text(scene)
-    st.download_button(t("scene.download"), text.encode("utf-8"), f"{scene.id}.toml",
-                       mime="application/toml", on_click="ignore", icon=":material/download:")
+    """The current scene, with the user's changes, as a TOML file that uploads again, written
+    when the button is pressed (as every download here): not on each of φ₂'s reruns."""
+    st.download_button(t("scene.download"), lambda: to_text(scene).encode("utf-8"),
+                       f"{scene.id}.toml", mime="application/toml", on_click="ignore", icon=":material/download:")
 
 
 def driver_start(base: Scene) -> float:
