@@ -20,7 +20,7 @@ from solvers.paths import numbered_points  # noqa: E402
 from ui.cache import cycle, preset  # noqa: E402
 from ui.chapters import BUILDER, CHAPTERS, VARIANTS  # noqa: E402
 from ui.i18n import language_picker, t, title_of  # noqa: E402
-from ui.plot import plot, publish_plotly_js  # noqa: E402
+from ui.plot import plot, publish_chart_js, publish_plotly_js  # noqa: E402
 from ui.present import look, projector_switch  # noqa: E402
 from ui.scenes import length_slider, preset_ids  # noqa: E402
 
@@ -46,7 +46,8 @@ def slider_floor() -> None:
                              title_of(scene), t, look()), "floor", "floor", LABELS)
 
 
-publish_plotly_js(Path(__file__).parent / "static")  # Streamlit serves static/ beside the script
+for publish in (publish_plotly_js, publish_chart_js):  # Streamlit serves static/ beside the script
+    publish(Path(__file__).parent / "static")
 st.set_page_config(page_title="floor", layout="wide")
 language_picker()
 projector_switch()

@@ -33,7 +33,12 @@ def test_the_slider_floor_is_the_trajectories_pages_length_slider_and_figure():
     assert figure(floor)["data"] == figure(app)["data"]
 
 
-def test_the_chart_floor_draws_one_small_chart():
+def test_the_chart_floor_draws_one_small_chart_with_the_app_s_scripts_beside_it():
     at = AppTest.from_file(str(ROOT / "bench" / "floor_chart_app.py"), default_timeout=60)
     at.run()
     assert not at.exception and not at.slider and len(at.get("bidi_component")) == 1
+    # its server serves bench/static/: the chart's script must be there under the app's name
+    from ui.plot import publish_chart_js
+
+    name = publish_chart_js().rsplit("/", 1)[1]
+    assert (ROOT / "bench" / "static" / name).read_bytes() == (ROOT / "static" / name).read_bytes()
