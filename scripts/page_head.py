@@ -46,7 +46,8 @@ def head(base_path: str, static: Path = ROOT / "static") -> str:
     server = (f"window.__streamlit = {{...window.__streamlit, "
               f"BACKEND_BASE_URL: new URL({base}, location.href).href}};")
     script = chart_script(static)
-    fetched = "" if script is None else f'<link rel="modulepreload" href="app/static/{script.name}">'
+    fetched = ("" if script is None
+               else f'<link rel="modulepreload" href="app/static/{script.name}">')
     bundle = basic_bundle(static)
     if bundle is None:
         return f"{fetched}<script>{server}</script>"

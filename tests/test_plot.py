@@ -10,8 +10,14 @@ import plotly
 import pytest
 
 from figures.raw import RawFigure
-from ui.plot import (LOADER, PLOTLY_JS_VERSION, bundle_url, chart_module, publish_chart_js,
-                     publish_plotly_js)
+from ui.plot import (
+    LOADER,
+    PLOTLY_JS_VERSION,
+    bundle_url,
+    chart_module,
+    publish_chart_js,
+    publish_plotly_js,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 

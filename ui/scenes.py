@@ -181,7 +181,8 @@ def scene_download(scene) -> None:
     """The current scene, with the user's changes, as a TOML file that uploads again, written
     when the button is pressed (as every download here): not on each of φ₂'s reruns."""
     st.download_button(t("scene.download"), lambda: to_text(scene).encode("utf-8"),
-                       f"{scene.id}.toml", mime="application/toml", on_click="ignore", icon=":material/download:")
+                       f"{scene.id}.toml", mime="application/toml", on_click="ignore",
+                       icon=":material/download:")
 
 
 def driver_start(base: Scene) -> float:
