@@ -1,8 +1,8 @@
 """Per page: the server-side rerun after a slider change, measured as a browser sees it
 (Streamlit's WebSocket protocol against a real server on this machine: slider sent →
-script finished, median of 24 changes, warm caches) and the size of the figures it sends,
-against Streamlit's floor (bench/floor_app.py, its own server) rerun in turn with it: a
-page's change, then the floor's, and so on.
+script finished, median of ``CHANGES`` (40) changes, warm caches) and the size of the
+figures it sends, against Streamlit's floor (bench/floor_app.py, its own server) rerun in
+turn with it: a page's change, then the floor's, and so on.
 
     .venv/bin/python bench/pages.py           # print the table
     .venv/bin/python bench/pages.py --write   # and regenerate its part of docs/performance.md
