@@ -23,6 +23,7 @@ sys.path.insert(0, str(ROOT))
 
 from bench.publish import publish  # noqa: E402
 from deploy.client import free_port, start_server, wait_ready  # noqa: E402
+from ui.plot import publish_chart_js, publish_plotly_js  # noqa: E402
 
 CHANGES = 20
 # page, part of the label of a slider that changes the page's first figure (English page),
@@ -223,7 +224,12 @@ def phone_rows(p, port: int, floor_port: int) -> list[str]:
 
 
 def servers() -> tuple[int, int, list]:
-    """The app and the floor app (bench/floor_chart_app.py) served: their ports, processes."""
+    """The app and the floor app (bench/floor_chart_app.py) served: their ports, processes.
+    The floor's scripts are put beside it first: its page head names Plotly's bundle, and
+    asked before the floor's first run had published it (a fresh checkout), the bundle's
+    404 left the floor without a chart."""
+    for publish_js in (publish_plotly_js, publish_chart_js):
+        publish_js(ROOT / "bench" / "static")
     port, floor_port = free_port(), free_port()
     while floor_port == port:
         floor_port = free_port()
