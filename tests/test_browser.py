@@ -414,6 +414,8 @@ LAST_TITLE = ("((([...document.querySelectorAll('.mehanizmi-plot')].pop().layout
               ".title || {}).text || '')")
 TABLE_CELLS = ("() => [...document.querySelectorAll('[data-testid=stDataFrame] table td')]"
                ".map(td => td.textContent).join('|')")
+GRIDS_DRAWN = ("() => { const grids = [...document.querySelectorAll('[data-testid=stDataFrame]')];"
+               " return grids.length > 0 && grids.every(g => g.querySelector('table td')); }")
 
 
 def scrub(page, index: int, release: bool) -> None:
@@ -438,8 +440,9 @@ def test_scrubbing_phi2_redraws_the_plans_locally_and_letting_go_updates_the_tab
               ".every(g => g.__crank && g.__crank.spec.turn)")
     page.wait_for_function(loaded, timeout=30_000)
     wait_idle(page)
-    # a table's grid is drawn by a script of its own, which may still be loading
-    page.wait_for_function(f"() => ({TABLE_CELLS})() !== ''", timeout=30_000)
+    # a table's grid is drawn by a script of its own, which may still be loading: every grid
+    # (on a fast machine the step table's was read before the members table had drawn its own)
+    page.wait_for_function(GRIDS_DRAWN, timeout=30_000)
     table = page.evaluate(TABLE_CELLS)
     scrub(page, 30, release=False)  # 30 frames of 5°
     page.wait_for_function(f"() => {LAST_TITLE}.includes('150')", timeout=5_000)  # drawn last
