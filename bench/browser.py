@@ -225,9 +225,8 @@ def phone_rows(p, port: int, floor_port: int) -> list[str]:
 
 def servers() -> tuple[int, int, list]:
     """The app and the floor app (bench/floor_chart_app.py) served: their ports, processes.
-    The floor's scripts are put beside it first: its page head names Plotly's bundle, and
-    asked before the floor's first run had published it (a fresh checkout), the bundle's
-    404 left the floor without a chart."""
+    The floor's scripts are put beside it first, so that its page head starts Plotly's
+    bundle as the app's does, from the first visit on (a fresh checkout has none there)."""
     for publish_js in (publish_plotly_js, publish_chart_js):
         publish_js(ROOT / "bench" / "static")
     port, floor_port = free_port(), free_port()

@@ -37,7 +37,7 @@ import threading
 from pathlib import Path
 
 import brotli
-from streamlit import config
+from streamlit import config, file_util
 from streamlit.web import cli
 from streamlit.web.server.starlette import starlette_app
 
@@ -154,7 +154,7 @@ class PrecompressedStatic:
         if (start.get("status") == 200 and b"</head>" in data
                 and named.get(b"content-type", b"").startswith(b"text/html")
                 and not named.get(b"content-encoding")):
-            tags = page_head.head(config.get_option("server.baseUrlPath"))
+            tags = page_head.head(config.get_option("server.baseUrlPath"), _app_static())
             data = data.replace(b"</head>", tags.encode() + b"</head>", 1)
             start = _sized(start, data)
         await send(start)
@@ -190,6 +190,14 @@ def _sized(start: dict, body: bytes) -> dict:
     """A response's start message whose Content-Length is ``body``'s."""
     headers = [(k, v) for k, v in start.get("headers", []) if k.lower() != b"content-length"]
     return {**start, "headers": [*headers, (b"content-length", str(len(body)).encode())]}
+
+
+def _app_static() -> Path:
+    """The folder this server serves as ``/app/static/``: ``static/`` beside the script it runs
+    (the app's, or a benchmark's floor app's). The page head names only files found there: it
+    named the app's Plotly bundle on the floor's server before the floor had published its
+    own, and the 404 left the floor's first visit without a chart."""
+    return Path(file_util.get_app_static_dir(config._main_script_path))
 
 
 def _is_page(path: str) -> bool:

@@ -117,6 +117,14 @@ def test_the_best_encodings_are_stored_by_content_and_a_new_server_serves_them(t
     assert _get(again, b"gzip")[1] == stored_gz.read_bytes()
 
 
+def test_a_page_head_names_files_from_the_static_folder_its_server_serves(monkeypatch):
+    """Streamlit serves /app/static/ from beside the script it runs; the head must look there
+    (a floor app's server named the app's bundle before the floor had published its own)."""
+    for script, static in (("bench/floor_chart_app.py", "bench/static"), ("app.py", "static")):
+        monkeypatch.setattr(serve.config, "_main_script_path", str(serve.ROOT / script))
+        assert serve._app_static() == serve.ROOT / static
+
+
 def test_a_page_head_names_the_server_s_path_and_starts_the_charts_bundle(tmp_path):
     """scripts/page_head.py: Streamlit's front end is told the server's path (no 404 probe
     first), Plotly's basic bundle is started by the charts' own loader, under the URL the
