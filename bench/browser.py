@@ -23,7 +23,6 @@ sys.path.insert(0, str(ROOT))
 
 from bench.publish import publish  # noqa: E402
 from deploy.client import free_port, start_server, wait_ready  # noqa: E402
-from ui.plot import publish_chart_js, publish_plotly_js  # noqa: E402
 
 CHANGES = 20
 # page, part of the label of a slider that changes the page's first figure (English page),
@@ -224,11 +223,7 @@ def phone_rows(p, port: int, floor_port: int) -> list[str]:
 
 
 def servers() -> tuple[int, int, list]:
-    """The app and the floor app (bench/floor_chart_app.py) served: their ports, processes.
-    The floor's scripts are put beside it first, so that its page head starts Plotly's
-    bundle as the app's does, from the first visit on (a fresh checkout has none there)."""
-    for publish_js in (publish_plotly_js, publish_chart_js):
-        publish_js(ROOT / "bench" / "static")
+    """The app and the floor app (bench/floor_chart_app.py) served: their ports, processes."""
     port, floor_port = free_port(), free_port()
     while floor_port == port:
         floor_port = free_port()
