@@ -41,15 +41,15 @@ def whole_run(method: str, pid: str) -> tuple[int, float, float]:
 
 def page_times(repeat: int = 15) -> tuple[float, float]:
     """Median ms of a Check on the plans page and of an ordinary rerun (ω₂ moved), in turn."""
-    from tests.test_pages import page
+    from tests.test_pages import page, typed
     at = page("pages/velocity_plans.py", lang="en", scene="zbirka-3.1")
     at.toggle(key="pr_plans_on").set_value(True).run()
     steps = steps_for(load_preset("zbirka-3.1"), "plans")
     check, rerun = [], []
     for i in range(repeat):
         step = steps[0]
-        at.number_input(key=f"pr_plans_len_{step.id}").set_value(abs(step.expected) * (1 + i / 100))
-        at.number_input(key=f"pr_plans_ang_{step.id}").set_value(90.0)
+        typed(at, f"pr_plans_len_{step.id}", abs(step.expected) * (1 + i / 100))
+        typed(at, f"pr_plans_ang_{step.id}", 90.0)
         button = next(b for b in at.button if b.label == "Check")
         start = time.perf_counter()
         button.click().run()

@@ -55,7 +55,7 @@ class Session:
             state = msg.rerun_script.widget_states.widgets.add()
             state.id = widget_id
             if self.widgets.get(widget_id.rsplit("-", 1)[-1], ("", "slider"))[1] == "number":
-                state.double_value = value
+                state.string_value = repr(float(value))  # typed (ui/numbers.py), lang=en
             else:
                 state.double_array_value.data.append(value)
         start = time.perf_counter()
@@ -86,7 +86,7 @@ class Session:
     def _element(self, element, fragment: str) -> None:
         which = element.WhichOneof("type")
         self.kinds.add(which)
-        if which in ("slider", "number_input"):
+        if which in ("slider", "text_input"):  # a number is typed as text (ui/numbers.py)
             widget_id = getattr(element, which).id
             key = widget_id.rsplit("-", 1)[-1]
             self.widgets[key] = (widget_id, "slider" if which == "slider" else "number")

@@ -29,6 +29,7 @@ from ui.firstpaint import first_run, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
+from ui.numbers import number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_start, scene_picker
@@ -98,9 +99,8 @@ def newton_table(scene: Scene, tol: float) -> None:
     too far away wanders (which is why the solver marches along the cycle in small steps)."""
     rotating = scene.driver.kind == "rotating"
     st.caption(t("assur.iterations_hint"))
-    back = st.number_input(t("assur.iterations_back_deg" if rotating else "assur.iterations_back_mm"),
-                           min_value=0.0, max_value=180.0 if rotating else 1000.0, key="back",
-                           format="%.4g", bind="query-params")
+    back = number_field(t("assur.iterations_back_deg" if rotating else "assur.iterations_back_mm"),
+                        "back", minimum=0.0, maximum=180.0 if rotating else 1000.0, url=True)
     offset = np.radians(back) if rotating else back / 1000.0
     for name, iterates in newton_iterations(scene, offset, tol).items():
         if not iterates:

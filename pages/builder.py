@@ -26,11 +26,12 @@ from solvers.structure import StructureError, decompose, degrees_of_freedom, loo
 from ui import builder
 from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
-from ui.editor_tables import TEXT_COLUMNS, frame_of, rows_of
+from ui.editor_tables import frame_of, marks, refused, rows_of
 from ui.export import chart
 from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import current, latex, message, t, title_of
+from ui.numbers import number_field, refusal
 from ui.present import look
 from ui.scenes import preset_titles, read_upload, scene_download
 
@@ -66,12 +67,16 @@ UNITS = {"x": "m", "y": "m", "length": "m", "mass": "kg", "centre_along": "m",
          "centre_left": "m", "gyration": "m", "along": "m", "left": "m", "angle": "°",
          "d1": "m", "d2": "m", "r": "m", "theta": "°",
          "slider_angle": "°", "magnitude": "N", "value": "N·m"}
+MARK = "⚠"  # the column that names a row's refused cells
+
+
+def column_label(name: str) -> str:
+    label = t(LABELS[name])
+    return f"{label} [{UNITS[name]}]" if name in UNITS else label
 
 
 def column(name: str):
-    label = t(LABELS[name])
-    if name in UNITS:
-        label = f"{label} [{UNITS[name]}]"
+    label = column_label(name)
     if name == "type":
         return st.column_config.SelectboxColumn(label, options=list(TYPE_LABELS),
                                                 format_func=lambda k: t(TYPE_LABELS[k]))
@@ -83,31 +88,43 @@ def column(name: str):
                                                 format_func=lambda s: t(SIDE_LABELS[s]))
     if name == "follows_member":
         return st.column_config.CheckboxColumn(label)
-    if name in TEXT_COLUMNS:
-        return st.column_config.TextColumn(label)
     if name in ("member", "p", "q"):
         return st.column_config.NumberColumn(label, min_value=1, step=1, format="%d")
-    return st.column_config.NumberColumn(label, format="%.6g")
+    return st.column_config.TextColumn(label)  # numbers too: read by ui.numbers, not the browser
+
+
+def refusals(name: str, rows: list[dict]) -> list[str]:
+    """What a table holds that is not one number, each in words: the table, the row, the
+    column and the text as typed."""
+    return [refusal(f"{t(TABS[name][0])} · {t('table.row', row=i + 1)} · {column_label(col)}", why)
+            for i, col, why in refused(rows, current())]
 
 
 def edited_tables(doc: dict) -> dict[str, list[dict]]:
     """The six tables as the user has edited them. Only the open tab's table is sent to the
     browser (six editors doubled the rerun: 49 → 22 ms with one); switching tabs first folds
-    the edits into the tables' document (ui.builder.fold)."""
+    the edits into the tables' document (ui.builder.fold). A refused cell is marked in its
+    row (the ⚠ column) and named above the table, where the student types."""
     rows = tables(doc)
     out: dict = {}
     tabs = st.tabs([t(TABS[n][0]) for n in TABLES], key="build_tab", on_change=builder.fold)
+    language = current()
     for tab, name in zip(tabs, TABLES):
         if not tab.open:
             out[name] = rows[name]
             continue
         with tab:
             st.caption(t(TABS[name][1]))
+            frame, config = frame_of(name, rows[name], language), {c: column(c) for c in COLUMNS[name]}
+            for said in refusals(name, rows[name]):
+                st.error(said, icon=":material/error:")
+            if any(mark := marks(rows[name], language, {c: column_label(c) for c in COLUMNS[name]})):
+                frame.insert(0, MARK, mark)
+                config[MARK] = st.column_config.TextColumn("⚠", disabled=True)
             edited = st.data_editor(
-                frame_of(name, rows[name]), key=f"build_{builder.version()}_{name}",
-                num_rows="dynamic", hide_index=True, placeholder="—",
-                column_config={c: column(c) for c in COLUMNS[name]})
-            out[name] = rows_of(edited)
+                frame, key=f"build_{builder.version()}_{name}", num_rows="dynamic",
+                hide_index=True, placeholder="—", column_config=config)
+            out[name] = rows_of(edited.drop(columns=MARK, errors="ignore"), language)
     return out
 
 
@@ -119,8 +136,8 @@ def driver_inputs(values: dict) -> dict:
                     format_func=lambda k: t(DRIVERS[k][0]), horizontal=True, key=f"{key}_type")
     names = DRIVERS[kind][1]
     cells = st.columns(3)
-    return {"type": kind, **{field: cell.number_input(t(label), value=float(values[field]),
-                                                      format="%.6g", key=f"{key}_{field}")
+    return {"type": kind, **{field: number_field(t(label), f"{key}_{field}", float(values[field]),
+                                                 where=cell)
                              for cell, field, label in zip(cells, ("at", "speed", "accel"), names)}}
 
 
@@ -237,6 +254,10 @@ def workbench() -> None:
     driven(base, edited, drawing_col, driver_place)
 
 
+def _texts(found: dict[str, list]) -> list[tuple]:
+    return [(name, i, column, why.text) for name, cells in found.items() for i, column, why in cells]
+
+
 @fragment
 def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerator,
            driver_place: DeltaGenerator) -> None:
@@ -250,14 +271,21 @@ def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerato
         driver = driver_inputs(driver_values(base))
     doc = document(edited, driver, base)
     builder.remember(doc)
+    now = {name: refused(rows, current()) for name, rows in edited.items()}
+    if _texts(now) != _texts({n: refused(r, current()) for n, r in tables(base).items()}):
+        builder.replace(doc)  # the tables again, with the ⚠ marks where they are now
+        st.rerun()
 
     scene, problem, solved = None, None, None
-    try:
-        scene = build_scene(doc, source=t("build.tables"))
-        solved = builder.drawing(scene)
-        st.session_state["build_last"] = doc, solved
-    except (SceneError, StructureError, Unsolvable) as exc:
-        problem = message(exc)
+    if any(now.values()):
+        problem = t("build.refused_cells", count=sum(map(len, now.values())))
+    else:
+        try:
+            scene = build_scene(doc, source=t("build.tables"))
+            solved = builder.drawing(scene)
+            st.session_state["build_last"] = doc, solved
+        except (SceneError, StructureError, Unsolvable) as exc:
+            problem = message(exc)
     last_doc, last = st.session_state.get("build_last", (None, None))
 
     with drawing_col:

@@ -33,6 +33,7 @@ from ui.firstpaint import waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
+from ui.numbers import last_value, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_speed, driver_start, scene_picker
@@ -79,22 +80,20 @@ def load_inputs(base: Scene, scene: Scene) -> Scene:
         forces, angles = [], []
         for i, f in enumerate(base.forces):
             left, right = st.columns([3, 2])
-            forces.append(left.number_input(t("forces.force_input", name=f.label or f"F_{f.member}",
-                                                point=f.point), key=f"F{i}", format="%.4g",
-                                            bind="query-params"))
-            angles.append(math.radians(right.number_input(
+            forces.append(number_field(t("forces.force_input", name=f.label or f"F_{f.member}",
+                                         point=f.point), f"F{i}", url=True, where=left))
+            angles.append(math.radians(number_field(
                 t("forces.force_angle_follows" if f.follows_member else "forces.force_angle"),
-                key=f"Fa{i}", format="%.4g", bind="query-params")))
-        moments = [st.number_input(t("forces.moment_input", member=mo.member), key=f"M{i}",
-                                   format="%.4g", bind="query-params")
+                f"Fa{i}", url=True, where=right)))
+        moments = [number_field(t("forces.moment_input", member=mo.member), f"M{i}", url=True)
                    for i, mo in enumerate(base.moments)]
         masses, rhos = {}, {}
         for n in base.members:
             left, right = st.columns(2)
-            masses[n] = left.number_input(t("forces.mass", member=n), min_value=0.0, key=f"m{n}",
-                                          format="%.4g", bind="query-params")
-            rhos[n] = right.number_input(t("forces.rho", member=n), min_value=0.0, key=f"rho{n}",
-                                         format="%.4g", bind="query-params")
+            masses[n] = number_field(t("forces.mass", member=n), f"m{n}", minimum=0.0, url=True,
+                                     where=left)
+            rhos[n] = number_field(t("forces.rho", member=n), f"rho{n}", minimum=0.0, url=True,
+                                   where=right)
     return scene.with_loads(masses=masses, gyrations=rhos, forces=forces, angles=angles,
                             moments=moments,
                             gravity=(base.gravity or 9.81) if gravity else 0.0)
@@ -167,7 +166,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
     if step.kind == "polygon":
         known = [(html(term.name), term.force) for term in step.terms]
         closing = [(html(name), force) for name, force in step.closing]
-        uf = st.session_state.get("UF") or polygon_scale(f for _, f in known + closing)
+        uf = last_value("UF") or polygon_scale(f for _, f in known + closing)
         chart(polygon_figure(known, closing, uf, scaled_title(t("forces.polygon_title"), uf, "N"),
                              (t("forces.legend_known"), t("forces.legend_closing")), look()),
               f"{k.motion.scene.id}-step-{number}", key="fig_step")
@@ -262,8 +261,8 @@ def polygons_tab(k: Kinetostatics, now: int, scene: Scene, values: tuple[float, 
     choice = st.selectbox(t("forces.group"), names, key="group",
                           format_func=lambda n: t("forces.driver") if n == "driver"
                           else t("forces.group_label", members=n))
-    asked_uf = st.number_input(t("forces.UF"), min_value=0.0, key="UF", format="%.4g",
-                               bind="query-params")  # 0: a scale that fits each position
+    asked_uf = number_field(t("forces.UF"), "UF", minimum=0.0,
+                            url=True)  # 0: a scale that fits each position
     actions = free_body(k, groups[choice], now)
     uf = asked_uf or polygon_scale(a.force for a in actions)
     figures = polygon_figures(k, now, groups[choice], actions, uf)
@@ -393,7 +392,7 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
         with tabs[2]:
             practising = practice.toggle("pr_forces")
             if practising:
-                uf = st.session_state.get("UF") or polygon_scale(
+                uf = last_value("UF") or polygon_scale(
                     complex(r.force[now]) for r in k.reactions.values())
                 practice.panel(practice_steps.forces(k, now, uf), "pr_forces",
                                t("practice.sheet_forces"))

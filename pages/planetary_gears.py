@@ -15,15 +15,17 @@ from ui import practice
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
 from ui.docs import method_doc
+from ui.editor_tables import typed_table
 from ui.export import chart, show_table
 from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import latex, message, num, t
 from ui.layout import page_columns
+from ui.numbers import number_field
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
-from ui.url import seed, table_to_url, url_table
+from ui.url import seed
 
 page_title("pages/planetary_gears.py")
 
@@ -48,12 +50,9 @@ def scale_inputs() -> tuple[float, float, float]:
     """U_L, U_v and the pole distance, in their place among the controls (drawn on every
     run, also one the train stops: Streamlit forgets a widget a run leaves out)."""
     with scales_place:
-        return (st.number_input(t("gears.scale_length"), min_value=1e-6, key="UL",
-                                format="%.4g", bind="query-params"),
-                st.number_input(t("gears.scale_velocity"), min_value=1e-6, key="Uv",
-                                format="%.4g", bind="query-params"),
-                st.number_input(t("gears.pole_distance"), min_value=0.1, key="H",
-                                format="%.3g", bind="query-params"))
+        return (number_field(t("gears.scale_length"), "UL", minimum=1e-6, url=True),
+                number_field(t("gears.scale_velocity"), "Uv", minimum=1e-6, url=True),
+                number_field(t("gears.pole_distance"), "H", minimum=0.1, url=True))
 
 
 def meshes_table(base: GearTrain) -> pd.DataFrame:
@@ -68,12 +67,12 @@ with controls:
     inputs = []
     for inp in base.inputs:
         if inp.velocity is None:
-            omega = st.number_input(t("gears.input_omega", member=inp.member),
-                                    key=f"in{inp.member}", format="%.4g", bind="query-params")
+            omega = number_field(t("gears.input_omega", member=inp.member), f"in{inp.member}",
+                                 url=True)
             inputs.append(Input(inp.member, omega))
         else:
-            v = st.number_input(t("gears.input_velocity", member=inp.member, radius=num(inp.radius)),
-                                key=f"in{inp.member}", format="%.4g", bind="query-params")
+            v = number_field(t("gears.input_velocity", member=inp.member, radius=num(inp.radius)),
+                             f"in{inp.member}", url=True)
             inputs.append(Input(inp.member, v / inp.radius, v, inp.radius))
     scales_place = st.container()  # U_L, U_v and the pole distance: drawn by the fragment below
 
@@ -81,10 +80,9 @@ with main:
     with st.container(key="later_meshes"):  # on a phone, after the charts (ui/layout.py)
         st.markdown(f"**{t('gears.meshes')}**")
         own = meshes_table(base)
-        table = st.data_editor(url_table("meshes", own, base.id), key=f"meshes-{base.id}",
-                               width="stretch", disabled=["a", "b"], column_config={
-                                   "ring": st.column_config.NumberColumn(t("gears.ring"))})
-        table_to_url("meshes", table, own)
+        table = typed_table("meshes", own, base.id, ("R_a [m]", "R_b [m]"), width="stretch",
+                            disabled=["a", "b"], column_config={
+                                "ring": st.column_config.NumberColumn(t("gears.ring"))})
     meshes = tuple(Mesh((int(r["a"]), int(r["b"])), (float(r["R_a [m]"]), float(r["R_b [m]"])),
                         int(r["ring"]) or None, old.bevel)
                    for (_, r), old in zip(table.iterrows(), base.meshes))

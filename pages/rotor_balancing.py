@@ -17,15 +17,17 @@ from solvers.balancing import Balance, BalanceError, balance, graphical_error, u
 from ui import practice
 from ui.benchmarks import speed_panel
 from ui.chapters import page_title
+from ui.editor_tables import typed_table
 from ui.export import Rows, chart, print_button, show_table
 from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
+from ui.numbers import last_value, number_field
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
-from ui.url import seed, table_to_url, url_choice, url_table
+from ui.url import seed, url_choice
 
 
 def legend() -> tuple[str, str]:
@@ -56,7 +58,7 @@ def table_of(base: Rotor) -> pd.DataFrame:
                          for m in base.masses], columns=COLUMNS)
 
 
-def rotor_from_inputs(base: Rotor, table: pd.DataFrame) -> Rotor:
+def rotor_from_inputs(base: Rotor, table: pd.DataFrame, typed: dict[str, float]) -> Rotor:
     rows = table.dropna()
     masses = tuple(Mass(float(m), float(r) / MM, math.radians(float(a)), float(x) / MM)
                    for m, r, a, x in rows[list(COLUMNS)].itertuples(index=False))
@@ -64,13 +66,13 @@ def rotor_from_inputs(base: Rotor, table: pd.DataFrame) -> Rotor:
     planes = PLANES if mode == "dynamic" else PLANES[:1]
     corrections = {}
     for plane in planes:
-        value = st.session_state[f"value{plane}"]
+        value = typed[f"value{plane}"]
         if st.session_state[f"given{plane}"] == "mass":
             corrections[plane] = Correction(mass=value)
         else:
             corrections[plane] = Correction(radius=value / MM)
-    return base.with_(masses=masses, mode=mode, omega=st.session_state["omega"],
-                      planes={p: st.session_state[f"x{p}"] / MM for p in planes},
+    return base.with_(masses=masses, mode=mode, omega=typed["omega"],
+                      planes={p: typed[f"x{p}"] / MM for p in planes},
                       corrections=corrections)
 
 
@@ -81,25 +83,24 @@ with controls:
     url_choice(st.radio, t("rotor.mode"), list(modes), "mode", default=base.mode,
                format_func=lambda m: t(modes[m]), horizontal=True)
     givens = {"mass": "rotor.given_mass", "radius": "rotor.given_radius"}
+    typed: dict[str, float] = {}
     for plane in PLANES[:1] if st.session_state["mode"] == "static" else PLANES:
         st.markdown(f"**{t('rotor.plane', plane=plane)}**")
-        st.number_input(t("rotor.plane_x"), key=f"x{plane}", step=10.0, format="%.1f",
-                        bind="query-params")
+        typed[f"x{plane}"] = number_field(t("rotor.plane_x"), f"x{plane}", url=True)
         given = url_choice(st.radio, t("rotor.given"), list(givens), f"given{plane}",
                            format_func=lambda g: t(givens[g]), horizontal=True)
         unit_label = "kg" if given == "mass" else "mm"
-        st.number_input(f"{t(givens[given])} [{unit_label}]", min_value=1e-6, key=f"value{plane}",
-                        format="%.4g", bind="query-params")
-    st.number_input(t("rotor.omega"), min_value=0.1, key="omega", step=10.0, bind="query-params")
+        typed[f"value{plane}"] = number_field(f"{t(givens[given])} [{unit_label}]",
+                                              f"value{plane}", minimum=1e-6, url=True)
+    typed["omega"] = number_field(t("rotor.omega"), "omega", minimum=0.1, url=True)
     precision_slot = st.container()  # the drawing's precision: drawn by accuracy() below
 
 with main, st.container(key="later_masses"):  # on a phone, after the polygons (ui/layout.py)
     st.markdown(f"**{t('rotor.masses')}**")
     own = table_of(base)
-    table = st.data_editor(url_table("masses", own, base.id, rows_fixed=False), num_rows="dynamic",
-                           key=f"masses-{base.id}", width="stretch")
-    table_to_url("masses", table, own)
-    rotor = rotor_from_inputs(base, table)
+    table = typed_table("masses", own, base.id, COLUMNS, rows_fixed=False, num_rows="dynamic",
+                        width="stretch")
+    rotor = rotor_from_inputs(base, table, typed)
     try:
         result = balance(rotor)
     except BalanceError as exc:
@@ -120,8 +121,7 @@ def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> Non
     vs = [u * (m.x - x_ref) * MM for u, m in zip(us, rotor.masses)]  # kg·mm²
     v_fix = found[other] * (rotor.planes[other] - x_ref) * MM
     scale = polygon_scale(accumulate(vs))
-    scale = st.number_input(t("rotor.scale_v"), min_value=1e-6, value=scale,
-                            key=f"UV{reference}-{rotor.id}", format="%.4g")
+    scale = number_field(t("rotor.scale_v"), f"UV{reference}-{rotor.id}", scale, minimum=1e-6)
     known, closing = [(f"V{i + 1}", v) for i, v in enumerate(vs)], [(f"V{other}", v_fix)]
     title = t("rotor.v_title", plane=reference)
     chart(polygon_figure(known, closing, scale, scaled_title(title, scale, "kg·mm²"), legend(),
@@ -178,11 +178,10 @@ with main:
     tab_v, tab_u, tab_end, tab_3d = st.tabs([t("rotor.tab_v"), t("rotor.tab_u"), t("rotor.tab_end"),
                                              t("rotor.tab_3d")], key="tab", on_change="rerun")
     scale_key = f"UU-{rotor.id}"
-    scale_u = st.session_state.get(scale_key) or polygon_scale(accumulate(us))
+    scale_u = last_value(scale_key) or polygon_scale(accumulate(us))
     if tab_u.open:
         with tab_u:
-            scale_u = st.number_input(t("rotor.scale_u"), min_value=1e-6, value=scale_u,
-                                      key=scale_key, format="%.4g")
+            scale_u = number_field(t("rotor.scale_u"), scale_key, scale_u, minimum=1e-6)
             known, closing = list(zip(names, us)), [(f"U{p}", u) for p, u in found.items()]
             chart(polygon_figure(known, closing, scale_u,
                                  scaled_title(t("rotor.tab_u"), scale_u, "kg·mm"), legend(),

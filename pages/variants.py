@@ -26,6 +26,7 @@ from ui.cache import page_cache
 from ui.chapters import VARIANTS, page_for
 from ui.export import dataframe
 from ui.i18n import current, message, num, t, title_of
+from ui.numbers import number_field
 
 
 @page_cache(st.cache_resource(max_entries=8, show_spinner=False))
@@ -51,8 +52,10 @@ choice = st.selectbox(t("var.task"), tasks(), key="var_task", format_func=titles
                       index=tasks().index("zbirka-3.1"))  # the course's exam favourite
 givens = task_of(choice).givens
 c1, c2, c3, c4 = st.columns(4)
-count = c1.number_input(t("var.count"), 1, MAX_COUNT, 30, key="var_count")
-seed = c2.number_input(t("var.seed"), 0, MAX_SEED, 1, key="var_seed")
+count = number_field(t("var.count"), "var_count", 30, minimum=1, maximum=MAX_COUNT, integer=True,
+                     where=c1)
+seed = number_field(t("var.seed"), "var_seed", 1, minimum=0, maximum=MAX_SEED, integer=True,
+                    where=c2)
 spread = c3.slider(t("var.spread"), 1, 50, DEFAULT_SPREAD, key="var_spread")
 sheet_languages = {"sr": t("var.language_sr"), "en": t("var.language_en")}
 language = c4.radio(t("var.language"), tuple(sheet_languages), index=0 if current() != "en" else 1,

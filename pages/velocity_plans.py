@@ -30,6 +30,7 @@ from ui.firstpaint import first_run, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
+from ui.numbers import number_field
 from ui.present import look
 from ui.scenes import driver_speed, driver_start, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -72,8 +73,7 @@ def scale_inputs() -> dict[str, float]:
     with st.expander(t("plans.scales"), expanded=True):
         st.caption(t("plans.scales_hint"))
         labels = {"L": "plans.UL", "v": "plans.Uv", "a": "plans.Ua"}
-        scales = {k: st.number_input(t(label), min_value=1e-9, format="%.4g", key=f"U{k}",
-                                     bind="query-params")
+        scales = {k: number_field(t(label), f"U{k}", minimum=1e-9, url=True)
                   for k, label in labels.items()}
         precision = st.slider(t("plans.precision"), 0.1, 2.0, step=0.1, key="prec",
                               bind="query-params")

@@ -6,8 +6,8 @@ import json
 
 import pytest
 
-from tests.test_pages import chart, charts, page
-from ui.i18n import parse_number
+from tests.test_pages import chart, charts, page, typed
+from ui.numbers import parse
 
 PAGE = "pages/assur_groups.py"
 
@@ -76,10 +76,10 @@ def test_newton_is_shown_iteration_by_iteration(lang, done):
     at = page("pages/assur_groups.py", lang=lang, scene="triad-full-turn", newton_iterations=True)
     assert not at.exception and not at.error
     table = at.dataframe[-1].value
-    residuals = [parse_number(r) for r in table.iloc[:, 1]]  # 1,74e-02 in Serbian
+    residuals = [parse(r, "sr") for r in table.iloc[:, 1]]  # 1,74e-02 in Serbian
     assert list(table["k"]) == list(range(len(table))) and residuals[-1] < 1e-9 < residuals[0]
     assert any(done in c.value for c in at.caption)
-    at.number_input(key="back").set_value(15.0).run()  # too far for this triad (it wanders)
+    typed(at, "back", 15.0).run()  # too far for this triad (it wanders)
     assert not at.exception
     assert any("15" not in w.value and ("converge" in w.value or "konvergen" in w.value
                                         or "конверген" in w.value) for w in at.warning)

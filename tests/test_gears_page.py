@@ -6,7 +6,7 @@ import pytest
 
 from mechanisms import preset_ids
 
-from .test_pages import charts, linked, page
+from .test_pages import charts, linked, page, typed
 
 
 def read(equation: str, lang: str) -> str:
@@ -26,7 +26,7 @@ def test_every_train_draws_its_views(pid, tab):
 def test_doubling_the_input_doubles_every_speed():
     at = page("pages/planetary_gears.py", lang="en", scene="zbirka-6.8")
     before = at.dataframe[1].value
-    at.number_input(key="in5").set_value(200.0).run()
+    typed(at, "in5", 200.0).run()
     after = at.dataframe[1].value
     for b, a in zip(before["ω [s⁻¹]"], after["ω [s⁻¹]"]):
         assert float(a) == pytest.approx(2 * float(b), rel=1e-4)
@@ -41,9 +41,9 @@ def test_angular_velocities_are_read_off_the_pole_rays_as_in_the_book():
     """U_ω = U_v/(H·U_L): with 0.1 m/cm, 1 m/s per cm and H = 2 cm, 5 s⁻¹ per cm of intercept."""
     at = page("pages/planetary_gears.py", lang="en", scene="zbirka-6.8",
               tab="Velocity diagram (Kutzbach)")
-    at.number_input(key="UL").set_value(0.1).run()
-    at.number_input(key="Uv").set_value(1.0).run()
-    at.number_input(key="H").set_value(2.0).run()
+    typed(at, "UL", 0.1).run()
+    typed(at, "Uv", 1.0).run()
+    typed(at, "H", 2.0).run()
     table = next(d.value for d in at.dataframe if "intercept x [cm]" in d.value.columns)
     carrier = table[table["member"] == 5].iloc[0]
     assert float(carrier["intercept x [cm]"]) == pytest.approx(100.0 / 5.0)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.test_pages import chart, decode, page, texts
+from tests.test_pages import chart, decode, page, texts, typed
 
 PAGE = "pages/kinetostatics.py"
 
@@ -34,8 +34,8 @@ def test_moving_the_crank_and_adding_inertia_change_the_torque():
     at.slider(key="at").set_value(200.0).run()
     moved = metrics(at)[0]
     assert moved != before
-    at.number_input(key="m5").set_value(3.0)
-    at.number_input(key="rho5").set_value(0.1).run()
+    typed(at, "m5", 3.0)
+    typed(at, "rho5", 0.1).run()
     assert not at.exception
     assert metrics(at)[0] != moved
     inertia = at.dataframe[1].value
@@ -73,7 +73,7 @@ def test_the_cycle_curves_pass_through_the_instant_and_only_the_marker_follows_t
 def test_the_polygon_follows_the_force_scale():
     at = page(PAGE, lang="en", tab="Force polygons")
     lengths = at.dataframe[0].value.iloc[:, 2].tolist()
-    at.number_input(key="UF").set_value(20.0).run()
+    typed(at, "UF", 20.0).run()
     halved = at.dataframe[0].value.iloc[:, 2].tolist()
     assert [float(a) / 2 for a in lengths] == pytest.approx([float(b) for b in halved], abs=6e-3)
 
@@ -92,9 +92,9 @@ def test_the_page_speaks_serbian(lang):
 
 def test_check_my_answer_grades_the_driving_torque():
     at = page(PAGE, lang="en", self_open=True)
-    at.text_input(key="self_value").input("4,535").run()  # M_p of the lecture example
+    at.text_input(key="self_value").input("4.535").run()  # M_p of the lecture example
     assert any("Correct" in s.value for s in at.success)
-    at.text_input(key="self_value").input("4,9").run()
+    at.text_input(key="self_value").input("4.9").run()
     assert any("Off by" in w.value for w in at.warning)
 
 
@@ -109,7 +109,7 @@ def test_turning_the_load_changes_the_torque_as_the_power_says():
     only load (M_4 set to zero)."""
     at = page(PAGE, lang="en", M0=0.0)
     ahead = float(at.metric[0].value.split()[0])
-    at.number_input(key="Fa0").set_value(180.0).run()
+    typed(at, "Fa0", 180.0).run()
     assert not at.exception
     assert float(at.metric[0].value.split()[0]) == pytest.approx(-ahead, rel=1e-4)
 

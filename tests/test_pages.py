@@ -10,6 +10,7 @@ from streamlit.testing.v1 import AppTest
 
 from ui.chapters import CHAPTERS
 from ui.i18n import LANGUAGES, t
+from ui.numbers import shown
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -23,6 +24,12 @@ def page(path: str, **state) -> AppTest:
     if path != "app.py":
         at.switch_page(path).run()
     return at
+
+
+def typed(at: AppTest, key: str, value: float, language: str = "en"):
+    """A number typed into a number field (a text box ui.numbers reads) the way a person
+    writes it in ``language``; ``.run()`` it."""
+    return at.text_input(key=key).input(shown(value, language))
 
 
 def decode(value):

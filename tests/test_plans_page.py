@@ -6,7 +6,7 @@ from mechanisms import load_preset
 from solvers.kinematics import solve
 
 from .test_gears_page import read
-from .test_pages import arrows as drawn_arrows, chart, charts, page
+from .test_pages import arrows as drawn_arrows, chart, charts, page, typed
 from .test_plans import LINKAGES
 
 PAGE = "pages/velocity_plans.py"
@@ -49,7 +49,7 @@ def test_the_step_slider_shows_that_step_s_equation_and_fewer_arrows():
 def test_a_coarser_velocity_scale_draws_a_smaller_plan():
     at = plan_page(scene="analitika-2.1", Uv=0.5)
     small = arrows(at, "fig_v")
-    at.number_input(key="Uv").set_value(1.0).run()
+    typed(at, "Uv", 1.0).run()
     halved = arrows(at, "fig_v")
     assert [round(2 * c[2], 6) for c in halved] == [round(c[2], 6) for c in small]
 
@@ -78,9 +78,9 @@ def test_self_check_accepts_a_value_within_drawing_precision():
     box = at.selectbox(key="self_quantity")
     index = next(i for i, o in enumerate(box.options) if o.startswith("v_C "))
     box.set_value(index).run()
-    at.text_input(key="self_value").input("1,98").run()  # exact 1.959 m/s; ±0.025 m/s
+    at.text_input(key="self_value").input("1.98").run()  # exact 1.959 m/s; ±0.025 m/s
     assert at.info and "drawing" in at.info[0].value
-    at.text_input(key="self_value").input("2,2").run()
+    at.text_input(key="self_value").input("2.2").run()
     assert at.warning
 
 

@@ -13,7 +13,7 @@ from cli.practice import steps_for
 from mechanisms import load_preset
 from ui.i18n import t
 
-from .test_pages import charts, page
+from .test_pages import charts, page, typed
 
 PAGES = [  # page, state, practice key, method, scene
     ("pages/trajectories.py", {"view": "compass", "scene": "zbirka-1.1"}, "pr_compass", "compass"),
@@ -38,17 +38,19 @@ def _open(path: str, state: dict, key: str, lang: str):
 
 
 def _type(at, key: str, step, answer) -> None:
-    """Type an answer into the step's form and press Check."""
+    """Type an answer into the step's form, as a person of the page's language writes
+    numbers (0,35 in Serbian), and press Check."""
+    lang = at.session_state["lang"]
     if step.kind == "vector":
         z = complex(answer)
-        at.number_input(key=f"{key}_len_{step.id}").set_value(abs(z))
-        at.number_input(key=f"{key}_ang_{step.id}").set_value(math.degrees(cmath.phase(z)))
+        typed(at, f"{key}_len_{step.id}", abs(z), lang)
+        typed(at, f"{key}_ang_{step.id}", math.degrees(cmath.phase(z)), lang)
     elif step.kind == "point":
-        at.number_input(key=f"{key}_x_{step.id}").set_value(complex(answer).real)
-        at.number_input(key=f"{key}_y_{step.id}").set_value(complex(answer).imag)
+        typed(at, f"{key}_x_{step.id}", complex(answer).real, lang)
+        typed(at, f"{key}_y_{step.id}", complex(answer).imag, lang)
     else:
-        at.number_input(key=f"{key}_value_{step.id}").set_value(float(answer))
-    next(b for b in at.button if b.label == t("practice.check", at.session_state["lang"])).click().run()
+        typed(at, f"{key}_value_{step.id}", float(answer), lang)
+    next(b for b in at.button if b.label == t("practice.check", lang)).click().run()
 
 
 def _scene(state: dict):

@@ -2,7 +2,7 @@
 
 import pytest
 
-from .test_pages import arrows, chart, charts, linked, page
+from .test_pages import arrows, chart, charts, linked, page, typed
 
 
 def rotor_page(**state):
@@ -30,13 +30,13 @@ def test_task_7_1_shows_exact_beside_the_book():
 def test_a_bigger_correction_radius_needs_a_proportionally_smaller_mass():
     at = rotor_page(scene="zbirka-7.1")
     before = exact(at, "I", "mass")
-    at.number_input(key="valueI").set_value(400.0).run()  # r_I from 200 mm to 400 mm
+    typed(at, "valueI", 400.0).run()  # r_I from 200 mm to 400 mm
     assert exact(at, "I", "mass") == pytest.approx(before / 2, rel=1e-4)
 
 
 def test_planes_at_the_same_place_get_a_message_not_a_traceback():
     at = rotor_page(scene="zbirka-7.1")
-    at.number_input(key="xII").set_value(450.0).run()
+    typed(at, "xII", 450.0).run()
     assert not at.exception
     assert "same axial position" in at.error[0].value
 
@@ -62,21 +62,23 @@ def test_every_task_draws_every_view_and_only_the_open_one(tab, key):
 
 def test_a_student_checks_a_graphical_answer():
     at = rotor_page(scene="zbirka-7.1", self_open=True)
-    at.text_input(key="self_value").input("0,354").run()  # the first quantity: m_I [kg]
+    at.text_input(key="self_value").input("0,354").run()  # a comma on an English page
+    assert "decimal sign is a point" in at.error[-1].value and not at.success
+    at.text_input(key="self_value").input("0.354").run()  # the first quantity: m_I [kg]
     assert "Correct" in at.success[0].value
-    at.text_input(key="self_value").input("0,358").run()  # 1.1 % off: within ±0.005 kg of a drawing
+    at.text_input(key="self_value").input("0.358").run()  # 1.1 % off: within ±0.005 kg of a drawing
     assert "good graphical answer" in at.info[-1].value
-    at.text_input(key="self_value").input("0,5").run()
+    at.text_input(key="self_value").input("0.5").run()
     assert "Off by" in at.warning[-1].value
     at.text_input(key="self_value").input("abc").run()
-    assert "not a number" in at.error[-1].value
+    assert "` abc ` is not one number" in at.error[-1].value and not at.warning
 
 
 def test_a_link_carries_the_mass_table():
     """A link with a third mass in its table balances that rotor, not the book's."""
     own = linked("pages/rotor_balancing.py", scene="zbirka-7.1", lang="en")
     rows = own.dataframe[0].value.to_numpy().tolist() + [[0.2, 100.0, 45.0, 150.0]]
-    text = ";".join(",".join(f"{v:g}" for v in row) for row in rows)
+    text = ";".join(",".join(f"{float(v):g}" for v in row) for row in rows)  # cells are text
     at = linked("pages/rotor_balancing.py", scene="zbirka-7.1", lang="en", masses=text)
     assert not at.exception
     assert len(at.dataframe[0].value) == len(rows)

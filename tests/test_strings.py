@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from mechanisms import load_preset, preset_ids
-from ui.i18n import LANGUAGES, member_labels, num, parse_number, t, table
+from ui.i18n import LANGUAGES, member_labels, num, t, table
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *ROOT.glob("figures/*.py"),
@@ -21,12 +21,14 @@ def message_families() -> set[str]:
     from mechanisms import limits
     from mechanisms.loader import TOML_REASONS
     from solvers.diagnostics import WHY_OPEN
+    from ui.numbers import REASONS
     gears = (ROOT / "mechanisms" / "gears.py").read_text()
     return ({f"scene.lists.{what}" for _, what, _ in (*limits.LINKAGE, *limits.GEARS,
                                                       *limits.ROTOR, ("", "book", 0))}
             | {f"scene.array.{what}" for what in re.findall(
                 r'_array\((?:[^()]|\([^()]*\))*?"(\w+)"\)', gears)}
             | {f"why_open.{kind}" for kind in (*WHY_OPEN, "other")}
+            | {f"num.{reason}" for reason in REASONS}
             | {f"toml.{key}" for key in (*TOML_REASONS.values(), "other")})
 
 
@@ -67,11 +69,8 @@ def test_cyrillic_is_transliterated_but_notation_and_units_stay_latin():
     assert t("traj.length", language="sr-cyrl", link="AB", member=3).startswith("AB (члан 3)")
 
 
-def test_numbers_use_the_languages_decimal_separator_and_inputs_accept_both():
+def test_numbers_use_the_languages_decimal_separator():
     assert num(0.25, language="sr") == "0,25" and num(0.25, language="en") == "0.25"
-    assert parse_number("0,25") == parse_number("0.25") == 0.25
-    with pytest.raises(ValueError):
-        parse_number("abc")
 
 
 def test_roman_numerals_and_single_letters_stay_latin_in_cyrillic():

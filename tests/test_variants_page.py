@@ -9,7 +9,7 @@ from exams.codes import Settings
 from exams.variants import generate, task
 from ui.i18n import LANGUAGES, t
 
-from .test_pages import page
+from .test_pages import page, typed
 
 PAGE = "pages/variants.py"
 
@@ -22,8 +22,8 @@ def pick(at, pid: str):
 
 def make(at, pid: str, count: int, seed: int, language: str = "en"):
     pick(at, pid)
-    at.number_input(key="var_count").set_value(count)
-    at.number_input(key="var_seed").set_value(seed).run()
+    typed(at, "var_count", count)
+    typed(at, "var_seed", seed).run()
     next(b for b in at.button if b.label == t("var.make", language)).click().run()
     return at
 

@@ -140,11 +140,6 @@ def num(value: float, digits: int = 4, language: str | None = None) -> str:
     return text.replace(".", ",") if (language or current()).startswith("sr") else text
 
 
-def parse_number(text: str) -> float:
-    """A typed number: accepts both 0,25 and 0.25 (raises ValueError otherwise)."""
-    return float(text.strip().replace(" ", "").replace(",", "."))
-
-
 def language_picker() -> str:
     """The language choice in the sidebar, kept in the URL as ``?lang=``; the run's language
     from here on (a session's reruns share one script thread, and each run passes here

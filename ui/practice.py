@@ -17,6 +17,7 @@ from figures.practice import practice_figure
 from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, polar
 from ui.export import chart
 from ui.i18n import num, t
+from ui.numbers import Refused, number_field, refusal
 from ui.present import look
 
 PARTS = {"vector": "practice.part_vector", "point": "practice.part_point",
@@ -91,25 +92,32 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
 
 
 def _typing(step: Step, key: str, progress: Progress) -> None:
-    """The same answer typed: length and direction, a point's x and y, or a signed value."""
+    """The same answer typed: length and direction, a point's x and y, or a signed value
+    (each read by ui.numbers: 0,35 or 0.35 on a Serbian page). A Check with a box empty or
+    unreadable names that box and grades nothing."""
+    if step.kind == "vector":
+        fields = {"len": t("practice.length", unit=step.unit), "ang": t("practice.angle")}
+    elif step.kind == "point":
+        fields = {"x": "x [m]", "y": "y [m]"}
+    else:
+        fields = {"value": t("practice.value", unit=step.unit)}
     with st.form(f"{key}_form_{step.id}", border=False):
+        cols = st.columns(len(fields))
+        values = [number_field(label, f"{key}_{name}_{step.id}", optional=True, where=col)
+                  for col, (name, label) in zip(cols, fields.items())]
+        if not st.form_submit_button(t("practice.check"), icon=":material/check:"):
+            return
+        for (name, label), value in zip(fields.items(), values):
+            if value is None and not st.session_state[f"{key}_{name}_{step.id}"].strip():
+                st.error(refusal(label, Refused("empty", "")), icon=":material/error:")
+        if any(v is None for v in values):
+            return
         if step.kind == "vector":
-            cols = st.columns(2)
-            size = cols[0].number_input(t("practice.length", unit=step.unit), value=None,
-                                        format="%.6g", key=f"{key}_len_{step.id}")
-            angle = cols[1].number_input(t("practice.angle"), value=None, format="%.6g",
-                                         key=f"{key}_ang_{step.id}")
-            answer = None if size is None or angle is None else polar(size, angle)
+            progress.give(step, polar(*values))
         elif step.kind == "point":
-            cols = st.columns(2)
-            x = cols[0].number_input("x [m]", value=None, format="%.6g", key=f"{key}_x_{step.id}")
-            y = cols[1].number_input("y [m]", value=None, format="%.6g", key=f"{key}_y_{step.id}")
-            answer = None if x is None or y is None else complex(x, y)
+            progress.give(step, complex(*values))
         else:
-            answer = st.number_input(t("practice.value", unit=step.unit), value=None,
-                                     format="%.6g", key=f"{key}_value_{step.id}")
-        if st.form_submit_button(t("practice.check"), icon=":material/check:"):
-            progress.give(step, answer)
+            progress.give(step, values[0])
 
 
 def _feedback(step: Step, progress: Progress) -> None:

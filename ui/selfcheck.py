@@ -6,7 +6,8 @@ from dataclasses import dataclass
 
 import streamlit as st
 
-from ui.i18n import num, parse_number, t
+from ui.i18n import num, t
+from ui.numbers import number_field
 
 
 @dataclass(frozen=True)
@@ -52,13 +53,8 @@ def answer_box(quantities: list[Quantity], key: str) -> None:
         choice = st.selectbox(t("self.quantity"), range(len(labels)), format_func=labels.__getitem__,
                               key=f"{key}_quantity")
         quantity = quantities[choice]
-        typed = st.text_input(t("self.value", unit=quantity.unit), key=f"{key}_value")
-        if not typed:
-            return
-        try:
-            value = parse_number(typed)
-        except ValueError:
-            st.error(t("self.not_a_number", text=typed))
+        value = number_field(t("self.value", unit=quantity.unit), f"{key}_value", optional=True)
+        if value is None:
             return
         verdict, relative = grade(value, quantity)
         exact = f"{num(quantity.exact, 5)} {quantity.unit}"

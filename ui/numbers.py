@@ -1,0 +1,177 @@
+"""Every number a person types, read by one parser, in an input the app controls.
+
+Streamlit's number box and a data editor's number cell read what is typed in the *browser's*
+language: on a Serbian page in an English browser "0,35" became 35 and "3,1" became 31,
+silently. So no number is typed into a widget that parses it in the browser. A number field
+here is a text box whose text this module reads:
+
+- on a Serbian page (Latin or Cyrillic) "0,35" and "0.35" both mean 0.35;
+- on an English page the point is the decimal sign, and a comma is refused with a message
+  (it could be a thousands separator: "1,000" must not silently become 1 or 1000);
+- anything that is not one number ("0,3,5", "1.2.3", "abc", an empty box) is refused at its
+  field, in words that name the field and repeat what was typed; the page goes on with the
+  field's last good value, so nothing else changes.
+
+A number is shown the way it is written in the page's language (a decimal comma in
+Serbian), with every digit it holds, so that showing a value and reading it back never
+changes it.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+import streamlit as st
+
+from ui.i18n import current, num, t
+
+REASONS = ("empty", "not_number", "comma", "integer", "below", "above")  # num.<reason>
+NUMBER = re.compile(r"[+\-\u2212]?(?:[0-9]+(?:[.,][0-9]*)?|[.,][0-9]+)(?:[eE][+\-\u2212]?[0-9]+)?")
+SHOWN_MAX = 40  # characters of a typed text repeated in a message
+
+
+@dataclass(frozen=True)
+class Refused(ValueError):
+    """Why a typed text is not taken: ``reason`` is a ``num.<reason>`` string key."""
+
+    reason: str
+    text: str
+    limit: float | None = None
+
+
+def comma_is_decimal(language: str) -> bool:
+    return language.startswith("sr")
+
+
+def parse(text: str, language: str, *, integer: bool = False) -> float:
+    """The one number ``text`` says in ``language``, or :class:`Refused`."""
+    typed = text.strip()
+    if not typed:
+        raise Refused("empty", text)
+    if NUMBER.fullmatch(typed) is None:
+        raise Refused("not_number", text)
+    if "," in typed and not comma_is_decimal(language):
+        raise Refused("comma", text)
+    value = float(typed.replace(",", ".").replace("\u2212", "-"))
+    if not math.isfinite(value):
+        raise Refused("not_number", text)
+    if integer and not value.is_integer():
+        raise Refused("integer", text)
+    return value
+
+
+def shown(value: float, language: str, *, integer: bool = False) -> str:
+    """``value`` as a person writes it in ``language``, with every digit it holds (Python's
+    shortest text that reads back as the same float)."""
+    if integer:
+        return str(int(value))
+    text = repr(float(value))
+    if text.endswith(".0"):
+        text = text[:-2]
+    return text.replace(".", ",") if comma_is_decimal(language) else text
+
+
+def refusal(field: str, refused: Refused, language: str | None = None) -> str:
+    """The refusal in words: the field, what was typed (as typed, cut and shown literally)
+    and why."""
+    language = language or current()
+    limit = num(refused.limit, 6, language) if refused.limit is not None else ""
+    return t(f"num.{refused.reason}", language, field=field, text=literal(refused.text),
+             limit=limit)
+
+
+def literal(text: str) -> str:
+    """A typed text shown exactly as typed inside a Markdown message: a code span (markup,
+    dollars and stars stay text), cut to ``SHOWN_MAX`` characters, control characters
+    dropped."""
+    text = "".join(c for c in text if c.isprintable())
+    if len(text) > SHOWN_MAX:
+        text = text[:SHOWN_MAX] + "…"
+    if not text:
+        return "“”"
+    fence = "`" * (max((len(run) for run in re.findall(r"`+", text)), default=0) + 1)
+    return f"{fence} {text} {fence}"
+
+
+def check(text: str, language: str, *, minimum: float | None = None,
+          maximum: float | None = None, integer: bool = False) -> float:
+    """``parse`` and the field's range: a value outside it is refused, not clamped."""
+    value = parse(text, language, integer=integer)
+    if minimum is not None and value < minimum:
+        raise Refused("below", text, minimum)
+    if maximum is not None and value > maximum:
+        raise Refused("above", text, maximum)
+    return value
+
+
+def _memo(key: str) -> str:
+    return f"_num_{key}"
+
+
+def number_field(label: str, key: str, value: float | None = None, *,
+                 minimum: float | None = None, maximum: float | None = None,
+                 integer: bool = False, optional: bool = False, url: bool = False,
+                 where=None, help: str | None = None,
+                 label_visibility: str = "visible") -> float | None:
+    """A text box for one number, read by :func:`parse` in the page's language.
+
+    ``value`` is the field's first value (a page that seeds its widgets through
+    ``ui.url.seed`` puts a float under ``key`` instead; it is written out here). ``url``
+    keeps the value in the link as ``?key=`` with a decimal point, whatever the language.
+    ``optional``: an answer box, where an empty box is ``None`` (not given yet), and so is
+    a refused text. Otherwise a text that is refused shows its message under the field and
+    the field's last good value is returned, so the rest of the page stays as it was.
+    """
+    where = where if where is not None else st
+    language = current()
+    state = st.session_state
+    memo = state.get(_memo(key))  # (language, text shown, value) of the last good reading
+    given = state.get(key)
+    if isinstance(given, (int, float)) and not isinstance(given, bool):
+        value, given = float(given), None  # seeded by the page (ui.url.seed)
+    elif given is None and url and key in st.query_params:
+        try:
+            value = parse(st.query_params[key], "sr", integer=integer)  # either sign
+        except Refused:
+            pass  # a hand-edited link: the page's own value
+    if given is None:
+        text = "" if value is None else shown(value, language, integer=integer)
+        state[key] = text
+        memo = (language, text, value)
+    elif memo is not None and memo[0] != language and memo[1] == given:
+        text = "" if memo[2] is None else shown(memo[2], language, integer=integer)
+        state[key] = text  # the language changed: the same value, written its new way
+        memo = (language, text, memo[2])
+    box = where.container(key=f"num_{'pos' if minimum is not None and minimum >= 0 else 'any'}_{key}")
+    typed = box.text_input(label, key=key, help=help, autocomplete="off",
+                           label_visibility=label_visibility)
+    result = memo[2] if memo is not None else value
+    if memo is not None and typed == memo[1]:
+        result = memo[2]  # the value shown, with every bit it had
+    elif optional and not typed.strip():
+        result = None
+        memo = (language, typed, None)
+    else:
+        try:
+            result = check(typed, language, minimum=minimum, maximum=maximum, integer=integer)
+            memo = (language, typed, result)
+        except Refused as refused:
+            box.error(refusal(label, refused), icon=":material/error:")
+            if optional:
+                result = None  # an answer: a refused one is no answer, not the last one
+    state[_memo(key)] = memo
+    if url and result is not None:
+        st.query_params[key] = f"{result:.15g}"
+    return result
+
+
+def last_value(key: str) -> float | None:
+    """A number field's value as it last read (for code that needs it before the field is
+    drawn in this run)."""
+    memo = st.session_state.get(_memo(key))
+    if memo is not None:
+        return memo[2]
+    given = st.session_state.get(key)
+    return float(given) if isinstance(given, (int, float)) else None
