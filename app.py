@@ -36,7 +36,9 @@ def navigation_pages() -> list[st.Page]:
     return kept[1]
 
 
-st.set_page_config(page_title="Mehanizmi", page_icon=":material/settings:", layout="wide")
+# an emoji, drawn by the browser: a ":material/…:" favicon is fetched from Google's font CDN,
+# which fails in a room without internet and tells a third party of every visit
+st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide")
 language_picker()
 projector_switch()
 frame_css()

@@ -9,6 +9,11 @@ here takes a wait or some script off the way to that chart; none of them saves b
   element had mounted: 0.2–0.3 s of script on the way to the first chart.
 - The charts' own script (ui/plot.py publishes it as a static file) is fetched from the
   head, so the first chart does not wait for it once Streamlit has drawn the chart's element.
+- The phone keyboard of a number field (ui/numbers.py: a text box the app reads, so that
+  the browser's language never parses it): ``inputmode="decimal"`` on the boxes of its
+  ``st-key-num_…`` containers, which shows digits, the decimal separator and, on Android,
+  a minus. iOS's decimal pad has no minus, so there a field that takes negative values
+  (``num_any_``) keeps the full keyboard.
 - Streamlit's front end is told where its server is (``window.__streamlit``). Without it, on
   a page such as ``/kinetostatics`` the front end first asks
   ``/kinetostatics/_stcore/health``, gets a 404, and only then tries the root. That is a
@@ -23,6 +28,14 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 # read once: every page's HTML carries it
 LOADER = (ROOT / "ui" / "plotly_loader.js").read_text(encoding="utf-8")
+KEYBOARD = """new MutationObserver(() => {
+  const ios = /iPhone|iPad|iPod/.test(navigator.userAgent);
+  for (const box of document.querySelectorAll(
+      "[class*='st-key-num_'] input:not([inputmode])")) {
+    const signed = box.closest("[class*='st-key-num_any_']");
+    box.setAttribute("inputmode", signed && ios ? "text" : "decimal");
+  }
+}).observe(document.documentElement, {childList: true, subtree: true});"""
 
 
 def basic_bundle(static: Path = ROOT / "static") -> Path | None:
@@ -44,7 +57,7 @@ def head(base_path: str, static: Path = ROOT / "static") -> str:
     """The tags for a page's head; ``base_path`` is Streamlit's ``server.baseUrlPath``."""
     base = json.dumps(base_url(base_path))
     server = (f"window.__streamlit = {{...window.__streamlit, "
-              f"BACKEND_BASE_URL: new URL({base}, location.href).href}};")
+              f"BACKEND_BASE_URL: new URL({base}, location.href).href}};\n{KEYBOARD}")
     script = chart_script(static)
     fetched = ("" if script is None
                else f'<link rel="modulepreload" href="app/static/{script.name}">')

@@ -6,9 +6,11 @@ variant code out of range), shows no English sentence and no number with a decim
 What is read: every text element (markdown, captions, LaTeX, headers, metrics, messages),
 every label (widgets, tabs, expanders, buttons), the tables as shown (a Serbian table's
 display values) and the charts' own texts (titles, legends, labels). A chart's ticks and
-hover numbers are the browser's (Plotly's ``separators``: tests/test_phone.py reads them).
-Widgets' own numbers (a slider's value, a number box) are the browser's too: Streamlit
-writes them with a point, in every language (docs/i18n.md).
+hover numbers are the browser's (Plotly's ``separators``: tests/test_phone.py reads them);
+its toolbar's tooltips are Plotly's, in the locale the chart names (read here: the page's
+language, whose words are checked). The number boxes' texts (ui/numbers.py) are read too.
+A slider's own number is Streamlit's, with a point in every language (docs/i18n.md). The
+practice CSV's header and diagnosis words are read as well.
 """
 
 from __future__ import annotations
@@ -79,10 +81,12 @@ def _table(element) -> list[str]:
     return list(names.values()) + [str(v) for v in cells if isinstance(v, str)]
 
 
-def _chart(element) -> list[str]:
-    """What a chart writes: titles, legend names, texts beside points, annotations."""
-    spec = json.loads(element.proto.bytes).get("figure", {})
-    out = []
+def _chart(element, language: str) -> list[str]:
+    """What a chart writes: titles, legend names, texts beside points, annotations; and
+    whether its toolbar speaks ``language``."""
+    whole = json.loads(element.proto.bytes)
+    spec = whole.get("figure", {})
+    out = [] if whole.get("locale") == language else [f"the toolbar in {whole.get('locale')}"]
 
     def title(node) -> None:
         if isinstance(node, dict):
@@ -118,13 +122,15 @@ def shown(at: AppTest) -> list[str]:
         if kind == "dataframe":
             out += _table(node)
         elif kind == "bidi_component" and proto is not None and proto.component_name == "mehanizmi_plot":
-            out += _chart(node)
+            out += _chart(node, at.session_state["lang"])
         for attribute in ("value", "label", "body", "help", "placeholder"):
             value = getattr(proto, attribute, None) if proto is not None else None
             if isinstance(value, str) and value:
                 out.append(value)
         if kind in ("metric",):
             out += [proto.body, proto.delta]
+        if kind == "text_input":  # a number box as typed (ui/numbers.py)
+            out.append(node.value or "")
         if kind == "radio" or kind == "selectbox":
             out += list(getattr(node, "options", []))
     return out
@@ -275,3 +281,27 @@ def test_the_reader_finds_english_words_and_decimal_points():
     assert problems(["група не може да се затвори: veza je oštećena"], "sr-cyrl")
     assert not problems(["Задатак 2.1: ⟨v_B⟩ = 7,84 m/s (задаци 1.1–1.3, zbirka-2.3, "
                          "points.M.x, docs/sr/willis.md)", "F_23^t \\frac{1}{2}"], "sr-cyrl")
+
+
+@pytest.mark.parametrize("language", ["sr", "sr-cyrl"])
+def test_the_toolbar_and_the_practice_csv_speak_serbian(language, monkeypatch):
+    from cli.practice import steps_for
+    from mechanisms import load_preset
+    from methods.practice import Progress
+    from ui import i18n
+    from ui.plot import plotly_locales
+    from ui.practice import answers_table
+
+    words = plotly_locales()[language]["dictionary"]
+    assert words["Reset axes"] != "Reset axes" and not problems(list(words.values()), language)
+    monkeypatch.setattr(i18n._RUN, "language", language, raising=False)
+    steps = steps_for(load_preset("zbirka-3.1"), "plans")
+    progress = Progress.start()
+    progress.give(steps[0], -steps[0].expected)  # a reversed arrow, then right
+    progress.give(steps[0], steps[0].expected)
+    table = answers_table(steps, progress)
+    said = [*table.columns, *table.iloc[:, 6], *table.iloc[:, 7]]
+    assert not problems([str(w) for w in said], language), problems(said, language)
+    assert table.iloc[0, 6] == " | ".join(t(f"practice.word_{d}", language)
+                                          for d in ("sense", "ok"))
+    assert "." in table.iloc[0, 3] or "e" in table.iloc[0, 3]  # numbers keep a decimal point

@@ -46,7 +46,7 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
                       unreachable=t(crank.unreachable))
     return plot(fig, key, filename, labels, editable, crank,
                 None if crank is None else _turned(crank.key),
-                separators=",." if current().startswith("sr") else None)
+                separators=",." if current().startswith("sr") else None, locale=current())
 
 
 def _turned(key: str) -> Callable[[float | None, bool | str], None]:

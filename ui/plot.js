@@ -30,6 +30,20 @@ function button(name, title, icon, click) {
   return BUTTONS.get(key);
 }
 
+// The page's language for the toolbar's tooltips: its locale (LOCALES, written before this
+// script by ui/plot.py) registered once with each bundle that draws a chart.
+const REGISTERED = new WeakMap();  // Plotly → the locales it has
+
+function locale(Plotly, name) {
+  if (!LOCALES[name]) return "en";
+  if (!REGISTERED.has(Plotly)) REGISTERED.set(Plotly, new Set());
+  if (!REGISTERED.get(Plotly).has(name)) {
+    Plotly.register(LOCALES[name]);
+    REGISTERED.get(Plotly).add(name);
+  }
+  return name;
+}
+
 function toolbar(Plotly, labels) {
   return [button("save-svg", labels.svg, Plotly.Icons.pencil, save("svg")),
           button("save-png", labels.png, Plotly.Icons.camera, save("png")),
@@ -400,6 +414,7 @@ export default function (component) {
     const config = { responsive: true, displaylogo: false, showSendToCloud: false,
                      modeBarButtonsToRemove: ["toImage"],
                      modeBarButtonsToAdd: toolbar(Plotly, spec.labels),
+                     locale: locale(Plotly, spec.locale),
                      ...(spec.editable ? EDITABLE : {}) };
     gd.__config = config;  // the frames of φ₂ are drawn with the same config (see BUTTONS)
     // the page's decimal mark on ticks and hover labels (Serbian: 0,25), frames included

@@ -32,6 +32,7 @@ import streamlit as st
 from figures.raw import RawFigure
 from ui.crank import Crank
 from ui.firstpaint import chart_sent, painted
+from ui.i18n import LANGUAGES, t
 
 ROOT = Path(__file__).resolve().parents[1]
 STATIC = ROOT / "static"
@@ -81,12 +82,32 @@ def publish_plotly_js(static: Path = STATIC) -> list[tuple[set[str] | None, str]
                                       static))]
 
 
+# the toolbar's and the chart's own English words, which Plotly translates through a locale
+# (its own Serbian locales have none: they only name days and months)
+PLOTLY_WORDS = ("plotly.zoom", "plotly.pan", "plotly.box_select", "plotly.lasso_select",
+                "plotly.zoom_in", "plotly.zoom_out", "plotly.autoscale", "plotly.reset_axes",
+                "plotly.spikes", "plotly.closest", "plotly.compare", "plotly.toggle_closest",
+                "plotly.orbital", "plotly.turntable", "plotly.camera_default",
+                "plotly.camera_saved", "plotly.reset_view", "plotly.reset_views", "plotly.reset",
+                "plotly.zoom_back", "plotly.legend_isolate")
+
+
+def plotly_locales() -> dict[str, dict]:
+    """Plotly locales of the app's languages but English, named as the languages are
+    (``config.locale``): the toolbar's tooltips in the page's words."""
+    return {language: {"moduleType": "locale", "name": language,
+                       "dictionary": {t(k, "en"): t(k, language) for k in PLOTLY_WORDS}}
+            for language in LANGUAGES if language != "en"}
+
+
 def publish_chart_js(static: Path = STATIC) -> str:
-    """The charts' script (the bundles' loader, then ui/plot.js) put where Streamlit serves
-    static files, named by its content (``plot-<hash>.js``: a browser may keep it a year,
-    scripts/serve.py); an older version is removed, so that scripts/page_head.py finds this
-    one. Its URL relative to a page."""
-    text = (LOADER + Path(__file__).with_suffix(".js").read_text(encoding="utf-8")).encode()
+    """The charts' script (the bundles' loader, the Plotly locales, then ui/plot.js) put
+    where Streamlit serves static files, named by its content (``plot-<hash>.js``: a
+    browser may keep it a year, scripts/serve.py); an older version is removed, so that
+    scripts/page_head.py finds this one. Its URL relative to a page."""
+    locales = json.dumps(plotly_locales(), ensure_ascii=False, sort_keys=True)
+    text = (LOADER + f"const LOCALES = {locales};\n"
+            + Path(__file__).with_suffix(".js").read_text(encoding="utf-8")).encode()
     name = f"plot-{hashlib.sha256(text).hexdigest()[:12]}.js"
     for old in static.glob("plot-*.js"):
         if old.name != name:
@@ -110,7 +131,7 @@ def bundle_url(fig: RawFigure) -> str:
 def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
          editable: bool = False, crank: Crank | None = None,
          on_crank: Callable[[float | None, bool | str], None] | None = None,
-         separators: str | None = None):
+         separators: str | None = None, locale: str = "en"):
     """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns. Its
     toolbar saves it as ``filename``.svg or .png; ``labels`` name the buttons ("svg", "png",
     "fullscreen").
@@ -127,7 +148,8 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
 
     ``separators``: Plotly's decimal and thousands marks for the page's language (",." on
     a Serbian page), put into the figure's layout in the browser so that a cached figure
-    serves every language.
+    serves every language. ``locale``: the page's language, whose words the toolbar's
+    tooltips take (``plotly_locales``).
 
     In a page's first run in a session the chart reports its first paint (trigger
     "painted"), and the rerun that follows sends what the page left out until then
@@ -138,6 +160,7 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
             f'"first": {json.dumps(first)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
             f'"crank": {control}, "separators": {json.dumps(separators)}, '
+            f'"locale": {json.dumps(locale)}, '
             f'"figure": {fig.json()}}}')
     events = ({"on_drag_change": _ignore, "on_click_change": _ignore, "on_joint_change": _ignore}
               if editable else {})

@@ -172,8 +172,20 @@ def score(steps: list[Step], progress: Progress, key: str) -> None:
         key=f"{key}_csv", on_click="ignore", icon=":material/download:")
 
 
+CSV_COLUMNS = {"step": "practice.col_step", "symbol": "practice.col_symbol",
+               "unit": "practice.col_unit", "exact": "practice.col_exact",
+               "tolerance": "practice.col_tolerance", "answers": "practice.col_answers",
+               "diagnoses": "practice.col_diagnoses", "outcome": "practice.col_outcome"}
+DIAGNOSES = {"ok": "practice.word_ok", "sense": "practice.word_sense",
+             "direction": "practice.word_direction", "length": "practice.word_length",
+             "scale": "practice.word_scale", "missing-term": "practice.word_missing_term",
+             "wrong": "practice.word_wrong", "none": "practice.word_none"}
+
+
 def answers_table(steps: list[Step], progress: Progress) -> pd.DataFrame:
-    """One row per step: what was asked, the exact value, each answer and its diagnosis."""
+    """One row per step: what was asked, the exact value, each answer and its diagnosis, in
+    the page's words; the numbers keep a decimal point (for spreadsheets, as the button
+    says)."""
     def value(v) -> str:
         if v is None:
             return ""
@@ -181,9 +193,10 @@ def answers_table(steps: list[Step], progress: Progress) -> pd.DataFrame:
             return f"{v.real:.6g}; {v.imag:.6g}"
         return f"{float(v):.6g}"
 
-    return pd.DataFrame([{
+    rows = [{
         "step": s.id, "symbol": plain(s.symbol), "unit": s.unit, "exact": value(s.expected),
         "tolerance": f"{s.tolerance:.3g}",
         "answers": " | ".join(value(a) for a in progress.answers.get(s.id, [])),
-        "diagnoses": " | ".join(v.diagnosis for v in progress.verdicts.get(s.id, [])),
-        "outcome": progress.outcome(s)} for s in steps])
+        "diagnoses": " | ".join(t(DIAGNOSES[v.diagnosis]) for v in progress.verdicts.get(s.id, [])),
+        "outcome": t(OUTCOMES[progress.outcome(s)])} for s in steps]
+    return pd.DataFrame(rows).rename(columns={k: t(v) for k, v in CSV_COLUMNS.items()})
