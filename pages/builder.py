@@ -68,6 +68,7 @@ UNITS = {"x": "m", "y": "m", "length": "m", "mass": "kg", "centre_along": "m",
          "d1": "m", "d2": "m", "r": "m", "theta": "°",
          "slider_angle": "°", "magnitude": "N", "value": "N·m"}
 MARK = "⚠"  # the column that names a row's refused cells
+REFUSED_CELL = "background-color: #fde8e8; color: #a4000f; font-weight: 600"
 
 
 def column_label(name: str) -> str:
@@ -118,11 +119,13 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
             frame, config = frame_of(name, rows[name], language), {c: column(c) for c in COLUMNS[name]}
             for said in refusals(name, rows[name]):
                 st.error(said, icon=":material/error:")
+            data = frame
             if any(mark := marks(rows[name], language, {c: column_label(c) for c in COLUMNS[name]})):
                 frame.insert(0, MARK, mark)
                 config[MARK] = st.column_config.TextColumn("⚠", disabled=True)
+                data = frame.style.map(lambda v: REFUSED_CELL if v else "", subset=[MARK])
             edited = st.data_editor(
-                frame, key=f"build_{builder.version()}_{name}", num_rows="dynamic",
+                data, key=f"build_{builder.version()}_{name}", num_rows="dynamic",
                 hide_index=True, placeholder="—", column_config=config)
             out[name] = rows_of(edited.drop(columns=MARK, errors="ignore"), language)
     return out
