@@ -171,3 +171,10 @@ def test_a_serbian_note_must_translate_an_english_one():
         parse_document(bad, source="6.2.toml")
     assert "book_notes_sr.members.9.omega" in str(caught.value)
     assert "nema englesku napomenu" in message(caught.value, "sr")
+
+
+def test_file_formats_and_keys_stay_latin_in_cyrillic():
+    """SVG, PNG, CSV, Esc … are names a reader finds on a key or a file, not Serbian words."""
+    for key, text in table("sr-cyrl").items():
+        for transliterated in ("СВГ", "ПНГ", "Есц", "ЦСВ", "ЈСОН", "ХТМЛ", "ТОМЛ", "ПДФ"):
+            assert transliterated not in text, (key, text)
