@@ -26,7 +26,7 @@ from .schema import DRIVER, FRAME, Driver, Fit, Force, Member, Moment, Pair, Sce
 PRESETS = Path(__file__).parent / "presets"
 MAX_BYTES = 100_000  # the largest preset is 4 kB; refused before parsing (800 kB took 0.25 s)
 
-TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "pairs", "frame",
+TOP_KEYS = {"id", "kind", "title", "title_sr", "source", "note", "note_sr", "source_sr", "gravity", "inertia", "pairs", "frame",
             "driver", "members", "assembly", "forces", "moments", "book", "travel", "book_notes", "book_notes_sr",
             "scales", "guess", "special", "layout_assumed", "fit", "book_slips"}
 FIT_KEYS = {"unknowns", "start", "used", "residual", "chose"}
@@ -194,6 +194,7 @@ def _build(raw: dict, r: Reader, default_id: str) -> Scene:
         forces=_forces(raw, r, members, frame),
         moments=_moments(raw, r, members),
         gravity=r.number(raw, "gravity", "", default=0.0, non_negative=True),
+        inertia=_flag(raw, r, "inertia", default=True),
         scales=_scales(raw, r),
         guess=_guess(raw, r),
         special=_special(raw, r, members),
@@ -436,8 +437,8 @@ def _tables(raw: dict, r: Reader, name: str, allowed: set[str]):
         yield where, r.check_keys(spec, allowed, where)
 
 
-def _flag(table: dict, r: Reader, name: str, where: str = "") -> bool:
-    value = table.get(name, False)
+def _flag(table: dict, r: Reader, name: str, where: str = "", default: bool = False) -> bool:
+    value = table.get(name, default)
     if not isinstance(value, bool):
         raise r.fail(f"{where}.{name}" if where else name, "not_flag", value=given(value))
     return value

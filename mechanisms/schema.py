@@ -177,6 +177,9 @@ class Scene:
     forces: tuple[Force, ...] = ()
     moments: tuple[Moment, ...] = ()
     gravity: float = 0.0  # m/s², acting along −y when > 0
+    # whether the task counts inertia loads (tasks 5.1, 5.2 and the lecture leave them out): the
+    # kinetostatics page opens with its switch so, and the book's values are computed so
+    inertia: bool = True
     book: dict[str, float] = field(default_factory=dict)  # the book's printed values
     travel: Travel | None = None
     book_notes: dict[str, str] = field(default_factory=dict)  # why a printed value is off
@@ -203,10 +206,11 @@ class Scene:
     def with_loads(self, *, masses: dict[int, float] | None = None,
                    gyrations: dict[int, float] | None = None,
                    forces: list[float] | None = None, angles: list[float] | None = None,
-                   moments: list[float] | None = None, gravity: float | None = None) -> Scene:
+                   moments: list[float] | None = None, gravity: float | None = None,
+                   inertia: bool | None = None) -> Scene:
         """A copy with new masses (kg) and radii of gyration (m) per member, new magnitudes (N)
         and directions (rad) of the external forces and values of the moments (N·m), in the
-        file's order, and g."""
+        file's order, g, and whether inertia loads count."""
         members = dict(self.members)
         for number, mass in (masses or {}).items():
             members[number] = dataclasses.replace(members[number], mass=mass)
@@ -219,7 +223,8 @@ class Scene:
         new_moments = self.moments if moments is None else tuple(
             dataclasses.replace(m, value=v) for m, v in zip(self.moments, moments))
         return dataclasses.replace(self, members=members, forces=new_forces, moments=new_moments,
-                                   gravity=self.gravity if gravity is None else gravity)
+                                   gravity=self.gravity if gravity is None else gravity,
+                                   inertia=self.inertia if inertia is None else inertia)
 
     def pair(self, name: str) -> Pair:
         for p in self.pairs:

@@ -62,6 +62,8 @@ def to_toml(scene: Scene) -> str:
         out.append("layout_assumed = true")
     if scene.gravity:
         out.append(f"gravity = {_n(scene.gravity)}")
+    if not scene.inertia:
+        out.append("inertia = false")
     out.append("\npairs = [")
     for p in scene.pairs:
         if p.on_slot:

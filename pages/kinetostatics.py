@@ -61,7 +61,7 @@ def at_instant(scene: Scene, inertia: bool) -> Kinetostatics:
 def defaults(base: Scene) -> dict[str, object]:
     values: dict[str, object] = {
         "at": driver_start(base),
-        "omega": float(base.driver.speed), "inertia": True, "gravity": base.gravity > 0,
+        "omega": float(base.driver.speed), "inertia": base.inertia, "gravity": base.gravity > 0,
         "steps": 360, "UF": base.scales.get("F", 0.0), "fstep": 1}
     for n, m in base.members.items():
         values[f"m{n}"], values[f"rho{n}"] = float(m.mass), float(m.gyration)
@@ -72,9 +72,15 @@ def defaults(base: Scene) -> dict[str, object]:
     return values
 
 
+def task_values(base: Scene) -> dict[str, object]:
+    """The widgets' values that pose the book's task: position, speed, switches and loads
+    (not the scales, the resolution or the step shown)."""
+    return {k: v for k, v in defaults(base).items() if k not in ("steps", "UF", "fstep")}
+
+
 def load_inputs(base: Scene, scene: Scene) -> Scene:
     """Masses, radii of gyration, forces and moments (all kept in the URL)."""
-    st.toggle(t("forces.inertia"), key="inertia", bind="query-params")
+    inertia = st.toggle(t("forces.inertia"), key="inertia", bind="query-params")
     gravity = st.toggle(t("forces.gravity"), key="gravity", bind="query-params")
     with st.expander(t("forces.loads"), expanded=False):
         forces, angles = [], []
@@ -82,9 +88,10 @@ def load_inputs(base: Scene, scene: Scene) -> Scene:
             left, right = st.columns([3, 2])
             forces.append(number_field(t("forces.force_input", name=f.label or f"F_{f.member}",
                                          point=f.point), f"F{i}", url=True, where=left))
-            angles.append(math.radians(number_field(
+            degrees = number_field(
                 t("forces.force_angle_follows" if f.follows_member else "forces.force_angle"),
-                f"Fa{i}", url=True, where=right)))
+                f"Fa{i}", url=True, where=right)  # the file's angle exactly, unless changed
+            angles.append(f.angle if degrees == math.degrees(f.angle) else math.radians(degrees))
         moments = [number_field(t("forces.moment_input", member=mo.member), f"M{i}", url=True)
                    for i, mo in enumerate(base.moments)]
         masses, rhos = {}, {}
@@ -95,7 +102,7 @@ def load_inputs(base: Scene, scene: Scene) -> Scene:
             rhos[n] = number_field(t("forces.rho", member=n), f"rho{n}", minimum=0.0, url=True,
                                    where=right)
     return scene.with_loads(masses=masses, gyrations=rhos, forces=forces, angles=angles,
-                            moments=moments,
+                            moments=moments, inertia=inertia,
                             gravity=(base.gravity or 9.81) if gravity else 0.0)
 
 
@@ -427,7 +434,7 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
     if not waiting():
         if scene.book:
             with main:
-                book_section(scene, base)
+                book_section(scene, base, task_values(base))
         with answer_slot.container():
             unit = "N·m" if rotating else "N"
             quantities = [Quantity(f"{'M_p' if rotating else 'F_p'} [{unit}]", float(k.driving[now]), unit),

@@ -212,7 +212,7 @@ def accuracy_tab(scene: Scene, base: Scene, values: list, precision_cm: float) -
               if r.exact else "—"} for r in values]
     show_table(table, f"{scene.id}-readings.csv", "csv_readings")
     if scene.book:
-        book_section(scene, base)
+        book_section(scene, base, {k: v for k, v in defaults(base).items() if k in ("at", "omega")})
 
 
 controls, main = page_columns()

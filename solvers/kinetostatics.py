@@ -194,15 +194,16 @@ class Kinetostatics:
         return [r for (p, q), r in self.reactions.items() if q == member]
 
 
-def analyse(scene: Scene, at=None, *, inertia: bool = True, motion: Motion | None = None
+def analyse(scene: Scene, at=None, *, inertia: bool | None = None, motion: Motion | None = None
             ) -> Kinetostatics:
     """Reactions and driving torque at driver value(s) ``at`` (default: the scene's instant).
 
-    ``inertia=False`` leaves the inertia loads out, as the book does in tasks 5.1–5.2.
+    ``inertia=False`` leaves the inertia loads out, as the book does in tasks 5.1–5.2; by
+    default the scene says (``Scene.inertia``).
     """
     motion = motion or solve(scene, at, order=2)
     bodies = motion.bodies
-    loads, couples, inertias = _loads(scene, motion, inertia)
+    loads, couples, inertias = _loads(scene, motion, scene.inertia if inertia is None else inertia)
     known: dict[tuple[int, int], Reaction] = {}
     condition: dict[str, np.ndarray] = {}
     order = []

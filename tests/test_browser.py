@@ -271,7 +271,7 @@ def test_the_book_plans_of_task_2_1_step_by_step(app_url, browser, tmp_path):
     page.wait_for_function("() => document.querySelectorAll('.js-plotly-plot').length >= 3")
     # the scales' inputs (U_L, U_v, …) once the whole page is there (a rerun may still be
     # bringing the rest when the charts are counted)
-    page.wait_for_function("() => document.querySelectorAll(\"[data-testid='stNumberInput'] input\")[1]"
+    page.wait_for_function("() => document.querySelector(\".st-key-num_pos_Uv input\")"
                            "?.value === '0.5'", timeout=30_000)
     full_v, full_a = arrow_count(page, 0), arrow_count(page, 1)
     assert full_a > full_v > 4

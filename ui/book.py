@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import math
+from collections.abc import Mapping
+
 import pandas as pd
 import streamlit as st
 
@@ -47,14 +50,54 @@ def fit_summary(scene, rows: list[BookRow]) -> None:
         st.caption(text)
 
 
-def book_section(scene, base) -> None:
-    """Book vs exact on a chapter page: only for the scene as loaded (the printed values
-    belong to its own data), with its CSV."""
+def book_section(scene, base, restore: Mapping[str, object]) -> None:
+    """Book vs exact on a chapter page: only for the task as the book poses it (the printed
+    values belong to its own data), with its CSV. When the student has changed something,
+    what differs in words, and one button that gives the page's widgets ``restore`` (the
+    task's own values: its position, speed, loads and switches; nothing else)."""
     st.header(t("plans.book_title"))
     if scene == base:
         show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
-    else:
-        st.info(t("plans.book_changed"))
+        return
+    st.info("\n".join([t("book.changed"), *(f"- {line}" for line in changes(scene, base))]))
+    st.button(t("book.restore"), help=t("book.restore_help"), icon=":material/menu_book:",
+              on_click=lambda: st.session_state.update(restore), key="book_restore")
+
+
+def changes(scene, base) -> list[str]:
+    """What the page's scene changed of the task as loaded (``base``), each in words with
+    the two values."""
+    said = []
+    if scene.driver.at != base.driver.at:
+        if scene.driver.kind == "rotating":
+            now, book = (num(math.degrees(d.at) % 360, 5) for d in (scene.driver, base.driver))
+            said.append(t("book.diff_position", now=f"{now}°", book=f"{book}°"))
+        else:
+            said.append(t("book.diff_position_s", now=scene.driver.at, book=base.driver.at))
+    if scene.driver.speed != base.driver.speed:
+        said.append(t("book.diff_speed", now=scene.driver.speed, book=base.driver.speed))
+    if scene.inertia != base.inertia:
+        said.append(t("book.diff_inertia_on" if scene.inertia else "book.diff_inertia_off"))
+    if scene.gravity != base.gravity:
+        said.append(t("book.diff_gravity", now=scene.gravity, book=base.gravity))
+    for n, member in scene.members.items():
+        old = base.members[n]
+        for field, key in (("mass", "book.diff_mass"), ("gyration", "book.diff_gyration"),
+                           ("length", "book.diff_length")):
+            if getattr(member, field) != getattr(old, field):
+                said.append(t(key, member=n, now=getattr(member, field), book=getattr(old, field)))
+    for force, old in zip(scene.forces, base.forces):
+        name = force.label or f"F_{force.member}"
+        if force.magnitude != old.magnitude:
+            said.append(t("book.diff_force", name=name, now=force.magnitude, book=old.magnitude))
+        if force.angle != old.angle:
+            said.append(t("book.diff_force_angle", name=name, now=math.degrees(force.angle),
+                          book=math.degrees(old.angle)))
+    for moment, old in zip(scene.moments, base.moments):
+        if moment.value != old.value:
+            said.append(t("book.diff_moment", member=moment.member, now=moment.value,
+                          book=old.value))
+    return said or [t("book.diff_other")]
 
 
 def coverage_table(checks: dict[str, list[BookRow] | str]) -> pd.DataFrame:

@@ -198,6 +198,8 @@ def driver_position(base: Scene) -> Scene:
     as ``at``; the scene at that position."""
     if base.driver.kind == "rotating":
         at = st.slider(t("plans.phi"), 0.0, 360.0, step=0.5, key="at", bind="query-params")
+        if at == driver_start(base):
+            return base  # the file's φ₂ exactly: radians(degrees(φ)) may differ in the last bit
         return base.with_(at=math.radians(at))
     reach = max(abs(base.driver.at), 0.1)
     at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3),

@@ -1,0 +1,71 @@
+"""Each task opens as the book poses it: on a fresh load a chapter page's scene is the preset
+exactly, so "Book vs exact" shows its table (not the notice that something changed), and
+the kinetostatics page's switches are the task's own; after a change the notice names it
+and "As in the book" brings the table back."""
+
+from __future__ import annotations
+
+import tomllib
+
+import pytest
+
+from mechanisms import load_preset, preset_ids
+from mechanisms.loader import build_document
+from mechanisms.writer import to_toml
+from ui.i18n import t
+
+from .test_pages import page, typed
+
+LINKAGES_WITH_BOOK = [p for p in preset_ids()
+                      if load_preset(p).book and hasattr(load_preset(p), "pairs")]
+PAGES = ("pages/velocity_plans.py", "pages/kinetostatics.py")
+
+
+def notice(at, lang: str = "en") -> list[str]:
+    return [i.value for i in at.info if i.value.startswith(t("book.changed", lang))]
+
+
+def compared(at, lang: str = "en") -> bool:
+    """The book's table is there and the notice is not."""
+    return t("plans.book_title", lang) in [h.value for h in at.header] and not notice(at, lang)
+
+
+@pytest.mark.parametrize("preset", LINKAGES_WITH_BOOK)
+def test_a_fresh_load_compares_with_the_book_at_once(preset):
+    scene = load_preset(preset)
+    at = page(PAGES[0], lang="en", scene=preset, tab=t("plans.tab_accuracy", "en"))
+    assert not at.exception and compared(at), notice(at)
+    at = page(PAGES[1], lang="en", scene=preset)
+    assert not at.exception and compared(at), notice(at)
+    assert at.toggle(key="inertia").value == scene.inertia
+    assert at.toggle(key="gravity").value == (scene.gravity > 0)
+
+
+def test_the_kinetostatics_tasks_state_whether_inertia_counts():
+    """5.1, 5.2 and the lecture leave inertia out; 5.3 and 5.4 count it."""
+    said = {p: load_preset(p).inertia for p in
+            ("zbirka-5.1", "zbirka-5.2", "predavanja-kinetostatika", "zbirka-5.3", "zbirka-5.4")}
+    assert said == {"zbirka-5.1": False, "zbirka-5.2": False, "predavanja-kinetostatika": False,
+                    "zbirka-5.3": True, "zbirka-5.4": True}
+    text = to_toml(load_preset("zbirka-5.1"))
+    assert "inertia = false" in text  # and it survives a download and upload
+    assert build_document(tomllib.loads(text), source="x").inertia is False
+
+
+@pytest.mark.parametrize("lang", ["en", "sr"])
+def test_a_change_is_named_and_one_click_brings_the_book_back(lang):
+    at = page(PAGES[1], lang=lang, scene="zbirka-5.1")
+    assert compared(at, lang)
+    at.slider(key="at").set_value(100.0).run()
+    said = [i.value for i in at.info if i.value.startswith(t("book.changed", lang))]
+    assert said and "φ₂ = 100°" in said[0] and ("50,286°" if lang == "sr" else "50.286°") in said[0]
+    at.toggle(key="inertia").set_value(True).run()
+    typed(at, "F0", 80.0, lang).run()
+    said = [i.value for i in at.info if i.value.startswith(t("book.changed", lang))][0]
+    assert t("book.diff_inertia_on", lang) in said and "80 N" in said
+    at.select_slider(key="steps").set_value(72).run()  # not the task's: it stays
+    next(b for b in at.button if b.key == "book_restore").click().run()
+    assert not at.exception and not [i for i in at.info if i.value.startswith(
+        t("book.changed", lang))]
+    assert at.toggle(key="inertia").value is False and at.select_slider(key="steps").value == 72
+    assert at.header and t("plans.book_title", lang) in [h.value for h in at.header]
