@@ -16,11 +16,13 @@ from pathlib import Path
 
 from exams import variants
 from exams.codes import DEFAULT_SPREAD, Settings
+from exams.moodle import moodle_xml
 from exams.sheets import sheets_html
 from exams.variants import MAX_COUNT
 from mechanisms import Scene, SceneError, load_any, load_preset, preset_ids
 from mechanisms.gears import GearTrain
 from mechanisms.link import PARAMETER, decode, encode
+from mechanisms.messages import strings
 from mechanisms.rotor import Rotor
 from methods.plans import build
 from reports.values import forces_json, gears_json, motion_json, plan_json, rotor_json
@@ -102,7 +104,10 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print JSON (the same bytes for the same arguments)")
     p.add_argument("--sheets", metavar="FILE.html", help="write the students' sheets and the key (A4)")
     p.add_argument("--key", metavar="FILE.csv", help="write the answer key as CSV")
-    p.add_argument("--language", choices=("sr", "en"), default="sr", help="of the sheets")
+    p.add_argument("--moodle", metavar="FILE.xml",
+                   help="write the set as a Moodle question bank (one cloze question a variant)")
+    p.add_argument("--language", choices=("sr", "en"), default="sr",
+                   help="of the sheets and the Moodle questions")
     p.set_defaults(run=_variants)
     p = sub.add_parser("bench", help="time the solver against a closed-form numpy baseline")
     p.add_argument("scene")
@@ -121,10 +126,14 @@ def _variants(args) -> int:
         return 2
     if found.shortfall:
         print(f"note: {found.shortfall}", file=sys.stderr)
+    task = load_preset(args.scene)
+    title = task.title_sr if args.language == "sr" and task.title_sr else task.title
     if args.sheets:
-        task = load_preset(args.scene)
-        title = (task.title_sr if args.language == "sr" and task.title_sr else task.title)
         Path(args.sheets).write_text(sheets_html(found, title, args.language), encoding="utf-8")
+    if args.moodle:
+        Path(args.moodle).write_text(moodle_xml(found, title, args.language,
+                                                strings(args.language).__getitem__),
+                                     encoding="utf-8")
     if args.key:
         with open(args.key, "w", newline="", encoding="utf-8") as f:
             writer = csv.DictWriter(f, ["code", "quantity", "value", "unit", "tolerance", "asked"])

@@ -90,14 +90,16 @@ def decimal(value: float, comma: bool, digits: int = 6) -> str:
 
 
 @cache
-def _english() -> dict[str, str]:
-    with open(LOCALES / "en.toml", "rb") as f:
+def strings(language: str = "en") -> dict[str, str]:
+    """The strings table of ``language`` ("en" or "sr", Latin) as written, notation marks
+    included: for what below the pages writes in a chosen language (the Moodle export)."""
+    with open(LOCALES / f"{language}.toml", "rb") as f:
         return tomllib.load(f)
 
 
 def english(key: str) -> str:
     """The English sentence of ``key`` (notation marks dropped): the command line's language."""
-    return KEEP.sub(r"\1", _english()[key])
+    return KEEP.sub(r"\1", strings("en")[key])
 
 
 def text_of(error: BaseException) -> Text | str:

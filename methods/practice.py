@@ -31,6 +31,8 @@ HINTS = {"ok": "practice.hint_ok", "sense": "practice.hint_sense",
          "direction": "practice.hint_direction", "length": "practice.hint_length",
          "scale": "practice.hint_scale", "missing-term": "practice.hint_missing_term",
          "wrong": "practice.hint_wrong", "none": "practice.hint_none"}
+VALUE_HINTS = {**HINTS, "sense": "practice.value_sense", "length": "practice.value_length",
+               "scale": "practice.value_scale", "wrong": "practice.value_wrong"}
 RULES = {"relative": "practice.rule_relative", "normal": "practice.rule_normal",
          "tangential": "practice.rule_tangential", "coriolis": "practice.rule_coriolis",
          "sliding": "practice.rule_sliding", "absolute": "practice.rule_absolute",
@@ -189,26 +191,51 @@ def _slipped(step: Step, answer: complex, exact: complex) -> Verdict | None:
     return None
 
 
+@dataclass(frozen=True)
+class Mistake:
+    """A wrong answer the grader names for a scalar step: any answer within ``width`` of
+    ``value`` gets ``diagnosis`` (with ``ratio`` or ``term`` for its hint), unless an
+    earlier one in ``scalar_mistakes``' order took it."""
+
+    diagnosis: str
+    value: float
+    width: float
+    ratio: float | None = None
+    term: str = ""
+
+
+def scalar_mistakes(step: Step) -> list[Mistake]:
+    """The usual mistakes of a scalar step, in the order the grader tries them after the
+    right answer: a term left out, the sign reversed, a unit or scale slip (a power of
+    ten). Practice grades by them, and the Moodle export (exams/moodle.py) lists them as
+    its answers with the same feedback."""
+    exact, tol = _real(step.expected), step.tolerance
+    out = [Mistake("missing-term", _real(term.value), tol, term=term.name) for term in step.missing]
+    if abs(exact) > tol:
+        out.append(Mistake("sense", -exact, tol))
+        out += [Mistake("scale", exact * f, max(tol * f, SLIP * abs(exact * f)), ratio=f)
+                for f in _slips(step)]
+    return out
+
+
 def _scalar(step: Step, answer: float) -> Verdict:
     exact, tol = _real(step.expected), step.tolerance
     if abs(answer - exact) <= tol:
         return Verdict("ok")
-    for term in step.missing:
-        if abs(answer - _real(term.value)) <= tol:
-            return Verdict("missing-term", term=term.name)
-    if abs(exact) > tol and abs(answer + exact) <= tol:
-        return Verdict("sense")
+    for m in scalar_mistakes(step):
+        if abs(answer - m.value) <= m.width:
+            return Verdict(m.diagnosis, ratio=m.ratio, term=m.term)
     if abs(exact) > tol and answer != 0 and math.copysign(1, answer) == math.copysign(1, exact):
-        slipped = _slipped(step, complex(answer), complex(exact))
-        return slipped or Verdict("length", ratio=answer / exact)
+        return Verdict("length", ratio=answer / exact)
     return Verdict("wrong")
 
 
 def hint_keys(step: Step, verdict: Verdict) -> list[str]:
-    """The strings that say a verdict: its diagnosis, and for a step drawn the wrong way or
-    not at all the book's rule for that kind of step (without the answer)."""
-    keys = [HINTS[verdict.diagnosis]]
-    if verdict.diagnosis in ("sense", "direction", "length", "wrong"):
+    """The strings that say a verdict: its diagnosis — of a value and its sign for a scalar
+    step, of an arrow otherwise — and for a step drawn the wrong way or not at all the
+    book's rule for that kind of step (without the answer; none for a step with no rule)."""
+    keys = [(VALUE_HINTS if step.kind == "scalar" else HINTS)[verdict.diagnosis]]
+    if verdict.diagnosis in ("sense", "direction", "length", "wrong") and step.rule:
         keys.append(RULES[step.rule])
     return keys
 

@@ -9,6 +9,7 @@ import pandas as pd
 import streamlit as st
 
 from exams.codes import DEFAULT_SPREAD, MAX_SEED, Settings
+from exams.moodle import moodle_xml
 from exams.sheets import sheets_html
 from exams.variants import (
     MAX_COUNT,
@@ -22,6 +23,7 @@ from exams.variants import (
     task,
 )
 from mechanisms import load_preset, preset_ids
+from mechanisms.messages import strings
 from ui.cache import page_cache
 from ui.chapters import VARIANTS, page_for
 from ui.export import dataframe
@@ -92,7 +94,7 @@ if result is not None and result[:2] == (settings, int(count)):
         with box:
             dataframe(key.assign(quantity=key["quantity"].map(symbol)), hide_index=True)
     stem = f"{choice}-S{settings.seed}"
-    d1, d2, d3 = st.columns(3)
+    d1, d2, d3, d4 = st.columns(4)
     d1.download_button(t("var.sheets"), lambda: sheets_html(found, title, language).encode("utf-8"),
                        f"{stem}-sheets.html", mime="text/html", on_click="ignore",
                        icon=":material/print:")
@@ -102,4 +104,8 @@ if result is not None and result[:2] == (settings, int(count)):
     d3.download_button("JSON", lambda: json.dumps(as_json(found), indent=1, ensure_ascii=False).encode("utf-8"),
                        f"{stem}.json", mime="application/json", on_click="ignore",
                        icon=":material/data_object:")
+    d4.download_button(t("var.moodle"), lambda: moodle_xml(
+        found, title, language, strings(language).__getitem__).encode("utf-8"),
+        f"{stem}-moodle.xml", mime="application/xml", on_click="ignore",
+        icon=":material/school:", help=t("var.moodle_help"))
     st.caption(t("var.students"))

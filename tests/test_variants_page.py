@@ -41,6 +41,7 @@ def test_a_lecturer_makes_variants_with_sheets_and_key_in_every_language(languag
     assert table[t("var.col_link", language=language)][0] == f"/velocity_plans?v={expected[0]}"
     labels = [b.label for b in at.get("download_button")]
     assert t("var.sheets", language=language) in labels and t("var.key_csv", language=language) in labels
+    assert t("var.moodle", language=language) in labels
 
 
 def test_holding_every_value_says_why_there_are_fewer_variants():

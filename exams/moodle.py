@@ -1,0 +1,221 @@
+"""A set of variants as a Moodle question bank (Moodle XML), each wrong answer a student
+usually gives answered with the app's own diagnosis.
+
+One *cloze* (embedded answers) question per variant, not one numerical question per asked
+value: a variant is one exercise — its given numbers, its drawing, several asked values that
+build on one another — and Moodle's quiz draws one question at random from a category, so
+"a random question from this category" hands each student one whole variant. A numerical
+question holds one number; a variant split into several would be drawn apart.
+
+Each asked value is a NUMERICAL part whose answers come, in order, from the practice grader
+(``methods.practice``): the key (100 %, the key's tolerance as Moodle's absolute
+tolerance), then the usual mistakes in the order the grader tries them — a term left out,
+the sign reversed, a power of ten — each 0 % with the hint practice gives for it, then the
+right sign but another size, and last a catch-all. Moodle takes the first answer whose
+[value − tolerance, value + tolerance] holds the response, as the grader takes the first
+diagnosis that fits, so the same response gets the same words in both.
+
+Numbers in the XML keep a decimal point (Moodle's format); the words follow the language.
+Written against what Moodle's importer reads, in moodle/moodle at commit 00055ef6abc8:
+``question/format/xml/format.php`` (``import_multianswer``: ``name/text``, ``questiontext``
+with its ``file name path encoding="base64"`` elements, ``generalfeedback``, ``penalty``;
+the category question's ``category/text``) and the cloze syntax of
+``question/type/multianswer/questiontype.php`` (``NUMBER_REGEX``: a point or comma, an
+optional exponent; a part's feedback after ``#``, with ``}``, ``~``, ``#``, ``/``, ``"`` and the
+backslash itself escaped by a backslash).
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from xml.sax.saxutils import escape
+
+from exams.sheets import drawing_svg, length_scale
+from exams.variants import Answer, Variant, VariantSet, symbol
+from figures.plans import plain
+from mechanisms.messages import Text
+from mechanisms.schema import Scene
+from methods import practice_steps
+from methods.plans import build
+from methods.practice import Step, Term, Verdict, hint_keys, scalar_mistakes
+from methods.scales import plan_scales
+from solvers.diagnostics import Unsolvable, solve_instant
+from solvers.structure import StructureError
+
+KEY_RELATIVE = 0.005  # a key computed only (no drawing): right within 0.5 %, as the self-check
+WIDE = 1e6  # "the right sign, another size": an interval this many times the key, from 0
+WORDS = {
+    "en": {"category": "Variants of {task} (seed {seed}, ± {spread} %)", "variant": "Variant",
+           "given": "Given", "find": "Find", "code": "Code",
+           "drawing": "The mechanism at the asked instant, drawn at U_L = {u} m/cm"},
+    "sr": {"category": "Varijante zadatka {task} (seme {seed}, ± {spread} %)",
+           "variant": "Varijanta", "given": "Dato", "find": "Odrediti", "code": "Kod",
+           "drawing": "Mehanizam u traženom položaju, nacrtan u razmeri U_L = {u} m/cm"},
+}
+
+
+@dataclass(frozen=True)
+class Choice:
+    """One answer of a NUMERICAL part: responses within ``tolerance`` of ``value`` (any
+    response when ``value`` is None) get ``fraction`` % and the hint of ``diagnosis``."""
+
+    diagnosis: str
+    value: float | None
+    tolerance: float
+    fraction: int
+    hint: tuple[Text, ...]
+
+
+def asked_steps(variant: Variant) -> list[tuple[Answer, Step]]:
+    """Each asked value of the variant as a scalar practice step: its key, its tolerance
+    (a drawing's where the key has one, else ``KEY_RELATIVE``), and the value without each
+    term a plan's sum adds, where the value is the size of a plan's sum (|v_C|, |a_C|)."""
+    left_out = _left_out(variant.scene)
+    out = []
+    for answer in (a for a in variant.key if a.asked):
+        tolerance = answer.tolerance or KEY_RELATIVE * abs(answer.value) or KEY_RELATIVE
+        out.append((answer, Step(answer.key, answer.key, symbol(answer.key), "scalar", answer.unit,
+                                 answer.value, tolerance, missing=left_out.get(answer.key, ()),
+                                 rule="")))
+    return out
+
+
+def _left_out(scene) -> dict[str, tuple[Term, ...]]:
+    """For a linkage: result key → the sizes of its plan's sum with one term left out."""
+    if not isinstance(scene, Scene):
+        return {}
+    try:
+        plans = build(solve_instant(scene, None))
+    except (Unsolvable, StructureError, NotImplementedError, KeyError):
+        return {}  # a class III group: its plans are not drawn
+    out = {}
+    names = {n.lower(): n for n in scene.point_names}
+    for step in practice_steps.plans(plans, plan_scales(scene, plans)):
+        kind, _, point = step.id.partition(".")
+        if step.rule == "sum" and kind in ("v", "a") and point in names:
+            out[f"points.{names[point]}.{kind}"] = tuple(
+                Term(plain(t.name), abs(complex(t.value))) for t in step.missing)
+    return out
+
+
+def choices(step: Step) -> list[Choice]:
+    """The answers of one asked value, in the order Moodle must try them."""
+    exact = float(step.expected)
+    out = [Choice("ok", exact, step.tolerance, 100, _hint(step, Verdict("ok")))]
+    out += [Choice(m.diagnosis, m.value, m.width, 0,
+                   _hint(step, Verdict(m.diagnosis, ratio=m.ratio, term=m.term)))
+            for m in scalar_mistakes(step)]
+    if abs(exact) > step.tolerance:  # the right sign, another size: (0, WIDE·|x|] on its side
+        half = math.copysign(WIDE * abs(exact) / 2, exact)
+        out.append(Choice("length", half, abs(half), 0, _hint(step, Verdict("length"))))
+    out.append(Choice("wrong", None, 0.0, 0, _hint(step, Verdict("wrong"))))
+    return out
+
+
+def _hint(step: Step, verdict: Verdict) -> tuple[Text, ...]:
+    """Practice's hint for the verdict; for "the right sign, another size", whose ratio each
+    response has its own, the same words without it."""
+    if verdict.diagnosis == "length":
+        return (Text("practice.value_off"),)
+    values = {"ratio": verdict.ratio if verdict.ratio is not None else "", "term": verdict.term,
+              "turn": ""}
+    return tuple(Text(key, **values) for key in hint_keys(step, verdict))
+
+
+def matching(parts: list[Choice], response: float) -> Choice | None:
+    """Moodle's rule: the first answer whose interval holds the response (the catch-all
+    holds any)."""
+    for choice in parts:
+        if choice.value is None or abs(response - choice.value) <= choice.tolerance:
+            return choice
+    return None
+
+
+def moodle_xml(found: VariantSet, title: str, language: str,
+               lookup: Callable[[str], str]) -> str:
+    """The set as one Moodle XML file: a category named by task, seed and spread, then one
+    cloze question per variant. ``lookup(key)`` gives a string of ``locales/`` in the
+    language (the hints); ``language`` "sr" writes the given numbers with a decimal comma."""
+    s = found.settings
+    w = WORDS["sr" if language.startswith("sr") else "en"]
+    category = w["category"].format(task=s.task, seed=s.seed, spread=s.spread)
+    out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>",
+           '  <question type="category">',
+           f"    <category><text>$course$/top/{escape(category)}</text></category>",
+           f'    <info format="html"><text>{escape(category)}</text></info>',
+           "  </question>"]
+    for variant in found.variants:
+        out += _question(variant, title, language, w, lookup)
+    out.append("</quiz>")
+    return "\n".join(out) + "\n"
+
+
+def _question(variant: Variant, title: str, language: str, w: dict,
+              lookup: Callable[[str], str]) -> list[str]:
+    comma = language.startswith("sr")
+    text = [f"<p><strong>{_h(title)}</strong> — {_h(w['variant'])} {variant.index}, "
+            f"{_h(w['code'])} <code>{_h(variant.code)}</code></p>",
+            f"<p><strong>{_h(w['given'])}</strong></p><ul>"]
+    text += [f"<li>{_h(g.label)} = {_h(_number(value, comma))} {_h(g.unit)}</li>"
+             for g, value in variant.given]
+    text.append("</ul>")
+    files = []
+    if variant.drawn:
+        scale = length_scale(variant.scene, variant.drawn)
+        svg = drawing_svg(variant.scene, variant.drawn, scale)
+        name = f"{variant.code}.svg"
+        text.append(f"<p>{_h(w['drawing'].format(u=_number(scale, comma)))}</p>"
+                    f'<p><img src="@@PLUGINFILE@@/{name}" alt="{_h(variant.code)}"></p>')
+        files.append(f'<file name="{name}" path="/" encoding="base64">'
+                     f"{base64.b64encode(svg.encode('utf-8')).decode('ascii')}</file>")
+    text.append(f"<p><strong>{_h(w['find'])}</strong></p><ul>")
+    for answer, step in asked_steps(variant):
+        text.append(f"<li>{_h(symbol(answer.key))} = {_cloze(choices(step), lookup, comma)} "
+                    f"{_h(answer.unit)}</li>")
+    text.append("</ul>")
+    body = "".join(text).replace("]]>", "]]]]><![CDATA[>")
+    return ['  <question type="cloze">',
+            f"    <name><text>{escape(variant.code)}</text></name>",
+            f'    <questiontext format="html"><text><![CDATA[{body}]]></text>{"".join(files)}'
+            "</questiontext>",
+            '    <generalfeedback format="html"><text></text></generalfeedback>',
+            "    <penalty>0.3333333</penalty>", "    <hidden>0</hidden>",
+            f"    <idnumber>{escape(variant.code)}</idnumber>",
+            "  </question>"]
+
+
+def _cloze(parts: list[Choice], lookup: Callable[[str], str], comma: bool) -> str:
+    """One NUMERICAL part in Moodle's cloze syntax: {1:NUMERICAL:=x:tol#…~%0%y:tol#…~%0%*#…}."""
+    answers = []
+    for choice in parts:
+        hint = " ".join(t.render(lambda k: _plain(lookup(k)), comma) for t in choice.hint)
+        fraction = "=" if choice.fraction == 100 else f"%{choice.fraction}%"
+        value = "*" if choice.value is None else f"{choice.value!r}:{choice.tolerance!r}"
+        answers.append(f"{fraction}{value}#{_cloze_text(hint)}")
+    return "{1:NUMERICAL:" + "~".join(answers) + "}"
+
+
+def _plain(text: str) -> str:
+    return text.replace("⟨", "").replace("⟩", "")
+
+
+def _cloze_text(text: str) -> str:
+    """A feedback inside a cloze part: HTML-escaped, and Moodle's cloze marks escaped."""
+    text = _h(text)
+    for mark in ("\\", "}", "#", "~", "/", '"'):
+        text = text.replace(mark, "\\" + mark)
+    return text
+
+
+def _h(text) -> str:
+    return html.escape(_plain(str(text)))
+
+
+def _number(value: float, comma: bool) -> str:
+    text = f"{value:.6g}"
+    return text.replace(".", ",") if comma else text
+
