@@ -38,7 +38,7 @@ from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_speed, driver_start, scene_picker
 from ui.selfcheck import Quantity, answer_box
-from ui.url import seed
+from ui.url import seed, url_toggle
 
 page_title("pages/kinetostatics.py")
 RESOLUTIONS = (12, 72, 360, 3600)
@@ -80,8 +80,8 @@ def task_values(base: Scene) -> dict[str, object]:
 
 def load_inputs(base: Scene, scene: Scene) -> Scene:
     """Masses, radii of gyration, forces and moments (all kept in the URL)."""
-    inertia = st.toggle(t("forces.inertia"), key="inertia", bind="query-params")
-    gravity = st.toggle(t("forces.gravity"), key="gravity", bind="query-params")
+    inertia = url_toggle(t("forces.inertia"), "inertia")
+    gravity = url_toggle(t("forces.gravity"), "gravity")
     with st.expander(t("forces.loads"), expanded=False):
         forces, angles = [], []
         for i, f in enumerate(base.forces):

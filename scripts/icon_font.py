@@ -12,8 +12,10 @@ keeps every candidate and tests/test_serve.py checks the icons on our pages.
 
 from __future__ import annotations
 
+import hashlib
 import io
 import re
+from functools import cache
 from pathlib import Path
 
 from fontTools import subset
@@ -28,14 +30,22 @@ FONT = re.compile(r"^/static/media/MaterialSymbols-[A-Za-z]+\.[\w-]+\.woff2$")
 WORD = re.compile(r"[a-z][a-z0-9_]{1,60}")
 
 
-def candidates() -> set[str]:
-    """Every word of Streamlit's scripts, and every ``:material/…:`` icon of ours."""
+@cache
+def ours() -> set[str]:
+    """Every ``:material/…:`` icon of our code (read once a process: the server names the
+    cut by them on every request for the font)."""
     words: set[str] = set()
-    for script in (STATIC / "js").glob("*.js"):
-        words |= set(WORD.findall(script.read_text(encoding="utf-8", errors="ignore")))
     for place in OUR_CODE:
         for source in [ROOT / place] if place.endswith(".py") else (ROOT / place).rglob("*.py"):
             words |= set(re.findall(r":material/([a-z0-9_]+):", source.read_text()))
+    return words
+
+
+def candidates() -> set[str]:
+    """Every word of Streamlit's scripts, and every ``:material/…:`` icon of ours."""
+    words = ours()
+    for script in (STATIC / "js").glob("*.js"):
+        words |= set(WORD.findall(script.read_text(encoding="utf-8", errors="ignore")))
     return words
 
 
@@ -62,9 +72,11 @@ def cut(font: bytes, names: set[str]) -> bytes:
 
 
 def cut_path(font: Path) -> Path:
-    """Where the cut of Streamlit's ``font`` is kept (named after it: a new Streamlit, a
-    new cut)."""
-    return ROOT / "static" / f"cut-{font.name}"
+    """Where the cut of Streamlit's ``font`` is kept, named after it and after our icons: a
+    new Streamlit or a new icon of ours, a new cut (an icon missing from an older cut
+    showed as its name)."""
+    mark = hashlib.sha256(" ".join(sorted(ours())).encode()).hexdigest()[:8]
+    return ROOT / "static" / f"cut-{mark}-{font.name}"
 
 
 def main() -> None:
@@ -74,6 +86,8 @@ def main() -> None:
         target = cut_path(font)
         if target.exists():
             continue
+        for older in target.parent.glob(f"cut-*-{font.name}"):
+            older.unlink()
         names = names if names is not None else candidates()
         target.parent.mkdir(exist_ok=True)
         target.write_bytes(cut(font.read_bytes(), names))

@@ -16,6 +16,7 @@ from ui.i18n import in_language, num, t
 VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.differs", "slip": "check.slip",
             "layout": "check.layout", "missing": "check.missing"}
 COUNTED = ("agrees", "close", "slip", "differs", "layout")  # the verdicts the check page counts
+RESTORED = "_book_restored"  # "As in the book" was pressed: the whole page runs again
 ROLES = {"fitted": "check.fitted", "chose": "check.chose", "predicted": "check.predicted"}
 
 
@@ -55,13 +56,16 @@ def book_section(scene, base, restore: Mapping[str, object]) -> None:
     values belong to its own data), with its CSV. When the student has changed something,
     what differs in words, and one button that gives the page's widgets ``restore`` (the
     task's own values: its position, speed, loads and switches; nothing else)."""
+    if st.session_state.pop(RESTORED, False):
+        st.rerun(scope="app")  # the button sits in a fragment: the widgets above it too
     st.header(t("plans.book_title"))
     if scene == base:
         show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
         return
     st.info("\n".join([t("book.changed"), *(f"- {line}" for line in changes(scene, base))]))
     st.button(t("book.restore"), help=t("book.restore_help"), icon=":material/menu_book:",
-              on_click=lambda: st.session_state.update(restore), key="book_restore")
+              on_click=lambda: st.session_state.update(restore, **{RESTORED: True}),
+              key="book_restore")
 
 
 def changes(scene, base) -> list[str]:

@@ -26,6 +26,17 @@ def url_choice(widget: Callable, label: str, options: Sequence[str], key: str,
     return value
 
 
+def url_toggle(label: str, key: str, **kwargs) -> bool:
+    """A switch kept in the URL as ``?key=true|false``. Not Streamlit's own binding: a
+    bound switch set back to its default from a button (the book's "As in the book") kept
+    the URL's old value and so its old state."""
+    if key not in st.session_state and key in st.query_params:
+        st.session_state[key] = st.query_params[key] == "true"
+    value = st.toggle(label, key=key, **kwargs)
+    st.query_params[key] = "true" if value else "false"
+    return value
+
+
 def seed(defaults: dict[str, object], scene: str) -> None:
     """Give the page's widgets their values for ``scene``, before they are drawn.
 
