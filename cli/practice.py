@@ -6,14 +6,14 @@ same function the pages use (methods.practice.grade); hints in English from loca
 from __future__ import annotations
 
 import json
-import tomllib
-from functools import cache
 from pathlib import Path
 
 import numpy as np
 
+from figures.plans import plain
 from mechanisms import Scene, SceneError
 from mechanisms.gears import GearTrain
+from mechanisms.messages import english
 from mechanisms.rotor import Rotor
 from methods import practice_steps
 from methods.plans import build
@@ -26,7 +26,6 @@ from solvers.kinematics import solve
 from solvers.kinetostatics import analyse
 from solvers.paths import cycle_values
 
-LOCALES = Path(__file__).resolve().parents[1] / "locales"
 KINDS = {"compass": Scene, "plans": Scene, "forces": Scene, "lever": Scene,
          "willis": GearTrain, "balance": Rotor}
 
@@ -58,23 +57,23 @@ def steps_for(scene, method: str, at: float | None = None) -> list[Step]:
     return practice_steps.forces(k, 0, scene.scales.get("F", polygon_scale(forces)))
 
 
-@cache
-def _english() -> dict[str, str]:
-    with open(LOCALES / "en.toml", "rb") as f:
-        return tomllib.load(f)
-
-
 def hint(step: Step, verdict: Verdict) -> str:
-    """The hint for a diagnosis, in the English strings table's words."""
+    """The hint for a diagnosis, in the English strings table's words (a term's name as text
+    with sub- and superscripts, aᵏ_A4A, not LaTeX source)."""
     values = dict(ratio=f"{verdict.ratio:.3g}" if verdict.ratio is not None else "",
-                  term=verdict.term, turn=f"{verdict.turn:.0f}" if verdict.turn is not None else "")
-    text = " ".join(_english()[key].format(**values) for key in hint_keys(step, verdict))
-    return text.replace("⟨", "").replace("⟩", "")
+                  term=plain(verdict.term) if verdict.term else "",
+                  turn=f"{verdict.turn:.0f}" if verdict.turn is not None else "")
+    return " ".join(english(key).format(**values) for key in hint_keys(step, verdict))
 
 
 def graded(steps: list[Step], answers: dict) -> dict:
     """``{"results": [{"id", "diagnosis", "hint"}], "score": {"ok", "of"}}`` for the answers
     (a step not answered is ``none``)."""
+    known = [s.id for s in steps]
+    unknown = [name for name in answers if name not in known]
+    if unknown:
+        raise SceneError(f"answers: no step {', '.join(map(repr, unknown))} in these steps; "
+                         f"they are {', '.join(known)}")
     progress, results = Progress.start(), []
     for step in steps:
         given = answers.get(step.id)

@@ -12,7 +12,7 @@ import pytest
 from cli import main
 from cli.practice import steps_for
 from mechanisms import load_preset
-from methods.practice import Progress, Step, Term, grade, polar
+from methods.practice import Progress, Step, Term, grade, hint_keys, polar
 
 CASES = [("compass", "zbirka-1.1"), ("plans", "zbirka-3.1"), ("plans", "analitika-2.1"),
          ("plans", "triad-full-turn"), ("forces", "zbirka-5.1"), ("forces", "predavanja-kinetostatika"),
@@ -152,7 +152,9 @@ def test_a_scene_that_cannot_be_practised_gets_a_message_and_code_2(args, says, 
 def test_a_bad_answers_file_gets_a_message_and_code_2(tmp_path, capsys):
     path = tmp_path / "a.json"
     for text, says in (("{", "is not JSON"), ('{"x": 1}', 'must hold {"answers"'),
-                       ('{"answers": {"v.b": 3}}', "v.b must be a pair [x, y]")):
+                       ('{"answers": {"v.b": 3}}', "v.b must be a pair [x, y]"),
+                       ('{"answers": {"omega.3": [1, 2]}}', "omega.3 must be a number"),
+                       ('{"answers": {"v.zz": [1, 2], "v.b": [0, 3]}}', "no step 'v.zz'")):
         path.write_text(text)
         assert main(["practice", "zbirka-3.1", "--method", "plans", "--answers", str(path)]) == 2
         assert says in capsys.readouterr().err
@@ -184,3 +186,26 @@ def test_any_scene_practises_a_link_and_an_exam_variant():
     assert steps and all(grade(s, s.expected).ok for s in steps)
     book = {s.id: s.expected for s in steps_for(scene, "plans")}
     assert any(abs(complex(s.expected) - complex(book.get(s.id, 0))) > s.tolerance for s in steps)
+
+
+def test_the_command_lines_hints_write_names_as_text_not_latex(tmp_path, capsys):
+    """A forgotten Coriolis part is named aᵏ_… as the pages write it, not a^k_{…}."""
+    steps = steps_for(load_preset("zbirka-3.1"), "plans")
+    step = next(s for s in steps if any(m.name.startswith("a^k") for m in s.missing))
+    term = next(m for m in step.missing if m.name.startswith("a^k"))
+    path = tmp_path / "answers.json"
+    path.write_text(json.dumps({"answers": {step.id: [term.value.real, term.value.imag]}}))
+    assert main(["practice", "zbirka-3.1", "--method", "plans", "--answers", str(path),
+                 "--json"]) == 0
+    (result,) = [r for r in json.loads(capsys.readouterr().out)["results"] if r["id"] == step.id]
+    assert result["diagnosis"] == "missing-term"
+    assert "aᵏ_" in result["hint"] and "{" not in result["hint"] and "^" not in result["hint"]
+
+
+def test_a_scalar_step_speaks_of_a_value_and_its_sign():
+    step = Step("omega.3", "", "\\omega_3", "scalar", "s⁻¹", 4.5, 0.05, rule="rate")
+    assert hint_keys(step, grade(step, -4.5))[0] == "practice.value_sense"
+    assert hint_keys(step, grade(step, 45.0))[0] == "practice.value_scale"
+    assert hint_keys(step, grade(step, 3.0))[0] == "practice.value_length"
+    arrow = Step("v.b", "", "v_B", "vector", "m/s", 3 + 4j, 0.05)
+    assert hint_keys(arrow, grade(arrow, -3 - 4j))[0] == "practice.hint_sense"
