@@ -10,10 +10,11 @@ equation can reach (a closed loop of stages) ends with a step that solves the re
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from mechanisms.gears import GearTrain
-from solvers.gears import TrainSolution, settled, speed_scale, stages, willis_table
+from solvers.gears import Stage, TrainSolution, settled, speed_scale, stages, willis_table
 
 
 @dataclass(frozen=True)
@@ -159,3 +160,19 @@ def total_ratio(steps: list[SpeedStep], a: int, b: int) -> str | None:
         return None
     return (f"i_{{{a},{b}}} = \\frac{{{_w(a)}}}{{{_w(b)}}} = \\frac{{{_n(omega[a])}}}{{{_n(omega[b])}}}"
             f" = {omega[a] / omega[b]:.5g}")
+
+
+def stage_latex(stage: Stage, radii: str = "radii") -> str:
+    """i^c_ab = (ω_a − ω_c)/(ω_b − ω_c) = (numbers) = value, then the value from the radii
+    after the word ``radii`` (in the reader's language). Both ends turning with the carrier
+    (0/0) leave only the radii's value."""
+    a, b = stage.ends
+    c = stage.carrier
+    if c is None:
+        head = f"i_{{{a},{b}}} = \\frac{{\\omega_{{{a}}}}}{{\\omega_{{{b}}}}}"
+    else:
+        head = (f"i^{{{c}}}_{{{a},{b}}} = \\frac{{\\omega_{{{a}}} - \\omega_{{{c}}}}}"
+                f"{{\\omega_{{{b}}} - \\omega_{{{c}}}}}")
+    numbers = f"\\frac{{{stage.relative[a]:.5g}}}{{{stage.relative[b]:.5g}}}"
+    out = f"{head} = {numbers}" + ("" if math.isnan(stage.solved) else f" = {stage.solved:.5g}")
+    return out if stage.ratio is None else f"{out},\\quad \\text{{{radii}: }} {{{stage.ratio:.5g}}}"

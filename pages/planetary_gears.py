@@ -8,7 +8,7 @@ import streamlit as st
 from figures.gears import schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
 from methods import practice_steps
-from methods.gear_steps import speed_steps, total_ratio
+from methods.gear_steps import speed_steps, stage_latex, total_ratio
 from methods.scales import nice_scale
 from solvers.gears import TrainError, geometry_notes, solve_train, stages, willis_table
 from ui import practice
@@ -148,7 +148,7 @@ def results() -> None:
                 for w in willis_table(train)], f"{train.id}-willis.csv", "csv_willis")
             st.markdown(f"**{t('gears.stages_title')}**")
             for stage in stages(solution):
-                st.latex(latex(stage.latex(t("gears.from_radii"))))
+                st.latex(latex(stage_latex(stage, t("gears.from_radii"))))
                 st.caption(t("gears.stage_fixed") if stage.carrier is None
                            else t("gears.stage_carrier", carrier=stage.carrier))
             steps = speed_steps(solution)

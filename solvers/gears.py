@@ -208,21 +208,6 @@ class Stage:
     ratio: float | None  # from the radii (None when the ends are not joined by the stage)
     solved: float  # from the speeds (NaN when ω_b = ω_c)
 
-    def latex(self, radii: str = "radii") -> str:
-        """i^c_ab = (ω_a − ω_c)/(ω_b − ω_c) = (numbers) = value, then the value from the radii
-        after the word ``radii`` (in the reader's language). Both ends turning with the
-        carrier (0/0) leave only the radii's value."""
-        a, b = self.ends
-        c = self.carrier
-        if c is None:
-            head = f"i_{{{a},{b}}} = \\frac{{\\omega_{{{a}}}}}{{\\omega_{{{b}}}}}"
-        else:
-            head = (f"i^{{{c}}}_{{{a},{b}}} = \\frac{{\\omega_{{{a}}} - \\omega_{{{c}}}}}"
-                    f"{{\\omega_{{{b}}} - \\omega_{{{c}}}}}")
-        numbers = f"\\frac{{{self.relative[a]:.5g}}}{{{self.relative[b]:.5g}}}"
-        out = f"{head} = {numbers}" + ("" if math.isnan(self.solved) else f" = {self.solved:.5g}")
-        return out if self.ratio is None else f"{out},\\quad \\text{{{radii}: }} {{{self.ratio:.5g}}}"
-
 
 def stages(solution: TrainSolution) -> list[Stage]:
     """One stage per carrier (the frame's first), with its ends: the two central gears a

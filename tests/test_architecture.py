@@ -8,6 +8,8 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
+import re
+
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -139,6 +141,14 @@ def test_what_computes_does_not_draw(library, packages):
              if _package(name) in packages
              for target, line in _imports(name, path) if _package(target) == library]
     assert not wrong
+
+
+def test_the_numerical_core_writes_no_latex():
+    """LaTeX is for people: methods/ writes it (the Willis formula moved there), solvers/
+    only computes."""
+    for path in sorted((ROOT / "solvers").glob("*.py")):
+        text = path.read_text(encoding="utf-8")
+        assert not re.search(r"\\\\(frac|omega|text|quad)\b", text), path.name
 
 
 def test_no_definition_runs_over_about_120_lines():

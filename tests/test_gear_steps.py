@@ -6,7 +6,7 @@ import math
 import pytest
 
 from mechanisms import load_preset, parse_document, preset_ids
-from methods.gear_steps import speed_steps, total_ratio
+from methods.gear_steps import speed_steps, stage_latex, total_ratio
 from solvers.gears import solve_train, stages
 
 
@@ -56,7 +56,8 @@ def test_a_differential_driving_straight_turns_its_side_gears_with_the_case():
     assert by[9].kind == "stage" and by[9].omega == pytest.approx(solution.omega[3], rel=1e-12)
     stage = next(s for s in stages(solution) if s.carrier == 3)
     assert stage.ratio == pytest.approx(-1.0) and math.isnan(stage.solved)
-    assert "nan" not in stage.latex() and r"\text{iz poluprečnika: } {-1}" in stage.latex("iz poluprečnika")
+    assert "nan" not in stage_latex(stage)
+    assert r"\text{iz poluprečnika: } {-1}" in stage_latex(stage, "iz poluprečnika")
 
 
 def test_stages_that_need_each_other_are_solved_together():

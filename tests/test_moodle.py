@@ -53,7 +53,7 @@ def test_the_file_has_what_moodles_importer_reads(task, language):
     assert root.tag == "quiz"
     category, *questions = root.findall("question")
     assert category.get("type") == "category"
-    assert category.findtext("category/text") == f"$course$/top/" + (
+    assert category.findtext("category/text") == "$course$/top/" + (
         f"Varijante zadatka {task} (seme 7, ± 20 %)" if language == "sr"
         else f"Variants of {task} (seed 7, ± 20 %)")
     assert len(questions) == len(found.variants)
