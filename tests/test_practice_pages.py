@@ -77,7 +77,8 @@ def test_practice_grades_typed_answers_on_every_page(path, state, key, method, l
     wrong = -second.expected if second.kind != "point" else complex(second.expected) * 1.5
     _type(at, key, second, wrong)
     warning = at.warning[0].value
-    diagnosis = "practice.hint_sense" if second.kind != "point" else "practice.hint_wrong"
+    diagnosis = {"point": "practice.hint_wrong", "scalar": "practice.value_sense"}.get(
+        second.kind, "practice.hint_sense")  # a value is told of its sign, not of an arrow
     assert t(diagnosis, lang).split(" ")[0] in warning
     for _ in range(2):
         _type(at, key, second, wrong)
@@ -118,3 +119,22 @@ def test_practising_kinetostatics_hides_the_driving_torque_it_ends_with(tab):
     at = _open("pages/kinetostatics.py", {"scene": "zbirka-5.1", "tab": tab},
                f"pr_{'forces' if tab == 'steps' else 'lever'}", "en")
     assert not any(m.label.startswith("M_p") for m in at.metric)  # … the practice does not
+
+
+def test_a_scale_change_keeps_every_answer_and_another_instant_starts_over():
+    """Answers are kept in SI: a coarser U_v keeps the verdict (and the step); moving φ₂
+    gives other exact values, so practice starts again, and says so."""
+    at = _open("pages/velocity_plans.py", {"scene": "zbirka-3.1"}, "pr_plans", "en")
+    steps = steps_for(load_preset("zbirka-3.1"), "plans")
+    _type(at, "pr_plans", steps[0], steps[0].expected)
+    assert at.success
+    next(b for b in at.button if b.key == "pr_plans_next").click().run()
+    typed(at, "Uv", 1.0).run()
+    assert not at.exception
+    assert t("practice.step", "en", n=2, of=len(steps), part=t("practice.part_vector", "en")) in \
+        " ".join(m.value for m in at.markdown)
+    next(b for b in at.button if b.key == "pr_plans_prev").click().run()
+    assert at.success and not [i for i in at.info if i.value == t("practice.restarted", "en")]
+    at.slider(key="at").set_value(100.0).run()
+    assert any(i.value == t("practice.restarted", "en") for i in at.info)
+    assert not at.success

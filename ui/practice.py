@@ -39,13 +39,15 @@ def hint(step: Step, verdict: Verdict) -> str:
 
 
 def _state(key: str, steps: list[Step]) -> dict:
-    """This page's practice run; a new one when the steps changed (another scene, instant
-    or scale)."""
-    signature = tuple((s.id, s.tolerance, str(s.expected)) for s in steps)
+    """This page's practice run. Answers and tips are kept in SI units, so a change of scale
+    or of language keeps them (the sheet redraws them at the new scale); another scene or
+    instant (other exact values) starts a new run, and the page says so."""
+    signature = tuple((s.id, str(s.expected)) for s in steps)
     state = st.session_state.get(f"{key}_state")
     if state is None or state["signature"] != signature:
+        restarted = state is not None and bool(state["progress"].answers)
         state = {"signature": signature, "progress": Progress.start(), "index": 0,
-                 "tips": {}, "revision": 0}
+                 "tips": {}, "revision": 0, "restarted": restarted}
         st.session_state[f"{key}_state"] = state
     return state
 
@@ -56,6 +58,8 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
         st.info(t("practice.no_steps"))
         return
     state = _state(key, steps)
+    if state.pop("restarted", False):
+        st.info(t("practice.restarted"), icon=":material/restart_alt:")
     progress: Progress = state["progress"]
     index = min(state["index"], len(steps) - 1)
     step = steps[index]
@@ -63,7 +67,10 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
                 + f" ${step.symbol}$ [{step.unit}]")
     st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
                else t("practice.rule_hidden"))
+    if step.kind == "vector" and abs(complex(step.expected)) <= step.tolerance:
+        st.info(t("practice.zero_step"), icon=":material/info:")  # (the tip stays on the tail)
     if drawable and step.kind != "scalar" and step.sheet:
+        st.caption(t("practice.sheet_scale", scale=num(step.scale, 4), unit=step.unit))
         _drawing(steps, index, key, state, progress, title)
     _typing(step, key, progress)
     _feedback(step, progress)
@@ -76,16 +83,16 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
              title: str) -> None:
     """The sheet: drag the red circle to the tip; the check follows on release."""
     step = steps[index]
-    tip = state["tips"].get(step.id)
-    revision = f"{step.id}-{state['revision']}"
+    tip = state["tips"].get(step.id)  # SI: where the student put it, at any scale
+    tip = None if tip is None else tip / (step.scale or 1.0)
+    revision = f"{step.id}-{state['revision']}-{step.scale}"
     result = chart(practice_figure(steps, index, tip, title, t, look(), revision),
                    f"practice-{key}", key=f"{key}_fig", editable=True)
     st.caption(t("practice.drag_hint"))
     drag = result.drag
     if drag and drag.get("point") == "tip":
-        place = complex(float(drag["x"]), float(drag["y"]))
-        state["tips"][step.id] = place
-        at = place * step.scale
+        at = complex(float(drag["x"]), float(drag["y"])) * step.scale
+        state["tips"][step.id] = at
         progress.give(step, at - step.tail if step.kind == "vector" else at)
         state["revision"] += 1
         st.rerun()
