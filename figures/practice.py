@@ -62,6 +62,8 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
                    line=dict(color=ANSWER, width=1.5 * look.line),
                    fillcolor="rgba(214, 39, 40, 0.15)")]
     plane_layout(fig, title, look, x_title="x [cm]", y_title="y [cm]")
-    fig.merge_layout(dict(shapes=shapes, dragmode="pan", uirevision=f"practice-{step.sheet}",
+    # no drag mode: a swipe scrolls the page, the tip is moved by its handle (ui/plot.js);
+    # each step opens at its own view (a zoom of the last one would show an empty sheet)
+    fig.merge_layout(dict(shapes=shapes, dragmode=False, uirevision=f"practice-{step.id}",
                           editrevision=revision))
     return fig

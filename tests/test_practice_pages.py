@@ -90,7 +90,9 @@ def test_practice_hides_the_plans_and_draws_the_sheet_to_drag_on():
     drawn = charts(at)
     assert set(drawn) == {"pr_plans_fig"}  # the exact plans are not on the page
     sheet = drawn["pr_plans_fig"]
-    assert sheet["editable"] is True
+    assert sheet["handle"] == "tip" and sheet["editable"] is False  # moved by its handle
+    assert sheet["figure"]["layout"]["dragmode"] is False  # a swipe scrolls the page
+    assert sheet["focus"].startswith(".st-key-pr_plans_prompt|")
     assert [s["name"] for s in sheet["figure"]["layout"]["shapes"]] == ["tip"]
 
 

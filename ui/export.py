@@ -32,12 +32,13 @@ def csv_button(table: Table | Callable[[], Table], filename: str, key: str,
 
 
 def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
-          crank: Crank | None = None):
+          crank: Crank | None = None, handle: str | None = None, focus: str | None = None):
     """A Plotly chart whose toolbar saves it as SVG (to print) or PNG, and shows it full screen.
     Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE).
     ``editable``: its shapes drag and its paper clicks (ui.plot.plot), read from the result.
     ``crank``: its own φ₂ control (ui.crank); letting go of it sets the page's φ₂ (``at``),
-    or the quantity the control moves (``crank.key``).
+    or the quantity the control moves (``crank.key``). ``handle`` and ``focus``: a shape
+    moved by finger and what to scroll to (ui.plot.plot).
     On a Serbian page its numbers have a decimal comma (Plotly's ``separators``)."""
     labels = {"svg": t("export.save_svg"), "png": t("export.save_png"),
               "fullscreen": t("export.fullscreen")}
@@ -46,7 +47,8 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
                       unreachable=t(crank.unreachable))
     return plot(fig, key, filename, labels, editable, crank,
                 None if crank is None else _turned(crank.key),
-                separators=",." if current().startswith("sr") else None, locale=current())
+                separators=",." if current().startswith("sr") else None, locale=current(),
+                handle=handle, focus=focus)
 
 
 def _turned(key: str) -> Callable[[float | None, bool | str], None]:

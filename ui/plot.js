@@ -137,6 +137,119 @@ function listen(gd, send) {
   }, true);
 }
 
+// Practice's sheet (spec.handle, the name of its one shape: the tip). A student moves the
+// tip with a finger or the mouse, grabbed anywhere within REACH CSS px of its centre — a
+// finger's 44 px, however small the tip is drawn and however far the sheet is zoomed; two
+// fingers zoom the sheet about their middle (as the toolbar's + and −), so that a finger can
+// place a tip to the paper's tolerance as a finer pencil would; a one-finger swipe anywhere
+// else scrolls the page (the chart has no drag mode). Letting go sends "drag", as an
+// editable chart does. Plotly never sees these presses: they are taken before it.
+const REACH = 22;
+
+function box(gd) {
+  const area = gd.querySelector(".nsewdrag");
+  return area ? area.getBoundingClientRect() : null;
+}
+
+function toData(gd, x, y) {
+  const b = box(gd), { xaxis, yaxis } = gd._fullLayout;
+  return [xaxis.p2c(x - b.left), yaxis.p2c(y - b.top)];
+}
+
+function toScreen(gd, x, y) {
+  const b = box(gd), { xaxis, yaxis } = gd._fullLayout;
+  return [b.left + xaxis.c2p(x), b.top + yaxis.c2p(y)];
+}
+
+function handle(gd, name) {
+  if (gd.__handled) return;
+  gd.__handled = true;
+  gd.style.touchAction = "pan-x pan-y";  // the page scrolls; a pinch is the sheet's
+  let grab = null, pinch = null, frame = 0;
+  const index = () => (gd.layout.shapes || []).findIndex((s) => s.name === name);
+  const inside = (x, y) => {
+    const b = box(gd);
+    return b && x >= b.left && x <= b.right && y >= b.top && y <= b.bottom;
+  };
+  const near = (x, y) => {  // a grab: the finger's offset from the centre, which it keeps
+    const i = index();
+    if (i < 0 || !box(gd)) return null;
+    const s = gd.layout.shapes[i];
+    const [px, py] = toScreen(gd, (s.x0 + s.x1) / 2, (s.y0 + s.y1) / 2);
+    return Math.hypot(x - px, y - py) <= REACH ? { off: [px - x, py - y] } : null;
+  };
+  const later = (change) => {
+    cancelAnimationFrame(frame);
+    frame = requestAnimationFrame(() => gd.__Plotly.relayout(gd, change));
+  };
+  const move = (x, y) => {
+    const i = index(), s = gd.layout.shapes[i];
+    const [cx, cy] = toData(gd, x + grab.off[0], y + grab.off[1]);
+    const rx = (s.x1 - s.x0) / 2, ry = (s.y1 - s.y0) / 2;
+    grab.at = [cx, cy];
+    later({ [`shapes[${i}].x0`]: cx - rx, [`shapes[${i}].x1`]: cx + rx,
+            [`shapes[${i}].y0`]: cy - ry, [`shapes[${i}].y1`]: cy + ry });
+  };
+  const release = () => {
+    if (grab && grab.at) {
+      cancelAnimationFrame(frame);
+      gd.__send.current("drag", { point: name, x: grab.at[0], y: grab.at[1], pixel: pixel(gd) });
+    }
+    grab = null;
+  };
+  const spread = (t) => Math.hypot(t[0].clientX - t[1].clientX, t[0].clientY - t[1].clientY);
+  const zoom = (t) => {
+    const k = pinch.spread / Math.max(spread(t), 1);
+    const [mx, my] = pinch.middle;
+    later({ "xaxis.range": pinch.x.map((v) => mx + (v - mx) * k),
+            "yaxis.range": pinch.y.map((v) => my + (v - my) * k) });
+  };
+  const take = (e) => { e.preventDefault(); e.stopPropagation(); };
+  gd.addEventListener("touchstart", (e) => {
+    const t = e.touches;
+    if (t.length === 2 && inside(t[0].clientX, t[0].clientY)) {
+      const { xaxis, yaxis } = gd._fullLayout;
+      grab = null;
+      pinch = { spread: spread(t), x: [...xaxis.range], y: [...yaxis.range],
+                middle: toData(gd, (t[0].clientX + t[1].clientX) / 2, (t[0].clientY + t[1].clientY) / 2) };
+      take(e);
+    } else if (t.length === 1 && (grab = near(t[0].clientX, t[0].clientY))) {
+      take(e);
+    }
+  }, { capture: true, passive: false });
+  gd.addEventListener("touchmove", (e) => {
+    if (pinch && e.touches.length === 2) { take(e); zoom(e.touches); }
+    else if (grab && e.touches.length === 1) { take(e); move(e.touches[0].clientX, e.touches[0].clientY); }
+  }, { capture: true, passive: false });
+  gd.addEventListener("touchend", (e) => {
+    if (pinch && e.touches.length < 2) pinch = null;
+    else if (grab && !e.touches.length) { take(e); release(); }
+  }, { capture: true, passive: false });
+  gd.addEventListener("mousedown", (e) => {
+    if (e.button === 0 && (grab = near(e.clientX, e.clientY))) take(e);
+  }, true);
+  const moved = (e) => { if (grab && !pinch) move(e.clientX, e.clientY); };
+  const up = () => { if (grab && !pinch) release(); };
+  window.addEventListener("mousemove", moved);
+  window.addEventListener("mouseup", up);
+  gd.__unhandle = () => {
+    window.removeEventListener("mousemove", moved);
+    window.removeEventListener("mouseup", up);
+  };
+}
+
+// What a page asks to have on the screen once this chart is drawn (spec.focus: "selector|n"),
+// once for each n: practice's step prompt after a check or a move.
+function focus(gd, spec) {
+  if (!spec.focus || spec.focus === gd.__focused) return;
+  gd.__focused = spec.focus;
+  const target = document.querySelector(spec.focus.split("|")[0]);
+  if (!target) return;
+  const header = document.querySelector("[data-testid='stHeader']");  // fixed over the page
+  target.style.scrollMarginTop = `${(header ? header.offsetHeight : 0) + 8}px`;
+  target.scrollIntoView({ block: "start" });
+}
+
 // φ₂ in the browser (ui/crank.py): a slider and play controls under the chart. The first
 // touch asks the server for the figure's frames over a turn (the trigger "frames"); from
 // then on every chart of the same group redraws locally while φ₂ moves, and only letting
@@ -422,11 +535,17 @@ export default function (component) {
     gd.__layout = spec.figure.layout;  // and over the same layout
     if (gd.__Plotly && gd.__Plotly !== Plotly) gd.__Plotly.purge(gd);  // drawn by another bundle
     gd.__Plotly = Plotly;
-    Plotly.react(gd, { ...spec.figure, layout: fitted(gd, spec.figure.layout), config })
+    let layout = fitted(gd, spec.figure.layout);
+    if (spec.handle) {  // a sheet as tall as the screen's width allows, not the page's 600 px
+      layout = { ...layout, height: Math.min(layout.height || 600, Math.max(320, gd.clientWidth + 100)) };
+    }
+    Plotly.react(gd, { ...spec.figure, layout, config })
       .then(() => fitLegend(gd))
       .then(() => keepLabelsInside(gd))
       .then(() => {
         if (spec.editable) listen(gd, gd.__send);
+        if (spec.handle) handle(gd, spec.handle);
+        focus(gd, spec);
         if (spec.first && gd.__first) reportFirstPaint(gd);  // (not if a whole run's figure came since)
       })
       .catch((error) => { gd.textContent = String(error); });
@@ -435,6 +554,7 @@ export default function (component) {
   return () => {
     waiting.delete(gd);
     dropCrank(gd);
+    if (gd.__unhandle) gd.__unhandle();
     if (gd.__Plotly) gd.__Plotly.purge(gd);
   };
 }

@@ -131,7 +131,8 @@ def bundle_url(fig: RawFigure) -> str:
 def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
          editable: bool = False, crank: Crank | None = None,
          on_crank: Callable[[float | None, bool | str], None] | None = None,
-         separators: str | None = None, locale: str = "en"):
+         separators: str | None = None, locale: str = "en", handle: str | None = None,
+         focus: str | None = None):
     """Draw ``fig`` in the chart ``key``; the same key keeps the same div between reruns. Its
     toolbar saves it as ``filename``.svg or .png; ``labels`` name the buttons ("svg", "png",
     "fullscreen").
@@ -151,6 +152,14 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     serves every language. ``locale``: the page's language, whose words the toolbar's
     tooltips take (``plotly_locales``).
 
+    ``handle``: the name of the one shape a student moves (practice's tip), by finger or
+    mouse, grabbed anywhere within 22 CSS px of it however small it is drawn; two fingers
+    zoom the chart, and a one-finger swipe elsewhere scrolls the page. Its new place comes
+    back as ``drag``, as an editable chart's.
+
+    ``focus``: a CSS selector of what to scroll to the top of the screen once this chart is
+    drawn, each time the text changes (give it a counter: "….st-key-x #3").
+
     In a page's first run in a session the chart reports its first paint (trigger
     "painted"), and the rerun that follows sends what the page left out until then
     (ui/firstpaint.py)."""
@@ -160,10 +169,11 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
             f'"first": {json.dumps(first)}, '
             f'"labels": {json.dumps(labels)}, "editable": {json.dumps(editable)}, '
             f'"crank": {control}, "separators": {json.dumps(separators)}, '
-            f'"locale": {json.dumps(locale)}, '
+            f'"locale": {json.dumps(locale)}, "handle": {json.dumps(handle)}, '
+            f'"focus": {json.dumps(focus)}, '
             f'"figure": {fig.json()}}}')
     events = ({"on_drag_change": _ignore, "on_click_change": _ignore, "on_joint_change": _ignore}
-              if editable else {})
+              if editable or handle else {})
     if first:
         events["on_painted_change"] = painted  # the rerun it starts is what it is for
     if on_crank is not None:

@@ -63,17 +63,20 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
     progress: Progress = state["progress"]
     index = min(state["index"], len(steps) - 1)
     step = steps[index]
-    st.markdown(t("practice.step", n=index + 1, of=len(steps), part=t(PARTS[step.kind]))
-                + f" ${step.symbol}$ [{step.unit}]")
-    st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
-               else t("practice.rule_hidden"))
+    with st.container(key=f"{key}_prompt"):  # what a check or a move brings to the screen's top
+        st.markdown(t("practice.step", n=index + 1, of=len(steps), part=t(PARTS[step.kind]))
+                    + f" ${step.symbol}$ [{step.unit}]")
+        verdict = st.container()  # filled once the typed answer below has been checked
     if step.kind == "vector" and abs(complex(step.expected)) <= step.tolerance:
         st.info(t("practice.zero_step"), icon=":material/info:")  # (the tip stays on the tail)
     if drawable and step.kind != "scalar" and step.sheet:
-        st.caption(t("practice.sheet_scale", scale=num(step.scale, 4), unit=step.unit))
         _drawing(steps, index, key, state, progress, title)
+        st.caption(t("practice.sheet_scale", scale=num(step.scale, 4), unit=step.unit))
+    st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
+               else t("practice.rule_hidden"))
     _typing(step, key, progress)
-    _feedback(step, progress)
+    with verdict:
+        _feedback(step, progress)
     _moves(steps, index, key, state, progress)
     if all(progress.done(s) for s in steps):
         score(steps, progress, key)
@@ -86,8 +89,10 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
     tip = state["tips"].get(step.id)  # SI: where the student put it, at any scale
     tip = None if tip is None else tip / (step.scale or 1.0)
     revision = f"{step.id}-{state['revision']}-{step.scale}"
+    seen = len(progress.verdicts.get(step.id, []))  # a check, a drag or a move: a new focus
     result = chart(practice_figure(steps, index, tip, title, t, look(), revision),
-                   f"practice-{key}", key=f"{key}_fig", editable=True)
+                   f"practice-{key}", key=f"{key}_fig", handle="tip",
+                   focus=f".st-key-{key}_prompt|{index}-{seen}-{state['revision']}")
     st.caption(t("practice.drag_hint"))
     drag = result.drag
     if drag and drag.get("point") == "tip":
@@ -125,6 +130,7 @@ def _typing(step: Step, key: str, progress: Progress) -> None:
             progress.give(step, complex(*values))
         else:
             progress.give(step, values[0])
+    st.rerun()  # the verdict, with the step's prompt and sheet brought to the screen
 
 
 def _feedback(step: Step, progress: Progress) -> None:
