@@ -1,0 +1,123 @@
+"""Practice by thumb (issue: a phone, task 3.1's plans, Serbian): two fingers zoom the sheet
+and a finger drags the tip, grabbed off its centre, to the exact place — ok at the paper's
+tolerance; a swipe beside the tip scrolls the page and leaves the sheet's view; after each
+check the step's prompt, its verdict and the sheet are on the screen; each step opens at
+its own view. Touches are CDP touch events in chromium's iPhone 13 profile."""
+
+from __future__ import annotations
+
+import pytest
+
+from cli.practice import steps_for
+from mechanisms import load_preset
+
+from .test_browser import CHROMIUM, FLAGS, keep, settle, wait_idle
+
+pytestmark = pytest.mark.browser
+
+SHEET = "document.querySelector('.mehanizmi-plot')"
+MAIN = "document.querySelector(\"[data-testid='stMain']\")"
+
+
+@pytest.fixture(scope="module")
+def phone(tmp_path_factory):
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        device = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        context = browser.new_context(**device, locale="sr-RS")
+        yield context
+        browser.close()
+
+
+def touch(cdp, kind: str, points: list[tuple[float, float]]) -> None:
+    cdp.send("Input.dispatchTouchEvent",
+             {"type": kind, "touchPoints": [{"x": x, "y": y} for x, y in points]})
+
+
+def gesture(cdp, page, paths: list[list[tuple[float, float]]]) -> None:
+    """Fingers down at each path's start, along it in ten moves, then up."""
+    touch(cdp, "touchStart", [path[0] for path in paths])
+    for k in range(1, 11):
+        touch(cdp, "touchMove", [(a[0] + (b[0] - a[0]) * k / 10, a[1] + (b[1] - a[1]) * k / 10)
+                                 for a, b in paths])
+        page.wait_for_timeout(25)
+    touch(cdp, "touchEnd", [])
+
+
+def view(page) -> list:
+    return page.evaluate(f"() => [{SHEET}._fullLayout.xaxis.range, {SHEET}._fullLayout.yaxis.range]")
+
+
+def area(page) -> dict:
+    return page.evaluate(f"() => {{ const r = {SHEET}.querySelector('.nsewdrag')"
+                         ".getBoundingClientRect(); return {x: r.left, y: r.top, w: r.width, h: r.height}; }")
+
+
+def on_screen(page, x: float, y: float) -> tuple[float, float]:
+    return tuple(page.evaluate(
+        f"([x, y]) => {{ const g = {SHEET}, b = g.querySelector('.nsewdrag').getBoundingClientRect(); "
+        "return [b.left + g._fullLayout.xaxis.c2p(x), b.top + g._fullLayout.yaxis.c2p(y)]; }",
+        [x, y]))
+
+
+def tip_now(page) -> complex:
+    x, y = page.evaluate(f"() => {{ const s = {SHEET}.layout.shapes[0]; "
+                         "return [(s.x0 + s.x1) / 2, (s.y0 + s.y1) / 2]; }")
+    return complex(x, y)
+
+
+def in_view(page, selector: str) -> bool:
+    box = page.locator(selector).last.bounding_box()
+    return box is not None and box["y"] >= 0 and box["y"] + box["height"] <= 664
+
+
+def test_a_student_practises_task_3_1_by_finger(app_url, phone, tmp_path):
+    page = phone.new_page()
+    cdp = phone.new_cdp_session(page)
+    page.goto(f"{app_url}/velocity_plans?lang=sr&scene=zbirka-3.1")
+    settle(page)
+    page.get_by_text("Vežbaj", exact=True).tap()
+    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
+    wait_idle(page)
+    steps = steps_for(load_preset("zbirka-3.1"), "plans")
+    for n, step in enumerate(steps[:6]):
+        page.wait_for_function(f"() => document.body.innerText.includes('Korak {n + 1} od')",
+                               timeout=30_000)
+        wait_idle(page)
+        page.wait_for_timeout(300)
+        assert in_view(page, ".st-key-pr_plans_prompt"), n  # the prompt, brought up
+        if n < 3:
+            opened = view(page)
+            assert opened[0][1] - opened[0][0] > 10  # a fresh step opens unzoomed
+            box = area(page)
+            middle = (box["x"] + box["w"] / 2, box["y"] + box["h"] / 2)
+            gesture(cdp, page, [[(middle[0] - 20, middle[1]), (middle[0] - 60, middle[1])],
+                                [(middle[0] + 20, middle[1]), (middle[0] + 60, middle[1])]])
+            page.wait_for_timeout(300)
+            zoomed = view(page)
+            assert zoomed[0][1] - zoomed[0][0] < (opened[0][1] - opened[0][0]) / 2.5  # × 3
+            exact = (step.tail + complex(step.expected)) / step.scale
+            handle = on_screen(page, tip_now(page).real, tip_now(page).imag)
+            grab = (handle[0] + 14, handle[1] - 8)  # a finger lands beside a 3 px circle
+            target = on_screen(page, exact.real, exact.imag)
+            gesture(cdp, page, [[grab, (target[0] + 14, target[1] - 8)]])
+            page.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=30_000)
+            wait_idle(page)
+            assert abs(tip_now(page) - exact) < step.tolerance / step.scale
+            assert in_view(page, "[data-testid='stAlertContentSuccess']")
+            assert in_view(page, ".st-key-pr_plans_prompt")
+        if n == 0:  # a swipe beside the tip scrolls the page and leaves the sheet as it was
+            before, scrolled = view(page), page.evaluate(f"() => {MAIN}.scrollTop")
+            box = area(page)
+            start = (box["x"] + 20, box["y"] + box["h"] - 20)
+            gesture(cdp, page, [[start, (start[0], start[1] - 250)]])
+            page.wait_for_timeout(600)
+            assert page.evaluate(f"() => {MAIN}.scrollTop") > scrolled + 100
+            assert view(page) == before
+        shot = tmp_path / f"practice-phone-sr-step-{n + 1}.png"
+        page.screenshot(path=str(shot))
+        keep(shot)
+        page.get_by_role("button", name="Sledeći korak").tap()
+    assert page.locator("[data-testid='stException']").count() == 0
