@@ -250,8 +250,9 @@ def workbench() -> None:
     start controls above (an eighth of the builder's rerun). Starting anew or uploading runs
     the whole page."""
     base = builder.base()
-    drawing_col, tables_col = st.columns([3, 2], gap="large")
-    with tables_col:
+    with st.container(key="build_bench"):  # on a phone: the drawing held over the tables
+        drawing_col, tables_col = st.columns([3, 2], gap="large")
+    with tables_col, st.container(key="build_tables"):
         driver_place = st.container()  # above the tables: written by driven()
         edited = edited_tables(base)
     driven(base, edited, drawing_col, driver_place)
@@ -275,9 +276,11 @@ def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerato
     doc = document(edited, driver, base)
     builder.remember(doc)
     now = {name: refused(rows, current()) for name, rows in edited.items()}
-    if _texts(now) != _texts({n: refused(r, current()) for n, r in tables(base).items()}):
-        builder.replace(doc)  # the tables again, with the ⚠ marks where they are now
-        st.rerun()
+    shown = tables(base)
+    if (_texts(now) != _texts({n: refused(r, current()) for n, r in shown.items()})
+            or (edited["extra"] != shown["extra"] and builder.stale_forms(edited["extra"], doc))):
+        builder.replace(doc)  # the tables again: the ⚠ marks where they are now, a point's
+        st.rerun()  # other forms computed from what was just typed in one of them
 
     scene, problem, solved = None, None, None
     if any(now.values()):
@@ -296,9 +299,11 @@ def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerato
             mode = st.radio(t("build.click_adds"), ["nothing", "frame", *map(str, last.scene.members)],
                             format_func=lambda m: t(CLICKS[m]) if m in CLICKS
                             else t("build.click_member", member=m), horizontal=True, key="build_click")
-            result = chart(builder_figure(last.scene, last.positions, last.rotations, last.paths,
-                                          t("build.drawing"), t, look(), builder.revision()),
-                           f"{last.scene.id}-drawing", "build_fig", editable=True)
+            with st.container(key="build_sheet"):
+                result = chart(builder_figure(last.scene, last.positions, last.rotations,
+                                              last.paths, t("build.drawing"), t, look(),
+                                              builder.revision()),
+                               f"{last.scene.id}-drawing", "build_fig", editable=True)
             if problem:  # a drag now would drop what the tables hold: mend them first
                 st.caption(t("build.last_valid"))
             event = builder.moved(result.drag)

@@ -68,3 +68,20 @@ def test_a_comma_in_an_english_table_is_refused_not_read():
 def test_ticks_blank_is_false():
     rows = [{"follows_member": None}, {"follows_member": float("nan")}, {"follows_member": True}]
     assert frame_of("forces", rows, "en")["follows_member"].tolist() == [False, False, True]
+
+
+def test_a_point_typed_in_one_form_makes_its_checking_cells_stale():
+    """The builder redraws the points' table when a point is typed as two distances while
+    its along/left cells still say where it was (ui.builder.stale_forms), and not for a row
+    being typed (it would be lost)."""
+    from mechanisms.sketch import document, driver_values
+    from ui.builder import stale_forms
+
+    doc = template("four-bar")
+    rows = tables(doc)
+    assert not stale_forms(rows["extra"], doc)  # as the tables show it: nothing stale
+    row = dict(rows["extra"][0], form="distances", d1=0.2, d2=0.3, side="left")
+    edited = {**rows, "extra": [row]}
+    typed = document(edited, driver_values(doc), doc)
+    assert stale_forms([row], typed)  # along and left still say the old place
+    assert not stale_forms([row, {"member": None, "point": None}], typed)  # a row being typed

@@ -34,6 +34,9 @@ def test_moving_the_crank_and_adding_inertia_change_the_torque():
     at.slider(key="at").set_value(200.0).run()
     moved = metrics(at)[0]
     assert moved != before
+    assert at.toggle(key="inertia").value is False  # the lecture's example leaves it out
+    at.toggle(key="inertia").set_value(True).run()
+    assert metrics(at)[0] == moved  # no member has a mass yet
     typed(at, "m5", 3.0)
     typed(at, "rho5", 0.1).run()
     assert not at.exception

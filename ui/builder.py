@@ -19,12 +19,13 @@ from mechanisms import Scene, SceneError
 from mechanisms.link import PARAMETER, encode
 from mechanisms.loader import build_scene
 from mechanisms.messages import Text, text_of
-from mechanisms.sketch import add_point, drag, drawn, from_scene, snap, template
+from mechanisms.sketch import add_point, drag, drawn, from_scene, snap, tables, template
 from solvers.assembly import closures
 from solvers.diagnostics import Unsolvable, dead_zones, solve_instant, sweep_values
 from solvers.kinematics import GroupIssue, solve
 from solvers.structure import StructureError, decompose
 from ui.cache import BY_REPR
+from ui.editor_tables import is_number_column
 from ui.i18n import label_of
 from ui.scenes import link_choice
 
@@ -227,3 +228,13 @@ def closure_words(scene: Scene, group: str, found: list[dict[str, complex]]) -> 
                          y2=other[c].imag, side="left" if turn > 0 else "right", line=f"{p}→{q}")
     return words
 
+
+def stale_forms(rows: list[dict], doc: dict) -> bool:
+    """A member's point typed in one form (two distances, say) while its other forms' cells,
+    shown for checking, still say where it was. Only when every row is whole: a row being
+    typed is not in the document yet, and new tables would lose it."""
+    if any(r.get("member") is None or not r.get("point") for r in rows):
+        return False
+    fresh = {(r["member"], r["point"]): r for r in tables(doc)["extra"]}
+    return any(fresh.get((r["member"], r["point"]), r).get(c) != r.get(c)
+               for r in rows for c in r if is_number_column(c))

@@ -32,6 +32,16 @@ CSS = """
     > [data-testid="stElementContainer"] > [data-testid="stMetric"]) > [data-testid="stColumn"] {
     flex: 1 1 40% !important; min-width: 40% !important; width: auto !important; }
   [data-testid="stMetricValue"] { font-size: 1.6rem; }
+  /* the builder: its drawing held at the top while the tables scroll under it, so that an
+     edit, a drag or a flip is seen from where one types (the two columns' contents flow as
+     one, the drawing first, the tables next, the checks after) */
+  .st-key-build_bench [data-testid="stHorizontalBlock"] { flex-direction: column; }
+  .st-key-build_bench [data-testid="stHorizontalBlock"] > [data-testid="stColumn"],
+  .st-key-build_bench [data-testid="stHorizontalBlock"] > [data-testid="stColumn"]
+    > [data-testid="stVerticalBlock"] { display: contents; }
+  div:has(> .st-key-build_sheet) { position: sticky; top: 3.75rem; z-index: 5;
+    background: white; order: -2; box-shadow: 0 6px 6px -6px rgba(0, 0, 0, 0.3); }
+  div:has(> .st-key-build_tables) { order: -1; }
   [data-testid="stMainBlockContainer"] { padding-left: 0.75rem; padding-right: 0.75rem; }
   [data-testid="stMainBlockContainer"] h1 { font-size: 1.6rem; padding-top: 0.25rem; }
 }

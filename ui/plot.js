@@ -538,6 +538,13 @@ export default function (component) {
     let layout = fitted(gd, spec.figure.layout);
     if (spec.handle) {  // a sheet as tall as the screen's width allows, not the page's 600 px
       layout = { ...layout, height: Math.min(layout.height || 600, Math.max(320, gd.clientWidth + 100)) };
+    } else if (spec.editable && window.innerWidth <= 640) {  // the builder's drawing, held at
+      // the top of a phone's screen over the tables (ui/layout.py): half of it, given to
+      // the drawing (the legend and the title's size are the room a phone lacks)
+      const title = layout.title || {};
+      layout = { ...layout, height: Math.min(layout.height || 600, Math.round(0.5 * window.innerHeight)),
+                 showlegend: false, margin: { ...layout.margin, t: 36, b: 44 },
+                 title: { ...title, font: { ...(title.font || {}), size: 13 } } };
     }
     Plotly.react(gd, { ...spec.figure, layout, config })
       .then(() => fitLegend(gd))

@@ -1,8 +1,12 @@
-"""Practice by thumb (issue: a phone, task 3.1's plans, Serbian): two fingers zoom the sheet
-and a finger drags the tip, grabbed off its centre, to the exact place — ok at the paper's
-tolerance; a swipe beside the tip scrolls the page and leaves the sheet's view; after each
-check the step's prompt, its verdict and the sheet are on the screen; each step opens at
-its own view. Touches are CDP touch events in chromium's iPhone 13 profile."""
+"""By thumb, in chromium's iPhone 13 profile, in Serbian (touches are CDP touch events).
+
+Practice (task 3.1's plans): two fingers zoom the sheet and a finger drags the tip, grabbed
+off its centre, to the exact place — ok at the paper's tolerance; a swipe beside the tip
+scrolls the page and leaves the sheet's view; after each check the step's prompt, its
+verdict and the sheet are on the screen; each step opens at its own view.
+
+The builder: its drawing stays at the top of the screen while the tables scroll under it,
+so a typed length is seen redrawn from where it is typed."""
 
 from __future__ import annotations
 
@@ -12,6 +16,7 @@ from cli.practice import steps_for
 from mechanisms import load_preset
 
 from .test_browser import CHROMIUM, FLAGS, keep, settle, wait_idle
+from .test_builder_browser import open_tab, shapes, type_cell
 
 pytestmark = pytest.mark.browser
 
@@ -121,3 +126,27 @@ def test_a_student_practises_task_3_1_by_finger(app_url, phone, tmp_path):
         keep(shot)
         page.get_by_role("button", name="Sledeći korak").tap()
     assert page.locator("[data-testid='stException']").count() == 0
+
+
+def test_the_builders_drawing_stays_over_the_tables_being_typed(app_url, phone, tmp_path):
+    page = phone.new_page()
+    page.goto(f"{app_url}/builder?lang=sr")
+    settle(page)
+    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
+    open_tab(page, "Članovi", "naziv")
+    page.evaluate(f"""() => {{  // the table just under the drawing, as a student scrolls to it
+        const grid = document.querySelector("[data-testid='stDataFrame']").getBoundingClientRect();
+        const sheet = document.querySelector('.st-key-build_sheet').getBoundingClientRect();
+        {MAIN}.scrollTop += grid.top - sheet.bottom - 8; }}""")
+    page.wait_for_timeout(400)
+    before = shapes(page)
+    type_cell(page, "naziv", 1, 4, "0,35")  # the coupler's length, typed the Serbian way
+    drawn = shapes(page)
+    assert abs(abs(drawn["B"] - drawn["A"]) - 0.35) < 1e-9 and drawn != before
+    assert in_view(page, ".st-key-build_sheet")  # the drawing is where the student looks
+    grid = page.locator("[data-testid='stDataFrame']").first.bounding_box()
+    sheet = page.locator(".st-key-build_sheet").bounding_box()
+    assert grid["y"] >= sheet["y"] + sheet["height"] - 1 and grid["y"] < 664  # and the table
+    shot = tmp_path / "builder-phone-sr-typing.png"
+    page.screenshot(path=str(shot))
+    keep(shot)
