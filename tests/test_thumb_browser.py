@@ -16,7 +16,7 @@ from cli.practice import steps_for
 from mechanisms import load_preset
 
 from .test_browser import CHROMIUM, FLAGS, keep, settle, wait_idle
-from .test_builder_browser import open_tab, shapes, type_cell
+from .test_builder_browser import SHAPES, open_tab, shapes
 
 pytestmark = pytest.mark.browser
 
@@ -140,7 +140,22 @@ def test_the_builders_drawing_stays_over_the_tables_being_typed(app_url, phone, 
         {MAIN}.scrollTop += grid.top - sheet.bottom - 8; }}""")
     page.wait_for_timeout(400)
     before = shapes(page)
-    type_cell(page, "naziv", 1, 4, "0,35")  # the coupler's length, typed the Serbian way
+    grid = page.locator("[data-testid='stDataFrame']").first.bounding_box()
+    for arrows in (3, 4, 2):  # to the length cell from the one tapped (it holds 0,4)
+        page.mouse.click(grid["x"] + 70, grid["y"] + 35 + 35 + 17)  # the coupler's row
+        for _ in range(arrows):  # (arrows, not Home: a Home the grid does not take scrolls
+            page.keyboard.press("ArrowRight")  # the page)
+        page.keyboard.press("Enter")
+        page.wait_for_timeout(300)
+        if page.evaluate("() => document.activeElement && document.activeElement.value") == "0,4":
+            break
+        page.keyboard.press("Escape")
+    page.keyboard.press("Control+a")
+    page.keyboard.type("0,35", delay=60)  # the coupler's length, typed the Serbian way
+    page.keyboard.press("Enter")
+    page.wait_for_function(f"b => JSON.stringify(({SHAPES})()) !== JSON.stringify(b)",
+                           arg=page.evaluate(SHAPES), timeout=30_000)
+    wait_idle(page)
     drawn = shapes(page)
     assert abs(abs(drawn["B"] - drawn["A"]) - 0.35) < 1e-9 and drawn != before
     assert in_view(page, ".st-key-build_sheet")  # the drawing is where the student looks
