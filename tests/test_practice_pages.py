@@ -12,6 +12,7 @@ import pytest
 from cli.practice import steps_for
 from mechanisms import load_preset
 from ui.i18n import t
+from ui.practice import shown_unit
 
 from .test_pages import charts, page, typed
 
@@ -41,15 +42,16 @@ def _type(at, key: str, step, answer) -> None:
     """Type an answer into the step's form, as a person of the page's language writes
     numbers (0,35 in Serbian), and press Check."""
     lang = at.session_state["lang"]
+    factor = shown_unit(step)[1]  # the rotor's U in kg·mm, as its page writes it
     if step.kind == "vector":
         z = complex(answer)
-        typed(at, f"{key}_len_{step.id}", abs(z), lang)
+        typed(at, f"{key}_len_{step.id}", abs(z) * factor, lang)
         typed(at, f"{key}_ang_{step.id}", math.degrees(cmath.phase(z)), lang)
     elif step.kind == "point":
         typed(at, f"{key}_x_{step.id}", complex(answer).real, lang)
         typed(at, f"{key}_y_{step.id}", complex(answer).imag, lang)
     else:
-        typed(at, f"{key}_value_{step.id}", float(answer), lang)
+        typed(at, f"{key}_value_{step.id}", float(answer) * factor, lang)
     next(b for b in at.button if b.label == t("practice.check", lang)).click().run()
 
 
@@ -140,3 +142,11 @@ def test_a_scale_change_keeps_every_answer_and_another_instant_starts_over():
     at.slider(key="at").set_value(100.0).run()
     assert any(i.value == t("practice.restarted", "en") for i in at.info)
     assert not at.success
+
+
+def test_the_rotors_practice_speaks_the_pages_units():
+    """U in kg·mm and V in kg·mm², as the rotor page draws its polygons, with the sheet's scale."""
+    at = _open("pages/rotor_balancing.py", {"scene": "zbirka-7.1"}, "pr_balance", "en")
+    text = " ".join([*(m.value for m in at.markdown), *(c.value for c in at.caption)])
+    assert "[kg·mm²]" in text and "1 cm =" in text and "kg·mm²." in text
+    assert "kg·m²]" not in text.replace("kg·mm²]", "")

@@ -22,8 +22,15 @@ from ui.present import look
 
 PARTS = {"vector": "practice.part_vector", "point": "practice.part_point",
          "scalar": "practice.part_scalar"}
+# a step's SI unit as its page writes it: the rotor page draws U in kg·mm and V in kg·mm²
+SHOWN_UNITS = {"kg·m": ("kg·mm", 1e3), "kg·m²": ("kg·mm²", 1e6)}
 OUTCOMES = {"first": "practice.first", "later": "practice.later",
             "revealed": "practice.revealed", "open": "practice.open"}
+
+
+def shown_unit(step: Step) -> tuple[str, float]:
+    """The unit the page shows the step in, and its size in the step's SI unit (×)."""
+    return SHOWN_UNITS.get(step.unit, (step.unit, 1.0))
 
 
 def toggle(key: str) -> bool:
@@ -65,13 +72,14 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
     step = steps[index]
     with st.container(key=f"{key}_prompt"):  # what a check or a move brings to the screen's top
         st.markdown(t("practice.step", n=index + 1, of=len(steps), part=t(PARTS[step.kind]))
-                    + f" ${step.symbol}$ [{step.unit}]")
+                    + f" ${step.symbol}$ [{shown_unit(step)[0]}]")
         verdict = st.container()  # filled once the typed answer below has been checked
     if step.kind == "vector" and abs(complex(step.expected)) <= step.tolerance:
         st.info(t("practice.zero_step"), icon=":material/info:")  # (the tip stays on the tail)
     if drawable and step.kind != "scalar" and step.sheet:
         _drawing(steps, index, key, state, progress, title)
-        st.caption(t("practice.sheet_scale", scale=num(step.scale, 4), unit=step.unit))
+        unit, factor = shown_unit(step)
+        st.caption(t("practice.sheet_scale", scale=num(step.scale * factor, 4), unit=unit))
     st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
                else t("practice.rule_hidden"))
     _typing(step, key, progress)
@@ -107,12 +115,13 @@ def _typing(step: Step, key: str, progress: Progress) -> None:
     """The same answer typed: length and direction, a point's x and y, or a signed value
     (each read by ui.numbers: 0,35 or 0.35 on a Serbian page). A Check with a box empty or
     unreadable names that box and grades nothing."""
+    unit, factor = shown_unit(step)
     if step.kind == "vector":
-        fields = {"len": t("practice.length", unit=step.unit), "ang": t("practice.angle")}
+        fields = {"len": t("practice.length", unit=unit), "ang": t("practice.angle")}
     elif step.kind == "point":
         fields = {"x": "x [m]", "y": "y [m]"}
     else:
-        fields = {"value": t("practice.value", unit=step.unit)}
+        fields = {"value": t("practice.value", unit=unit)}
     with st.form(f"{key}_form_{step.id}", border=False):
         cols = st.columns(len(fields))
         values = [number_field(label, f"{key}_{name}_{step.id}", optional=True, where=col)
@@ -125,11 +134,11 @@ def _typing(step: Step, key: str, progress: Progress) -> None:
         if any(v is None for v in values):
             return
         if step.kind == "vector":
-            progress.give(step, polar(*values))
+            progress.give(step, polar(values[0] / factor, values[1]))
         elif step.kind == "point":
             progress.give(step, complex(*values))
         else:
-            progress.give(step, values[0])
+            progress.give(step, values[0] / factor)
     st.rerun()  # the verdict, with the step's prompt and sheet brought to the screen
 
 
@@ -145,13 +154,14 @@ def _feedback(step: Step, progress: Progress) -> None:
 
 
 def exact_text(step: Step) -> str:
-    """The exact answer as the student would write it."""
+    """The exact answer as the student would write it, in the page's unit."""
+    unit, factor = shown_unit(step)
     if step.kind == "scalar":
-        return f"{num(float(step.expected), 5)} {step.unit}"
+        return f"{num(float(step.expected) * factor, 5)} {unit}"
     z = complex(step.expected)
     if step.kind == "point":
         return f"({num(z.real, 5)}; {num(z.imag, 5)}) m"
-    return (f"{num(abs(z), 5)} {step.unit}, "
+    return (f"{num(abs(z) * factor, 5)} {unit}, "
             f"{num(math.degrees(math.atan2(z.imag, z.real)) % 360, 4)}°")
 
 
