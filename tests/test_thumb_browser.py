@@ -113,6 +113,17 @@ def test_a_student_practises_task_3_1_by_finger(app_url, phone, tmp_path):
             assert abs(tip_now(page) - exact) < step.tolerance / step.scale
             assert in_view(page, "[data-testid='stAlertContentSuccess']")
             assert in_view(page, ".st-key-pr_plans_prompt")
+        if n == 2:  # a coarser U_v keeps the answer and its verdict; the tip is redrawn
+            placed = tip_now(page)  # cm at 1 m/s a cm
+            box = page.locator(".st-key-num_pos_Uv input")
+            box.fill("2")
+            box.press("Enter")
+            page.wait_for_function("() => new URLSearchParams(location.search).get('Uv') === '2'",
+                                   timeout=30_000)
+            wait_idle(page)
+            assert page.locator("[data-testid='stAlertContentSuccess']").count() == 1
+            assert page.get_by_text(f"Korak {n + 1} od").count() == 1
+            assert abs(tip_now(page) - placed / 2) < 1e-9  # the same answer, 2 m/s a cm now
         if n == 0:  # a swipe beside the tip scrolls the page and leaves the sheet as it was
             before, scrolled = view(page), page.evaluate(f"() => {MAIN}.scrollTop")
             box = area(page)
