@@ -14,6 +14,8 @@ import json
 import sys
 from pathlib import Path
 
+from classes import store
+from classes.store import ClassError, NotSaved
 from exams import variants
 from exams.codes import DEFAULT_SPREAD, Settings
 from exams.moodle import moodle_xml
@@ -32,7 +34,7 @@ from solvers.gears import TrainError, solve_train
 from solvers.kinetostatics import analyse
 from solvers.structure import StructureError, decompose
 
-from . import practice
+from . import classes, practice
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -42,7 +44,10 @@ def main(argv: list[str] | None = None) -> int:
     except (SceneError, StructureError, TrainError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    except (Unsolvable, BalanceError) as exc:
+    except ClassError as exc:
+        print(f"error: {exc.args[0]}", file=sys.stderr)
+        return 2
+    except (Unsolvable, BalanceError, NotSaved) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 3
 
@@ -87,8 +92,12 @@ def _parser() -> argparse.ArgumentParser:
                                             "(plans, forces, lever)")
     p.add_argument("--answers", metavar="FILE", help='a JSON file {"answers": {"<step id>": '
                                                       '[x, y] or a number}} to grade')
+    p.add_argument("--class", dest="class_code", metavar="CODE",
+                   help="store each graded answer as a check of this class (with --student)")
+    p.add_argument("--student", metavar="ID", help="the student's id from `class join`")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.set_defaults(run=_practice)
+    classes.add(sub)
     p = sub.add_parser("link", help=f"the share parameter ({PARAMETER}=…) that carries a scene "
                                     "in any page's link")
     p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")
@@ -171,7 +180,13 @@ def _link(args) -> int:
 
 
 def _practice(args) -> int:
+    if bool(args.class_code) != bool(args.student) or (args.class_code and not args.answers):
+        raise SceneError("--class and --student go together, with --answers")
+    if args.class_code:
+        store.student(args.class_code, args.student)  # a wrong code or student: exit code 2
     data = practice.run(_load(args), args.method, args.at, args.answers)
+    if args.class_code:
+        classes.stored(data, args.class_code, args.student, practice.read_answers(args.answers))
     if args.json:
         return _print_json(data)
     if "steps" in data:

@@ -19,6 +19,7 @@ LAYERS = [
     ("cli",),  # the command line, on top of everything that computes
     ("app", "pages"),
     ("ui",),
+    ("classes",),
     ("exams",),
     ("figures",),
     ("reports",),
@@ -28,7 +29,7 @@ LAYERS = [
 ]
 # ``python -m solvers`` as documented: the one module nothing imports, handing over to cli.
 ENTRY_POINTS = {"solvers/__main__.py"}
-NO_BROWSER = {"mechanisms", "solvers", "methods", "reports", "exams", "cli"}  # no Streamlit
+NO_BROWSER = {"mechanisms", "solvers", "methods", "reports", "exams", "classes", "cli"}  # no Streamlit
 NO_DRAWING = NO_BROWSER - {"cli"}  # no Plotly either
 LONGEST = 120  # lines of one function or class
 

@@ -12,6 +12,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *ROOT.glob("figures/*.py"),
            ROOT / "methods" / "practice.py",  # (practice's hints, shared with the command line)
            *ROOT.glob("mechanisms/*.py"), *ROOT.glob("solvers/*.py"), *ROOT.glob("exams/*.py"),
+           *ROOT.glob("classes/*.py"),
            ROOT / "methods" / "plans.py", ROOT / "reports" / "fitting.py"]  # (their messages)
 
 
@@ -40,7 +41,7 @@ def used_keys() -> set[str]:
     keys = set(re.findall(r"""["']([a-z][a-z0-9_]*\.[A-Za-z0-9_.]+)["']""", text))
     rules = {f"scene.{rule}" for rule in re.findall(r'fail\([^()]*?, "(\w+)"', text)}
     places = set(re.findall(r'fail\("([^"]+)"', text))  # a scene file's keys: "driver.type"
-    files = {k for k in keys if k.endswith((".py", ".toml", ".js", ".json"))}
+    files = {k for k in keys if k.endswith((".py", ".toml", ".js", ".json", ".db"))}
     return (keys - places - files) | rules | message_families()
 
 

@@ -1,0 +1,294 @@
+"""The class store: classes, their students and every check a student makes, through
+SQLAlchemy — an SQLite file by default (nothing to install or start; WAL and a busy timeout,
+so several app processes on one machine share it), PostgreSQL where
+``MEHANIZMI_DATABASE_URL`` says so (a faculty's server behind nginx, deploy/). The schema is
+made and upgraded by Alembic (``classes/migrations``), never by ``create_all``.
+
+Students are pseudonymous: a random token (128 bits) and a nickname they chose; no name, no
+address, no browser string is stored. A class is read only with its lecturer key, kept as
+its SHA-256 (a stolen database does not open a class's results). Classes expire.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import secrets
+import time
+from dataclasses import dataclass
+from datetime import UTC, datetime, timedelta
+from functools import cache
+from pathlib import Path
+
+import sqlalchemy as sa
+from alembic import command
+from alembic.config import Config
+
+from exams.codes import CHECK_LETTERS
+from mechanisms.messages import Text
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA = Path(os.environ.get("MEHANIZMI_DATA", ROOT / "data"))  # the SQLite file's folder
+CODE_LETTERS = CHECK_LETTERS + "34679"  # the variant codes' unambiguous letters, and digits
+CODE_LENGTH = 6
+LIFETIME_DAYS = int(os.environ.get("MEHANIZMI_CLASS_DAYS", "30"))
+NICKNAME_MAX = 40  # characters
+ANSWER_MAX = 200  # characters of an answer's JSON
+PER_SECOND = 5  # checks a student may send in a second; more are slowed, not refused
+METHODS = ("compass", "plans", "forces", "lever", "willis", "balance")
+
+metadata = sa.MetaData()
+classes = sa.Table(
+    "classes", metadata,
+    sa.Column("id", sa.Integer, primary_key=True),
+    sa.Column("code", sa.String(CODE_LENGTH), nullable=False, unique=True),
+    sa.Column("key_hash", sa.String(64), nullable=False),
+    sa.Column("scene", sa.Text, nullable=False),  # a preset id or a link's s= text
+    sa.Column("method", sa.String(16), nullable=False),
+    sa.Column("at", sa.Float),  # φ₂ in degrees (or s in m); None: the scene's own
+    sa.Column("variants", sa.String(64)),  # a variant set's code (exams.codes), or None
+    sa.Column("created", sa.DateTime(timezone=True), nullable=False),
+    sa.Column("expires", sa.DateTime(timezone=True), nullable=False, index=True))
+students = sa.Table(
+    "students", metadata,
+    sa.Column("id", sa.String(32), primary_key=True),  # the token in the student's link
+    sa.Column("class_id", sa.Integer, sa.ForeignKey(classes.c.id, ondelete="CASCADE"),
+              nullable=False, index=True),
+    sa.Column("nickname", sa.String(NICKNAME_MAX), nullable=False),
+    sa.Column("variant", sa.Integer),  # the index of their variant in the class's set
+    sa.Column("joined", sa.DateTime(timezone=True), nullable=False))
+checks = sa.Table(
+    "checks", metadata,
+    sa.Column("id", sa.Integer, primary_key=True),
+    sa.Column("class_id", sa.Integer, sa.ForeignKey(classes.c.id, ondelete="CASCADE"),
+              nullable=False, index=True),
+    sa.Column("student", sa.String(32), sa.ForeignKey(students.c.id, ondelete="CASCADE"),
+              nullable=False),
+    sa.Column("step", sa.String(64), nullable=False),
+    sa.Column("answer", sa.String(ANSWER_MAX), nullable=False),  # JSON: [x, y], a number, null
+    sa.Column("diagnosis", sa.String(16), nullable=False),
+    sa.Column("try", sa.Integer, nullable=False),
+    sa.Column("time", sa.DateTime(timezone=True), nullable=False),
+    sa.Column("variant", sa.String(64)),
+    sa.UniqueConstraint("student", "step", "try"))  # a check sent again is stored once
+
+
+class ClassError(ValueError):
+    """A wrong, expired or mistyped code or key, an unknown student: ``args[0]`` is a Text."""
+
+
+class NotSaved(RuntimeError):
+    """The store could not take a check: the student is told, and no verdict is shown."""
+
+
+@dataclass(frozen=True)
+class Class:
+    id: int
+    code: str
+    scene: str
+    method: str
+    at: float | None
+    variants: str | None
+    expires: datetime
+
+
+def database_url() -> str:
+    """``MEHANIZMI_DATABASE_URL``, or the SQLite file in the data folder."""
+    url = os.environ.get("MEHANIZMI_DATABASE_URL")
+    if url:
+        return url
+    DATA.mkdir(parents=True, exist_ok=True)
+    return f"sqlite:///{DATA / 'mehanizmi.db'}"
+
+
+@cache
+def engine(url: str | None = None) -> sa.Engine:
+    """One engine per URL and process, its schema upgraded on first use."""
+    url = url or database_url()
+    made = sa.create_engine(url, pool_pre_ping=True)
+    if made.dialect.name == "sqlite":
+        @sa.event.listens_for(made, "connect")
+        def _sqlite(connection, _record) -> None:  # shared by processes on one machine
+            connection.execute("PRAGMA journal_mode=WAL")
+            connection.execute("PRAGMA busy_timeout=10000")
+            connection.execute("PRAGMA foreign_keys=ON")
+    migrate(made)
+    return made
+
+
+def migrate(made: sa.Engine) -> None:
+    """Bring the schema to the newest migration (``classes/migrations``)."""
+    config = Config()
+    config.set_main_option("script_location", str(Path(__file__).with_name("migrations")))
+    with made.begin() as connection:
+        config.attributes["connection"] = connection
+        command.upgrade(config, "head")
+
+
+def _now() -> datetime:
+    return datetime.now(UTC)
+
+
+def _hash(key: str) -> str:
+    return hashlib.sha256(key.encode()).hexdigest()
+
+
+def _aware(moment: datetime) -> datetime:
+    return moment if moment.tzinfo else moment.replace(tzinfo=UTC)  # SQLite keeps no zone
+
+
+def create(scene: str, method: str, at: float | None = None, variants: str | None = None,
+           days: int = LIFETIME_DAYS, url: str | None = None) -> tuple[str, str]:
+    """A new class: (join code, lecturer key). The key is shown once; only its hash stays."""
+    if method not in METHODS:
+        raise ClassError(Text("class.no_method", method=method, methods=", ".join(METHODS)))
+    key = secrets.token_urlsafe(16)
+    with engine(url).begin() as db:
+        for _ in range(20):
+            code = "".join(secrets.choice(CODE_LETTERS) for _ in range(CODE_LENGTH))
+            if db.execute(sa.select(classes.c.id).where(classes.c.code == code)).first() is None:
+                break
+        db.execute(classes.insert().values(
+            code=code, key_hash=_hash(key), scene=scene, method=method, at=at,
+            variants=variants, created=_now(), expires=_now() + timedelta(days=days)))
+    return code, key
+
+
+def find(code: str, url: str | None = None) -> Class:
+    """The class a code names (typed in any case, spaces ignored); ClassError if none or
+    expired."""
+    code = "".join(code.split()).upper()
+    with engine(url).connect() as db:
+        row = db.execute(sa.select(classes).where(classes.c.code == code)).first()
+    if row is None:
+        raise ClassError(Text("class.no_code", code=code))
+    if _aware(row.expires) < _now():
+        raise ClassError(Text("class.expired", code=code))
+    return Class(row.id, row.code, row.scene, row.method, row.at, row.variants, _aware(row.expires))
+
+
+def opened(code: str, key: str, url: str | None = None) -> Class:
+    """The class, for its lecturer: ClassError unless ``key`` is its key."""
+    found = find(code, url)
+    with engine(url).connect() as db:
+        stored = db.execute(sa.select(classes.c.key_hash).where(classes.c.id == found.id)).scalar()
+    if not secrets.compare_digest(stored, _hash(key.strip())):
+        raise ClassError(Text("class.wrong_key", code=found.code))
+    return found
+
+
+def nickname_of(text: str) -> str:
+    """A nickname as stored: printable characters, spaces squeezed, at most NICKNAME_MAX."""
+    cleaned = " ".join("".join(c for c in text if c.isprintable()).split())
+    return cleaned[:NICKNAME_MAX] or "student"
+
+
+def join(code: str, nickname: str = "", url: str | None = None) -> str:
+    """A student joins: their token. In a class of variants each gets the next one."""
+    found = find(code, url)
+    token = secrets.token_urlsafe(16)
+    with engine(url).begin() as db:
+        count = db.execute(sa.select(sa.func.count()).select_from(students)
+                           .where(students.c.class_id == found.id)).scalar()
+        db.execute(students.insert().values(
+            id=token, class_id=found.id, nickname=nickname_of(nickname or f"student {count + 1}"),
+            variant=count + 1 if found.variants else None, joined=_now()))
+    return token
+
+
+def student(code: str, token: str, url: str | None = None) -> dict:
+    """A student of this class (ClassError for another class's or an unknown token)."""
+    found = find(code, url)
+    with engine(url).connect() as db:
+        row = db.execute(sa.select(students).where(students.c.id == token,
+                                                   students.c.class_id == found.id)).first()
+    if row is None:
+        raise ClassError(Text("class.no_student", code=found.code))
+    return {"student": row.id, "nickname": row.nickname, "variant": row.variant}
+
+
+def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: int,
+           variant: str | None = None, url: str | None = None) -> None:
+    """Store one check, durably, before its verdict is shown. The same check sent again
+    (after "not saved") is stored once; a student sending more than PER_SECOND checks a
+    second waits. NotSaved when the store cannot take it."""
+    text = json.dumps(answer)
+    if len(text) > ANSWER_MAX or len(step) > 64:
+        raise ClassError(Text("class.too_long"))
+    try:
+        found, who = find(code, url), student(code, token, url)
+        made = engine(url)
+        while _recent(made, who["student"]) >= PER_SECOND:
+            time.sleep(0.2)  # a machine, not a person: slowed
+        values = {"class_id": found.id, "student": who["student"], "step": step,
+                  "answer": text, "diagnosis": diagnosis, "try": attempt, "time": _now(),
+                  "variant": variant}
+        with made.begin() as db:
+            seen = db.execute(sa.select(checks.c.id).where(
+                checks.c.student == who["student"], checks.c.step == step,
+                checks.c["try"] == attempt)).first()
+            if seen is None:
+                db.execute(checks.insert().values(**values))
+    except sa.exc.IntegrityError:
+        return  # the same check, stored by its first sending meanwhile
+    except sa.exc.SQLAlchemyError as exc:
+        raise NotSaved(str(exc)) from None
+
+
+def _recent(made: sa.Engine, token: str) -> int:
+    since = _now() - timedelta(seconds=1)
+    with made.connect() as db:
+        return db.execute(sa.select(sa.func.count()).select_from(checks).where(
+            checks.c.student == token, checks.c.time >= since)).scalar()
+
+
+def tries(code: str, token: str, url: str | None = None) -> list[dict]:
+    """A student's checks, oldest first: what brings their progress back on a reload."""
+    student(code, token, url)
+    with engine(url).connect() as db:
+        rows = db.execute(sa.select(checks).where(checks.c.student == token)
+                          .order_by(checks.c.time, checks.c.id)).all()
+    return [_row(r, "") for r in rows]
+
+
+def export(code: str, key: str, url: str | None = None) -> list[dict]:
+    """Every try of the class, for its lecturer: student, nickname, step, answer,
+    diagnosis, try, time, variant."""
+    found = opened(code, key, url)
+    with engine(url).connect() as db:
+        rows = db.execute(sa.select(checks, students.c.nickname)
+                          .join(students, students.c.id == checks.c.student)
+                          .where(checks.c.class_id == found.id)
+                          .order_by(checks.c.time, checks.c.id)).all()
+    return [_row(r, r.nickname) for r in rows]
+
+
+def _row(r, nickname: str) -> dict:
+    return {"student": r.student, "nickname": nickname, "step": r.step,
+            "answer": json.loads(r.answer), "diagnosis": r.diagnosis, "try": r._mapping["try"],
+            "time": _aware(r.time).isoformat(), "variant": r.variant}
+
+
+def delete(code: str, key: str, url: str | None = None) -> None:
+    """The class and everything stored of it, at once (its lecturer's key)."""
+    found = opened(code, key, url)
+    with engine(url).begin() as db:
+        _remove(db, sa.select(classes.c.id).where(classes.c.id == found.id))
+
+
+def purge(url: str | None = None, now: datetime | None = None) -> int:
+    """Remove the expired classes and their students and checks: how many classes."""
+    now = now or _now()
+    with engine(url).begin() as db:
+        expired = db.execute(sa.select(classes.c.id).where(classes.c.expires < now)).scalars().all()
+        if expired:
+            _remove(db, sa.select(classes.c.id).where(classes.c.id.in_(expired)))
+    return len(expired)
+
+
+def _remove(db, which) -> None:
+    ids = db.execute(which).scalars().all()
+    db.execute(checks.delete().where(checks.c.class_id.in_(ids)))
+    db.execute(students.delete().where(students.c.class_id.in_(ids)))
+    db.execute(classes.delete().where(classes.c.id.in_(ids)))

@@ -1,0 +1,98 @@
+"""``python -m solvers class create | join | export | delete | purge``: a class on the same
+store as the pages (classes/store.py; MEHANIZMI_DATABASE_URL or the SQLite file), so that a
+lecturer scripts a class and a student hands in answers from a file (``practice … --class
+CODE --student ID``)."""
+
+from __future__ import annotations
+
+import csv
+import json
+import sys
+
+from classes import store
+from mechanisms import load_preset
+from mechanisms.link import PARAMETER
+
+FIELDS = ("student", "nickname", "step", "answer", "diagnosis", "try", "time", "variant")
+
+
+def add(sub) -> None:
+    """The ``class`` command and its subcommands."""
+    p = sub.add_parser("class", help="a lecturer's class on the store: create, join, export, "
+                                     "delete, purge (docs/classes.md)")
+    verbs = p.add_subparsers(dest="verb", required=True)
+    v = verbs.add_parser("create", help="a new class: its join code and the lecturer's key")
+    v.add_argument("scene", help="a preset id, or a builder link's s= text")
+    v.add_argument("--method", required=True, choices=store.METHODS)
+    v.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres")
+    v.add_argument("--variants", metavar="SET", help="a variant set's code (3.1-S42): each "
+                                                     "student who joins gets the next variant")
+    v.add_argument("--json", action="store_true")
+    v.set_defaults(run=_create)
+    v = verbs.add_parser("join", help="join a class by its code: the student's id")
+    v.add_argument("code")
+    v.add_argument("--nickname", default="")
+    v.add_argument("--json", action="store_true")
+    v.set_defaults(run=_join)
+    v = verbs.add_parser("export", help="every try of the class (its lecturer's key)")
+    v.add_argument("code")
+    v.add_argument("--key", required=True)
+    v.add_argument("--format", choices=("csv", "jsonl"), default="jsonl")
+    v.set_defaults(run=_export)
+    v = verbs.add_parser("delete", help="the class and all it stored, at once")
+    v.add_argument("code")
+    v.add_argument("--key", required=True)
+    v.set_defaults(run=_delete)
+    v = verbs.add_parser("purge", help="remove the expired classes")
+    v.set_defaults(run=_purge)
+
+
+def _create(args) -> int:
+    if not args.scene.startswith(f"{PARAMETER}="):
+        load_preset(args.scene)  # an unknown preset: SceneError, exit code 2
+    code, key = store.create(args.scene, args.method, args.at, args.variants)
+    join = f"/class?join={code}"
+    if args.json:
+        print(json.dumps({"code": code, "key": key, "join": join}))
+    else:
+        print(f"code: {code}\nkey (keep it; shown once): {key}\njoin: {join}")
+    return 0
+
+
+def _join(args) -> int:
+    token = store.join(args.code, args.nickname)
+    print(json.dumps({"student": token}) if args.json else token)
+    return 0
+
+
+def _export(args) -> int:
+    rows = store.export(args.code, args.key)
+    if args.format == "jsonl":
+        for row in rows:
+            print(json.dumps(row, ensure_ascii=False))
+        return 0
+    writer = csv.DictWriter(sys.stdout, FIELDS)
+    writer.writeheader()
+    writer.writerows({**row, "answer": json.dumps(row["answer"])} for row in rows)
+    return 0
+
+
+def _delete(args) -> int:
+    store.delete(args.code, args.key)
+    print(f"deleted {args.code.upper()}")
+    return 0
+
+
+def _purge(args) -> int:
+    print(f"purged {store.purge()} expired classes")
+    return 0
+
+
+def stored(data: dict, code: str, token: str, answers: dict) -> None:
+    """A graded answers file's checks, stored as the student's (the first try of each step
+    answered)."""
+    for result in data["results"]:
+        if result["id"] in answers:
+            store.record(code, token, result["id"], answers[result["id"]], result["diagnosis"],
+                         1)
+

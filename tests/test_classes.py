@@ -1,0 +1,218 @@
+"""The class store (classes/store.py), run twice: on an SQLite file and on a real PostgreSQL
+server that these tests start in a temporary folder (Debian's ``postgresql``, installed by
+scripts/test.sh; ``initdb`` and ``pg_ctl`` on a free port as the ``postgres`` user)."""
+
+from __future__ import annotations
+
+import json
+import multiprocessing
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from datetime import UTC, datetime, timedelta
+from pathlib import Path
+
+import pytest
+import sqlalchemy as sa
+
+from classes import store
+from deploy.client import free_port
+
+ROOT = Path(__file__).resolve().parents[1]
+PG_BIN = next(iter(sorted(Path("/usr/lib/postgresql").glob("*/bin"))), None) \
+    if Path("/usr/lib/postgresql").exists() else None
+
+
+class Postgres:
+    """A PostgreSQL server of our own in a temporary folder, on a free port."""
+
+    def __init__(self):
+        self.dir = Path(tempfile.mkdtemp(prefix="mz-pg-"))
+        self.port = free_port()
+        self.as_user = [] if os.getuid() != 0 else ["runuser", "-u", "postgres", "--"]
+        if self.as_user:
+            shutil.chown(self.dir, "postgres")
+        self.run("initdb", "-D", str(self.dir / "data"), "-A", "trust", "-U", "postgres")
+        self.start()
+        self.url = f"postgresql+psycopg://postgres@127.0.0.1:{self.port}/postgres"
+
+    def run(self, tool: str, *args: str) -> None:
+        subprocess.run([*self.as_user, str(PG_BIN / tool), *args], check=True,
+                       capture_output=True)
+
+    def start(self) -> None:
+        self.run("pg_ctl", "-D", str(self.dir / "data"), "-o",
+                 f"-p {self.port} -k {self.dir} -c listen_addresses=127.0.0.1", "-w", "start",
+                 "-l", str(self.dir / "log"))
+
+    def stop(self) -> None:
+        self.run("pg_ctl", "-D", str(self.dir / "data"), "-m", "fast", "-w", "stop")
+
+
+@pytest.fixture(scope="session")
+def postgres():
+    if PG_BIN is None:
+        if os.environ.get("CI"):
+            raise RuntimeError("PostgreSQL is missing in CI: scripts/test.sh must install it")
+        pytest.skip("Debian's postgresql is not installed (scripts/test.sh installs it)")
+    server = Postgres()
+    yield server
+    server.stop()
+    shutil.rmtree(server.dir, ignore_errors=True)
+
+
+@pytest.fixture(params=["sqlite", "postgresql"])
+def url(request, tmp_path):
+    if request.param == "sqlite":
+        return f"sqlite:///{tmp_path / 'classes.db'}"
+    return request.getfixturevalue("postgres").url
+
+
+def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    assert len(code) == 6 and set(code) <= set(store.CODE_LETTERS) and len(key) >= 22
+    ana, ben = store.join(code.lower(), "Ana", url=url), store.join(f" {code} ", url=url)
+    store.record(code, ana, "v.a-b", [0.19, -3.09], "sense", 1, url=url)
+    store.record(code, ana, "v.a-b", [-0.19, 3.09], "ok", 2, url=url)
+    store.record(code, ana, "v.a-b", [-0.19, 3.09], "ok", 2, url=url)  # sent again: once
+    store.record(code, ben, "v.a-b", 3.1, "wrong", 1, url=url)
+    assert [(t["step"], t["diagnosis"], t["try"]) for t in store.tries(code, ana, url=url)] == [
+        ("v.a-b", "sense", 1), ("v.a-b", "ok", 2)]
+    rows = store.export(code, key, url=url)
+    assert len(rows) == 3 and set(rows[0]) == {"student", "nickname", "step", "answer",
+                                               "diagnosis", "try", "time", "variant"}
+    assert {r["nickname"] for r in rows} == {"Ana", "student 2"}
+    assert rows[0]["answer"] == [0.19, -3.09]
+    with store.engine(url).connect() as db:  # the schema came from the migrations
+        assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0001"
+
+
+def test_wrong_codes_keys_and_students_are_refused_in_words(url):
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    other, _ = store.create("zbirka-3.1", "plans", url=url)
+    stranger = store.join(other, url=url)
+    cases = [(lambda: store.find("ABCDEF" if code != "ABCDEF" else "ACDEFH", url=url), "no_code"),
+             (lambda: store.export(code, key + "x", url=url), "wrong_key"),
+             (lambda: store.record(code, stranger, "v.b", 1.0, "ok", 1, url=url), "no_student"),
+             (lambda: store.create("zbirka-3.1", "dance", url=url), "no_method")]
+    for call, said in cases:
+        with pytest.raises(store.ClassError) as refused:
+            call()
+        assert refused.value.args[0].key == f"class.{said}"
+    assert store.export(code, key, url=url) == []  # nothing was written as another student
+
+
+def test_a_class_expires_is_purged_and_its_lecturer_deletes_it_at_once(url):
+    old, _ = store.create("zbirka-3.1", "plans", days=-1, url=url)
+    with pytest.raises(store.ClassError) as refused:
+        store.join(old, url=url)
+    assert refused.value.args[0].key == "class.expired"
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    store.record(code, store.join(code, url=url), "v.b", 1.0, "ok", 1, url=url)
+    assert store.purge(url=url) >= 1
+    with pytest.raises(store.ClassError):
+        store.find(old, url=url)
+    live = store.find(code, url=url).id  # a live class stays
+    store.delete(code, key, url=url)
+    with pytest.raises(store.ClassError):
+        store.find(code, url=url)
+    with store.engine(url).connect() as db:  # and nothing of it is left
+        for table in ("checks", "students"):
+            assert db.execute(sa.text(f"select count(*) from {table} where class_id = :c"),
+                              {"c": live}).scalar() == 0
+
+
+@pytest.mark.parametrize("nickname", ["<script>alert(1)</script>", "x" * 10_000,
+                                      "a\x00b\x1b[31mc\n", "'; DROP TABLE checks; --"])
+def test_hostile_nicknames_are_stored_as_bounded_text(url, nickname):
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    token = store.join(code, nickname, url=url)
+    stored = store.student(code, token, url=url)["nickname"]
+    assert len(stored) <= store.NICKNAME_MAX and stored.isprintable()
+    assert stored == nickname[:store.NICKNAME_MAX] or "\x00" in nickname
+    store.record(code, token, "v.b", 1.0, "ok", 1, url=url)
+    assert store.export(code, key, url=url)[0]["nickname"] == stored  # the table is there
+    with pytest.raises(store.ClassError):
+        store.record(code, token, "v.b", "9" * 500, "ok", 2, url=url)  # an answer too long
+
+
+def _write(args) -> None:
+    url, code, token, first = args
+    for k in range(first, first + 25):
+        store.record(code, token, f"step.{k}", float(k), "ok", 1, url=url)
+
+
+def test_two_processes_write_to_one_class_at_once_and_nothing_is_lost(url):
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    students = [store.join(code, url=url) for _ in range(2)]
+    with multiprocessing.get_context("spawn").Pool(2) as pool:
+        pool.map(_write, [(url, code, students[0], 0), (url, code, students[1], 0)])
+    rows = store.export(code, key, url=url)
+    assert len(rows) == 50
+    assert len({(r["student"], r["step"], r["try"]) for r in rows}) == 50
+
+
+def test_a_student_faster_than_a_person_is_slowed_not_refused(url):
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    token = store.join(code, url=url)
+    started = time.perf_counter()
+    for k in range(store.PER_SECOND + 3):
+        store.record(code, token, f"step.{k}", 1.0, "ok", 1, url=url)
+    assert time.perf_counter() - started > 0.5  # the sixth check waited for the second
+    assert len(store.export(code, key, url=url)) == store.PER_SECOND + 3
+
+
+def test_with_the_database_stopped_a_check_is_not_saved_and_later_stored_once(postgres):
+    url = postgres.url
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    token = store.join(code, url=url)
+    postgres.stop()
+    try:
+        with pytest.raises(store.NotSaved):
+            store.record(code, token, "v.b", [0.0, 3.1], "ok", 1, url=url)
+    finally:
+        postgres.start()
+    store.record(code, token, "v.b", [0.0, 3.1], "ok", 1, url=url)
+    store.record(code, token, "v.b", [0.0, 3.1], "ok", 1, url=url)  # the student's retry
+    assert [r["step"] for r in store.export(code, key, url=url)] == ["v.b"]
+
+
+def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
+    env = {**os.environ, "MEHANIZMI_DATABASE_URL": f"sqlite:///{tmp_path / 'cli.db'}"}
+
+    def cli(*args: str) -> subprocess.CompletedProcess:
+        return subprocess.run([sys.executable, "-m", "solvers", *args], cwd=ROOT, env=env,
+                              capture_output=True, text=True)
+
+    made = json.loads(cli("class", "create", "zbirka-3.1", "--method", "plans", "--json").stdout)
+    assert set(made) == {"code", "key", "join"} and made["join"].endswith(made["code"])
+    student = json.loads(cli("class", "join", made["code"], "--nickname", "Ana",
+                             "--json").stdout)["student"]
+    answers = tmp_path / "answers.json"
+    answers.write_text(json.dumps({"answers": {"v.a-b": [0.19357, -3.09395]}}))
+    done = cli("practice", "zbirka-3.1", "--method", "plans", "--answers", str(answers),
+               "--class", made["code"], "--student", student)
+    assert done.returncode == 0, done.stderr
+    lines = cli("class", "export", made["code"], "--key", made["key"]).stdout.splitlines()
+    assert [json.loads(line)["diagnosis"] for line in lines] == ["sense"]
+    assert "v.a-b" in cli("class", "export", made["code"], "--key", made["key"], "--format",
+                          "csv").stdout
+    for args in (("class", "export", made["code"], "--key", "nope"),
+                 ("class", "join", "ZZZZZZ"),
+                 ("practice", "zbirka-3.1", "--method", "plans", "--answers", str(answers),
+                  "--class", made["code"], "--student", "someone-else")):
+        wrong = cli(*args)
+        assert wrong.returncode == 2 and wrong.stderr.startswith("error: ") and \
+            "Traceback" not in wrong.stderr
+    assert cli("class", "delete", made["code"], "--key", made["key"]).returncode == 0
+    assert "purged 0" in cli("class", "purge").stdout
+
+
+def test_a_check_time_is_when_it_was_stored(url):
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    store.record(code, store.join(code, url=url), "v.b", 1.0, "ok", 1, url=url)
+    (row,) = store.export(code, key, url=url)
+    assert abs(datetime.fromisoformat(row["time"]) - datetime.now(UTC)) < timedelta(minutes=1)
