@@ -2,7 +2,8 @@
 
 import streamlit as st
 
-from ui.chapters import BUILDER, CHAPTERS, VARIANTS
+from ui.chapters import BUILDER, CHAPTERS, CLASSROOM, VARIANTS
+from ui.classroom import sidebar_join
 from ui.firstpaint import begin_run, end_run
 from ui.i18n import current, language_picker, t
 from ui.layout import frame_css
@@ -12,7 +13,7 @@ from ui.present import projector_switch
 def home() -> None:
     st.title("Mehanizmi")
     st.write(t("app.intro"))
-    for chapter in (BUILDER, *CHAPTERS, VARIANTS):
+    for chapter in (BUILDER, *CHAPTERS, VARIANTS, CLASSROOM):
         with st.container(border=True):
             st.page_link(chapter.file, label=t(chapter.title), icon=chapter.icon)
             st.write(t(chapter.summary))
@@ -32,6 +33,8 @@ def navigation_pages() -> list[st.Page]:
                   for c in (*CHAPTERS, BUILDER, VARIANTS)]
         pages.append(st.Page("pages/textbook_check.py", title=t("check.title"),
                              icon=":material/fact_check:"))
+        pages.append(st.Page(CLASSROOM.file, title=t(CLASSROOM.title), icon=CLASSROOM.icon,
+                             url_path="class"))
         kept = st.session_state[PAGES] = (current(), pages)
     return kept[1]
 
@@ -40,6 +43,7 @@ def navigation_pages() -> list[st.Page]:
 # which fails in a room without internet and tells a third party of every visit
 st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide")
 language_picker()
+sidebar_join()
 projector_switch()
 frame_css()
 page = st.navigation(navigation_pages())

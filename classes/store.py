@@ -102,10 +102,14 @@ def database_url() -> str:
     return f"sqlite:///{DATA / 'mehanizmi.db'}"
 
 
-@cache
 def engine(url: str | None = None) -> sa.Engine:
+    """The store's engine for ``url`` (default: ``database_url()``, read each time)."""
+    return _engine(url or database_url())
+
+
+@cache
+def _engine(url: str) -> sa.Engine:
     """One engine per URL and process, its schema upgraded on first use."""
-    url = url or database_url()
     made = sa.create_engine(url, pool_pre_ping=True)
     if made.dialect.name == "sqlite":
         @sa.event.listens_for(made, "connect")

@@ -22,6 +22,7 @@ def message_families() -> set[str]:
     from mechanisms import limits
     from mechanisms.loader import TOML_REASONS
     from solvers.diagnostics import WHY_OPEN
+    from classes.store import METHODS
     from ui.numbers import REASONS
     gears = (ROOT / "mechanisms" / "gears.py").read_text()
     return ({f"scene.lists.{what}" for _, what, _ in (*limits.LINKAGE, *limits.GEARS,
@@ -30,6 +31,7 @@ def message_families() -> set[str]:
                 r'_array\((?:[^()]|\([^()]*\))*?"(\w+)"\)', gears)}
             | {f"why_open.{kind}" for kind in (*WHY_OPEN, "other")}
             | {f"num.{reason}" for reason in REASONS}
+            | {f"class.method_{method}" for method in METHODS}
             | {f"toml.{key}" for key in (*TOML_REASONS.values(), "other")})
 
 

@@ -15,6 +15,7 @@ import streamlit as st
 from figures.plans import plain
 from figures.practice import practice_figure
 from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, polar
+from ui import classroom
 from ui.export import chart
 from ui.i18n import num, t
 from ui.numbers import Refused, number_field, refusal
@@ -45,15 +46,16 @@ def hint(step: Step, verdict: Verdict) -> str:
     return " ".join(t(key, **values) for key in hint_keys(step, verdict))
 
 
-def _state(key: str, steps: list[Step]) -> dict:
+def _state(key: str, steps: list[Step], seated: tuple[str, str] | None) -> dict:
     """This page's practice run. Answers and tips are kept in SI units, so a change of scale
     or of language keeps them (the sheet redraws them at the new scale); another scene or
     instant (other exact values) starts a new run, and the page says so."""
-    signature = tuple((s.id, str(s.expected)) for s in steps)
+    signature = (tuple((s.id, str(s.expected)) for s in steps), seated)
     state = st.session_state.get(f"{key}_state")
     if state is None or state["signature"] != signature:
         restarted = state is not None and bool(state["progress"].answers)
-        state = {"signature": signature, "progress": Progress.start(), "index": 0,
+        progress = classroom.resumed(seated, steps) if seated else Progress.start()
+        state = {"signature": signature, "progress": progress, "index": 0, "seat": seated,
                  "tips": {}, "revision": 0, "restarted": restarted}
         st.session_state[f"{key}_state"] = state
     return state
@@ -64,7 +66,7 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
     if not steps:
         st.info(t("practice.no_steps"))
         return
-    state = _state(key, steps)
+    state = _state(key, steps, classroom.seat(key))
     if state.pop("restarted", False):
         st.info(t("practice.restarted"), icon=":material/restart_alt:")
     progress: Progress = state["progress"]
@@ -82,8 +84,9 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
         st.caption(t("practice.sheet_scale", scale=num(step.scale * factor, 4), unit=unit))
     st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
                else t("practice.rule_hidden"))
-    _typing(step, key, progress)
+    _typing(step, key, state)
     with verdict:
+        classroom.not_saved()
         _feedback(step, progress)
     _moves(steps, index, key, state, progress)
     if all(progress.done(s) for s in steps):
@@ -106,12 +109,13 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
     if drag and drag.get("point") == "tip":
         at = complex(float(drag["x"]), float(drag["y"])) * step.scale
         state["tips"][step.id] = at
-        progress.give(step, at - step.tail if step.kind == "vector" else at)
+        classroom.give(state["seat"], progress, step,
+                       at - step.tail if step.kind == "vector" else at)
         state["revision"] += 1
         st.rerun()
 
 
-def _typing(step: Step, key: str, progress: Progress) -> None:
+def _typing(step: Step, key: str, state: dict) -> None:
     """The same answer typed: length and direction, a point's x and y, or a signed value
     (each read by ui.numbers: 0,35 or 0.35 on a Serbian page). A Check with a box empty or
     unreadable names that box and grades nothing."""
@@ -134,11 +138,12 @@ def _typing(step: Step, key: str, progress: Progress) -> None:
         if any(v is None for v in values):
             return
         if step.kind == "vector":
-            progress.give(step, polar(values[0] / factor, values[1]))
+            answer = polar(values[0] / factor, values[1])
         elif step.kind == "point":
-            progress.give(step, complex(*values))
+            answer = complex(*values)
         else:
-            progress.give(step, values[0] / factor)
+            answer = values[0] / factor
+        classroom.give(state["seat"], state["progress"], step, answer)
     st.rerun()  # the verdict, with the step's prompt and sheet brought to the screen
 
 

@@ -1,0 +1,138 @@
+"""A class (Čas): a lecturer starts one — a scene, a method, an instant — and gets a join
+code, a link and a QR code to project, and a secret link to the results; a student joins
+by the code from a phone, with a nickname, and practises on the method's page, every check
+stored (classes.store, docs/classes.md)."""
+
+from __future__ import annotations
+
+import json
+
+import pandas as pd
+import segno
+import streamlit as st
+
+from classes import store
+from classes.store import ClassError
+from exams.codes import code as variant_code
+from exams.codes import parse
+from mechanisms import SceneError
+from mechanisms.link import PARAMETER
+from ui.chapters import CLASSROOM
+from ui.classroom import METHODS
+from ui.i18n import current, message, t
+from ui.numbers import number_field
+from ui.scenes import preset_titles
+
+KINDS = {"compass": "linkage", "plans": "linkage", "forces": "linkage", "lever": "linkage",
+         "willis": "gears", "balance": "rotor"}
+
+
+def base_url() -> str:
+    """The app's address as the browser sees it (for the join link and its QR code)."""
+    url = getattr(st.context, "url", "") or ""
+    return url.split("/class")[0].rstrip("/") if url else ""
+
+
+def start() -> None:
+    """The lecturer's form: what the class practises."""
+    st.write(t("class.intro"))
+    method = st.selectbox(t("class.method"), list(METHODS), key="class_method",
+                          format_func=lambda m: t(f"class.method_{m}"))
+    titles = preset_titles(KINDS[method], current())
+    scene = st.selectbox(t("class.scene"), list(titles), key=f"class_scene_{KINDS[method]}",
+                         format_func=titles.get)
+    link = st.text_input(t("class.link"), key="class_link", placeholder=f"{PARAMETER}=…")
+    variants = st.text_input(t("class.variants"), key="class_variants", placeholder="3.1-S42-01K")
+    at = number_field(t("class.at"), "class_at", optional=True)
+    if st.button(t("class.start"), type="primary", icon=":material/groups:"):
+        try:
+            if variants.strip():
+                settings, _ = parse(variants.strip())
+                scene = settings.task
+            chosen = link.strip() if link.strip().startswith(f"{PARAMETER}=") else scene
+            code, key = store.create(chosen, method, at, variants.strip().upper() or None)
+        except (ClassError, SceneError) as exc:
+            st.error(message(exc.args[0] if isinstance(exc, ClassError) else exc))
+            return
+        st.session_state["class_made"] = (code, key)  # the key is shown this once
+        st.rerun()
+
+
+def made(code: str, key: str) -> None:
+    """The join code, link and QR code to project; the lecturer's link, once."""
+    join = f"{base_url()}/class?join={code}"
+    st.markdown(f"## {t('class.code_is')}: `{code}`")
+    left, right = st.columns([2, 1])
+    with left:
+        st.caption(t("class.join_link"))
+        st.code(join, language=None)
+        st.warning(t("class.key_once"), icon=":material/key:")
+        st.code(f"{base_url()}/class?class={code}&key={key}", language=None)
+    with right:
+        st.html(segno.make(join, error="m").svg_inline(scale=8, border=2))
+        st.caption(t("class.qr"))
+
+
+def join(code: str) -> None:
+    """A student's first visit: a nickname (or the one given), then off to practise."""
+    try:
+        found = store.find(code)
+    except ClassError as exc:
+        st.error(message(exc.args[0]))
+        return
+    st.header(t("class.join_title", code=found.code))
+    st.caption(t(f"class.method_{found.method}"))
+    nickname = st.text_input(t("class.nickname"), key="class_nickname", max_chars=store.NICKNAME_MAX)
+    if st.button(t("class.join"), type="primary", icon=":material/login:"):
+        token = store.join(found.code, nickname)
+        go(found, token)
+
+
+def go(found: store.Class, token: str) -> None:
+    """To the method's page, on the class's scene (or this student's variant), practice on."""
+    page, key, shown = METHODS[found.method]
+    params = {"class": found.code, "student": token, "lang": current(), **shown}
+    if found.variants:
+        settings, _ = parse(found.variants)
+        params["v"] = variant_code(settings, store.student(found.code, token)["variant"])
+    elif found.scene.startswith(f"{PARAMETER}="):
+        params[PARAMETER] = found.scene.removeprefix(f"{PARAMETER}=")
+    else:
+        params["scene"] = found.scene
+    if found.at is not None:
+        params["at"] = f"{found.at:g}"
+    st.session_state[f"{key}_on"] = True
+    st.switch_page(page, query_params=params)
+
+
+def results(code: str, key: str) -> None:
+    """For the lecturer's link: how many have joined and checked, and every try."""
+    try:
+        rows = store.export(code, key)
+    except ClassError as exc:
+        st.error(message(exc.args[0]))
+        return
+    st.header(t("class.results", code=code.upper()))
+    st.metric(t("class.students"), len({r["student"] for r in rows}))
+    st.metric(t("class.checks"), len(rows))
+    table = pd.DataFrame(rows, columns=["student", "nickname", "step", "answer", "diagnosis",
+                                        "try", "time", "variant"])
+    st.download_button(t("class.export_csv"), lambda: table.assign(
+        answer=table["answer"].map(json.dumps)).to_csv(index=False).encode("utf-8"),
+        f"class-{code}.csv", mime="text/csv", on_click="ignore", icon=":material/download:")
+    st.download_button(t("class.export_jsonl"), lambda: "".join(
+        json.dumps(r, ensure_ascii=False) + "\n" for r in rows).encode("utf-8"),
+        f"class-{code}.jsonl", mime="application/jsonl", on_click="ignore",
+        icon=":material/download:")
+
+
+st.title(f"{CLASSROOM.icon} {t(CLASSROOM.title)}")
+query = st.query_params
+if query.get("join"):
+    join(query["join"])
+elif query.get("class") and query.get("key"):
+    results(query["class"], query["key"])
+elif st.session_state.get("class_made"):
+    made(*st.session_state.pop("class_made"))
+else:
+    start()

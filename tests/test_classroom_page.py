@@ -1,0 +1,106 @@
+"""The class page and a student in a class (AppTest): a lecturer starts a class and gets its
+code, its join link and QR code and the lecturer's link; a student joins by the code and
+lands on the method's page with practice on; each check is stored before its verdict, and
+a reload brings the progress back from the store; a store that cannot take a check says
+"not saved" and shows no verdict."""
+
+from __future__ import annotations
+
+import cmath
+import math
+
+import pytest
+
+from classes import store
+from cli.practice import steps_for
+from mechanisms import load_preset
+from ui.i18n import t
+
+from .test_pages import page, typed
+
+
+@pytest.fixture(autouse=True)
+def database(tmp_path, monkeypatch):
+    monkeypatch.setenv("MEHANIZMI_DATABASE_URL", f"sqlite:///{tmp_path / 'class.db'}")
+
+
+@pytest.mark.parametrize("lang", ["sr", "en"])
+def test_a_lecturer_starts_a_class_and_a_student_joins_it(lang, monkeypatch):
+    monkeypatch.setattr("ui.i18n.current", lambda: lang)  # (AppTest formats choices outside a run)
+    at = page("pages/classroom.py", lang=lang, class_method="plans")
+    assert not at.exception
+    next(b for b in at.button if b.label == t("class.start", lang)).click().run()
+    assert not at.exception
+    code = next(m.value for m in at.markdown if "`" in m.value).split("`")[1]
+    join, lecturer = (c.value for c in at.code[:2])
+    assert join.endswith(f"/class?join={code}") and f"class={code}&key=" in lecturer
+    assert any("<svg" in h.proto.body for h in at.get("html"))  # the QR code
+    key = lecturer.rsplit("key=", 1)[1]
+    assert store.find(code).method == "plans" and store.export(code, key) == []
+
+    student = page("pages/classroom.py", lang=lang, query=None)
+    student.query_params["join"] = code.lower()
+    student.run()
+    assert t("class.join_title", lang, code=code) in [h.value for h in student.header]
+    student.text_input(key="class_nickname").input("<b>Ana</b>").run()
+    next(b for b in student.button if b.label == t("class.join", lang)).click().run()
+    assert not student.exception
+    assert student.query_params["class"] == code and student.query_params["student"]
+    assert store.student(code, student.query_params["student"])["nickname"] == "<b>Ana</b>"
+
+
+def test_a_wrong_code_or_key_is_said_in_words():
+    at = page("pages/classroom.py", lang="en")
+    at.query_params["join"] = "ZZZZZZ"
+    at.run()
+    assert at.error and "No class has the code ZZZZZZ" in at.error[0].value
+    code, _ = store.create("zbirka-3.1", "plans")
+    at = page("pages/classroom.py", lang="en")
+    at.query_params.update({"class": code, "key": "guessed"})
+    at.run()
+    assert at.error and "not the lecturer's key" in at.error[0].value
+
+
+def _seated(code: str, token: str):
+    at = page("pages/velocity_plans.py", lang="en", pr_plans_on=True, scene="zbirka-3.1")
+    at.query_params.update({"class": code, "student": token})
+    at.run()
+    return at
+
+
+def _check(at, step, answer) -> None:
+    z = complex(answer)
+    typed(at, f"pr_plans_len_{step.id}", abs(z))
+    typed(at, f"pr_plans_ang_{step.id}", math.degrees(cmath.phase(z)))
+    next(b for b in at.button if b.label == t("practice.check", "en")).click().run()
+
+
+def test_every_check_is_stored_and_a_reload_brings_the_progress_back():
+    code, key = store.create("zbirka-3.1", "plans")
+    token = store.join(code, "Ana")
+    first = steps_for(load_preset("zbirka-3.1"), "plans")[0]
+    at = _seated(code, token)
+    assert not at.exception
+    _check(at, first, -complex(first.expected))  # reversed: a warning, stored
+    _check(at, first, first.expected)  # right, stored
+    rows = store.export(code, key)
+    assert [(r["step"], r["diagnosis"], r["try"]) for r in rows] == [
+        (first.id, "sense", 1), (first.id, "ok", 2)]
+    again = _seated(code, token)  # a reload, another process: the store says where they are
+    assert any(t("practice.hint_ok", "en") in s.value for s in again.success)
+
+
+def test_a_check_the_store_cannot_take_shows_no_verdict(monkeypatch):
+    code, key = store.create("zbirka-3.1", "plans")
+    token = store.join(code)
+    first = steps_for(load_preset("zbirka-3.1"), "plans")[0]
+    at = _seated(code, token)
+
+    def down(*_args, **_kwargs):
+        raise store.NotSaved("the database is down")
+
+    monkeypatch.setattr(store, "record", down)
+    _check(at, first, first.expected)
+    assert any(t("class.not_saved", "en") in e.value for e in at.error)
+    assert not at.success and not at.warning
+    assert store.export(code, key) == []  # and the try was not counted
