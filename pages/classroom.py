@@ -5,6 +5,7 @@ stored (classes.store, docs/classes.md)."""
 
 from __future__ import annotations
 
+import io
 import json
 
 import pandas as pd
@@ -69,8 +70,9 @@ def made(code: str, key: str) -> None:
         st.warning(t("class.key_once"), icon=":material/key:")
         st.code(f"{base_url()}/class?class={code}&key={key}", language=None)
     with right:
-        st.html(segno.make(join, error="m").svg_inline(scale=8, border=2))
-        st.caption(t("class.qr"))
+        qr = io.BytesIO()
+        segno.make(join, error="m").save(qr, kind="png", scale=12, border=2)
+        st.image(qr.getvalue(), caption=t("class.qr"), width="stretch")  # large, to project
 
 
 def join(code: str) -> None:
