@@ -33,8 +33,7 @@ def navigation_pages() -> list[st.Page]:
                   for c in (*CHAPTERS, BUILDER, VARIANTS)]
         pages.append(st.Page("pages/textbook_check.py", title=t("check.title"),
                              icon=":material/fact_check:"))
-        pages.append(st.Page(CLASSROOM.file, title=t(CLASSROOM.title), icon=CLASSROOM.icon,
-                             url_path="class"))
+        pages.append(st.Page(CLASSROOM.file, title=t(CLASSROOM.title), icon=CLASSROOM.icon))
         kept = st.session_state[PAGES] = (current(), pages)
     return kept[1]
 

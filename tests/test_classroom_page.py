@@ -27,7 +27,7 @@ def database(tmp_path, monkeypatch):
 @pytest.mark.parametrize("lang", ["sr", "en"])
 def test_a_lecturer_starts_a_class_and_a_student_joins_it(lang, monkeypatch):
     monkeypatch.setattr("ui.i18n.current", lambda: lang)  # (AppTest formats choices outside a run)
-    at = page("pages/classroom.py", lang=lang, class_method="plans")
+    at = page("pages/class.py", lang=lang, class_method="plans")
     assert not at.exception
     next(b for b in at.button if b.label == t("class.start", lang)).click().run()
     assert not at.exception
@@ -38,7 +38,7 @@ def test_a_lecturer_starts_a_class_and_a_student_joins_it(lang, monkeypatch):
     key = lecturer.rsplit("key=", 1)[1]
     assert store.find(code).method == "plans" and store.export(code, key) == []
 
-    student = page("pages/classroom.py", lang=lang, query=None)
+    student = page("pages/class.py", lang=lang, query=None)
     student.query_params["join"] = code.lower()
     student.run()
     assert t("class.join_title", lang, code=code) in [h.value for h in student.header]
@@ -50,12 +50,12 @@ def test_a_lecturer_starts_a_class_and_a_student_joins_it(lang, monkeypatch):
 
 
 def test_a_wrong_code_or_key_is_said_in_words():
-    at = page("pages/classroom.py", lang="en")
+    at = page("pages/class.py", lang="en")
     at.query_params["join"] = "ZZZZZZ"
     at.run()
     assert at.error and "No class has the code ZZZZZZ" in at.error[0].value
     code, _ = store.create("zbirka-3.1", "plans")
-    at = page("pages/classroom.py", lang="en")
+    at = page("pages/class.py", lang="en")
     at.query_params.update({"class": code, "key": "guessed"})
     at.run()
     assert at.error and "not the lecturer's key" in at.error[0].value

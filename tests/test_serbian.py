@@ -217,7 +217,7 @@ PAGES = [("pages/trajectories.py", {}), ("pages/trajectories.py", {"view": "comp
          ("pages/assur_groups.py", {}), ("pages/assur_groups.py", {"scene": "triad-full-turn"}),
          ("pages/kinetostatics.py", {}), ("pages/planetary_gears.py", {}),
          ("pages/rotor_balancing.py", {}), ("pages/builder.py", {}), ("pages/variants.py", {}),
-         ("pages/textbook_check.py", {}), ("pages/classroom.py", {}), ("app.py", {})]
+         ("pages/textbook_check.py", {}), ("pages/class.py", {}), ("app.py", {})]
 
 
 @pytest.mark.parametrize("language", ["sr", "sr-cyrl"])

@@ -32,7 +32,7 @@ BUILDER = Chapter("pages/builder.py", "build.title", "build.summary", ":material
 # for lecturers: a task's variants with keys and sheets; students open theirs by its code
 VARIANTS = Chapter("pages/variants.py", "var.title", "var.summary", ":material/quiz:")
 # a lecturer's class: students join by a code and their checks are stored (docs/classes.md)
-CLASSROOM = Chapter("pages/classroom.py", "class.title", "class.summary", ":material/groups:")
+CLASSROOM = Chapter("pages/class.py", "class.title", "class.summary", ":material/groups:")
 
 
 def chapter(file: str) -> Chapter:

@@ -19,7 +19,7 @@ METHODS = {"compass": ("pages/trajectories.py", "pr_compass", {"view": "compass"
            "lever": ("pages/kinetostatics.py", "pr_lever", {}),
            "willis": ("pages/planetary_gears.py", "pr_willis", {}),
            "balance": ("pages/rotor_balancing.py", "pr_balance", {})}
-PAGE = "pages/classroom.py"
+PAGE = "pages/class.py"
 NOT_SAVED = "_class_not_saved"
 
 

@@ -92,7 +92,7 @@ def join(code: str) -> None:
 
 def go(found: store.Class, token: str) -> None:
     """To the method's page, on the class's scene (or this student's variant), practice on."""
-    page, key, shown = METHODS[found.method]
+    page, _, shown = METHODS[found.method]
     params = {"class": found.code, "student": token, "lang": current(), **shown}
     if found.variants:
         settings, _ = parse(found.variants)
@@ -103,8 +103,7 @@ def go(found: store.Class, token: str) -> None:
         params["scene"] = found.scene
     if found.at is not None:
         params["at"] = f"{found.at:g}"
-    st.session_state[f"{key}_on"] = True
-    st.switch_page(page, query_params=params)
+    st.switch_page(page, query_params=params)  # (practice is on there: ui.practice.toggle)
 
 
 def results(code: str, key: str) -> None:

@@ -1,0 +1,86 @@
+"""A class in chromium: a lecturer starts one on the class page and gets a code and a QR
+code; two students on phones join — one by the link, one by typing the code in the sidebar —
+check a step each, and one reloads and finds their progress (from the store, not the page);
+every check is in the lecturer's export."""
+
+from __future__ import annotations
+
+import pytest
+
+from classes import store
+from cli.practice import steps_for
+from mechanisms import load_preset
+
+from .test_browser import CHROMIUM, FLAGS, wait_idle
+
+pytestmark = pytest.mark.browser
+
+
+@pytest.fixture(scope="module")
+def chromium():
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        phone = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
+        yield browser, phone
+        browser.close()
+
+
+def check_first_step(page) -> None:
+    """Type the first step of task 3.1's plans, right, the Serbian way, and press Check."""
+    step = steps_for(load_preset("zbirka-3.1"), "plans")[0]
+    z = complex(step.expected)
+    boxes = page.locator("[data-testid='stForm'] input")
+    boxes.nth(0).fill(f"{abs(z):.6g}".replace(".", ","))
+    boxes.nth(1).fill("93,5768")
+    page.get_by_role("button", name="Proveri").click()
+    page.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=30_000)
+
+
+def test_a_class_is_started_joined_from_phones_and_resumed_after_a_reload(app_url, chromium,
+                                                                          tmp_path):
+    browser, phone = chromium
+    lecturer = browser.new_context(viewport={"width": 1400, "height": 1000}, locale="sr-RS")
+    page = lecturer.new_page()
+    page.goto(f"{app_url}/class?lang=sr")
+    page.get_by_role("button", name="Pokreni čas").click()
+    page.locator("[data-testid='stImage'] img").wait_for(timeout=30_000)  # the QR code
+    join_link, key_link = page.locator("[data-testid='stCode'] code").all_inner_texts()[:2]
+    assert join_link.startswith(app_url) and "key=" in key_link
+    page.screenshot(path=str(tmp_path / "class-lecturer.png"))
+
+    code, key = store.create("zbirka-3.1", "plans")  # the class the students practise in
+    students = []
+    for way in ("link", "sidebar"):
+        context = browser.new_context(**phone, locale="sr-RS")
+        student = context.new_page()
+        if way == "link":
+            student.goto(f"{app_url}/class?join={code}&lang=sr")
+        else:
+            student.goto(f"{app_url}/?lang=sr")
+            wait_idle(student)
+            student.locator("[data-testid='stExpandSidebarButton'], "  # the sidebar, folded
+                            "[data-testid='stSidebarCollapsedControl'] button").first.tap()
+            box = student.get_by_label("Kod časa (za pridruživanje)")
+            box.fill(code.lower())
+            box.press("Enter")
+        student.get_by_role("button", name="Pridruži se i vežbaj").wait_for(timeout=30_000)
+        if way == "sidebar":  # folded again, as a student's thumb does
+            student.locator("[data-testid='stSidebarCollapseButton'] button").first.tap()
+        student.get_by_label("Nadimak").fill(f"student-{way}")
+        student.get_by_role("button", name="Pridruži se i vežbaj").tap()
+        student.wait_for_url("**/velocity_plans**", timeout=30_000)
+        student.locator("[data-testid='stForm'] input").first.wait_for(timeout=30_000)
+        wait_idle(student)
+        check_first_step(student)
+        students.append(student)
+    rows = store.export(code, key)
+    assert sorted(r["nickname"] for r in rows) == ["student-link", "student-sidebar"]
+    assert {r["diagnosis"] for r in rows} == {"ok"}
+
+    again = students[0]
+    again.reload()  # the class and the student stay in the link
+    again.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=30_000)
+    assert "class=" in again.url and "student=" in again.url
+    assert len(store.export(code, key)) == 2  # a reload stores nothing twice
