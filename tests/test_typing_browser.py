@@ -14,7 +14,7 @@ import pytest
 from cli.practice import steps_for
 from mechanisms import load_preset
 
-from .test_browser import CHROMIUM, FLAGS, keep, settle, wait_idle
+from .test_browser import CHROMIUM, FLAGS, keep, open_page, wait_idle
 from .test_builder_browser import open_tab, shapes, type_cell
 
 pytestmark = pytest.mark.browser
@@ -38,12 +38,8 @@ def localised(request, tmp_path_factory):
         context.close()
 
 
-def opened(context, url: str, size=(1600, 1100)):
-    page = context.new_page()
-    page.set_viewport_size({"width": size[0], "height": size[1]})
-    page.goto(url)
-    settle(page)
-    return page
+def opened(context, url: str):
+    return open_page(context, url, (1600, 1100))  # (a context opens pages as a browser does)
 
 
 def coupler(page) -> float:
