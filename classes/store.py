@@ -203,7 +203,10 @@ def join(code: str, nickname: str = "", url: str | None = None) -> str:
 
 def student(code: str, token: str, url: str | None = None) -> dict:
     """A student of this class (ClassError for another class's or an unknown token)."""
-    found = find(code, url)
+    return _student(find(code, url), token, url)
+
+
+def _student(found: Class, token: str, url: str | None) -> dict:
     with engine(url).connect() as db:
         row = db.execute(sa.select(students).where(students.c.id == token,
                                                    students.c.class_id == found.id)).first()
@@ -221,7 +224,8 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: in
     if len(text) > ANSWER_MAX or len(step) > 64:
         raise ClassError(Text("class.too_long"))
     try:
-        found, who = find(code, url), student(code, token, url)
+        found = find(code, url)
+        who = _student(found, token, url)
         made = engine(url)
         while _recent(made, who["student"]) >= PER_SECOND:
             time.sleep(0.2)  # a machine, not a person: slowed

@@ -104,3 +104,14 @@ def test_a_check_the_store_cannot_take_shows_no_verdict(monkeypatch):
     assert any(t("class.not_saved", "en") in e.value for e in at.error)
     assert not at.success and not at.warning
     assert store.export(code, key) == []  # and the try was not counted
+
+
+def test_a_link_with_a_student_of_no_class_says_so_once():
+    """Beside the practice switch, whether it is on or off (the panel asks again)."""
+    code, _ = store.create("zbirka-3.1", "plans")
+    for on in (False, True):
+        at = page("pages/velocity_plans.py", lang="en", pr_plans_on=on, scene="zbirka-3.1")
+        at.query_params.update({"class": code, "student": "not-a-student"})
+        at.run()
+        said = [e.value for e in at.error if "not in the class" in e.value]
+        assert len(said) == 1, on

@@ -26,6 +26,20 @@ NOT_SAVED = "_class_not_saved"
 def seat(key: str) -> tuple[str, str] | None:
     """(class code, student token) when this page's practice ``key`` is the class's method
     and the link names a student of that class; None otherwise (practice is not stored)."""
+    memo = _seat()
+    return (memo[0], memo[1]) if memo and not memo[3] and memo[2] == key else None
+
+
+def seat_refused() -> None:
+    """Why the link's class or student was not found, where the practice would be."""
+    memo = _seat()
+    if memo and memo[3]:
+        st.error(memo[3], icon=":material/error:")
+
+
+def _seat() -> tuple | None:
+    """(code, token, the method's practice key, why not) for the link's class and student,
+    looked up in the store once per session and link."""
     code, token = st.query_params.get("class"), st.query_params.get("student")
     if not code or not token:
         return None
@@ -35,14 +49,11 @@ def seat(key: str) -> tuple[str, str] | None:
             method = store.find(code).method
             store.student(code, token)
         except ClassError as exc:
-            st.session_state["_class_seat"] = (code, token, None, message(exc.args[0]))
+            memo = (code, token, None, message(exc.args[0]))
         else:
-            st.session_state["_class_seat"] = (code, token, METHODS[method][1], "")
-        memo = st.session_state["_class_seat"]
-    if memo[3]:
-        st.error(memo[3], icon=":material/error:")
-        return None
-    return (code, token) if memo[2] == key else None
+            memo = (code, token, METHODS[method][1], "")
+        st.session_state["_class_seat"] = memo
+    return memo
 
 
 def resumed(seated: tuple[str, str], steps: list[Step]) -> Progress:

@@ -23,6 +23,7 @@ from plotly.io.json import to_json_plotly
 
 from figures.raw import RawFigure
 from mechanisms.schema import Scene
+from ui.url import url_set
 
 STEP_DEG = 5.0  # 72 frames a turn: smooth to scrub, small enough to send
 FRAMES = 36  # about this many frames along a slider's range (a link's length: every 5th step)
@@ -126,8 +127,8 @@ def slider_control(sliders: dict[str, Ranged], remembered: str, group: str, aske
     key = st.session_state[remembered] = key if key in sliders else first
     if key == first:
         st.query_params.pop(remembered, None)
-    elif st.query_params.get(remembered) != key:  # (each write sends the browser a message)
-        st.query_params[remembered] = key
+    else:
+        url_set(remembered, key)
     shown = sliders[key]
     stride = max(1, round((shown.hi - shown.lo) / shown.step / FRAMES)) * shown.step
     values = along(shown.lo, shown.hi, stride, shown.value)

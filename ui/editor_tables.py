@@ -156,7 +156,6 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     return memo["good"]
 
 
-
 def _number(value, language: str) -> float:
     """A cell of a table of numbers: blank is NaN (the row is left out), text is parsed."""
     if _blank_cell(value) or (isinstance(value, str) and not value.strip()):

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import streamlit as st
 
 from ui.i18n import current, num, t
+from ui.url import url_set
 
 REASONS = ("empty", "not_number", "comma", "integer", "below", "above")  # num.<reason>
 NUMBER = re.compile(r"[+\-\u2212]?(?:[0-9]+(?:[.,][0-9]*)?|[.,][0-9]+)(?:[eE][+\-\u2212]?[0-9]+)?")
@@ -163,7 +164,7 @@ def number_field(label: str, key: str, value: float | None = None, *,
                 result = None  # an answer: a refused one is no answer, not the last one
     state[_memo(key)] = memo
     if url and result is not None:
-        st.query_params[key] = f"{result:.15g}"
+        url_set(key, f"{result:.15g}")
     return result
 
 

@@ -37,6 +37,7 @@ def shown_unit(step: Step) -> tuple[str, float]:
 def toggle(key: str) -> bool:
     """The page's "Practise" switch: on by itself for a student in a class that practises
     this (a reload, or another app process, keeps them practising)."""
+    classroom.seat_refused()  # a link to a class or student that is not (or no longer) there
     if f"{key}_on" not in st.session_state and classroom.seat(key):
         st.session_state[f"{key}_on"] = True
     return st.toggle(t("practice.mode"), key=f"{key}_on", help=t("practice.mode_help"))

@@ -14,6 +14,13 @@ import pandas as pd
 import streamlit as st
 
 
+def url_set(key: str, text: str) -> None:
+    """``?key=text`` in the page's link, written only when it changes: each write sends the
+    browser a message, and a page writes its link on every rerun."""
+    if st.query_params.get(key) != text:
+        st.query_params[key] = text
+
+
 def url_choice(widget: Callable, label: str, options: Sequence[str], key: str,
                default: str | None = None, **kwargs) -> str:
     """``widget`` (st.selectbox, st.radio, …) seeded from ``?key=`` and writing it back."""
@@ -22,7 +29,7 @@ def url_choice(widget: Callable, label: str, options: Sequence[str], key: str,
         wanted = st.query_params.get(key)
         st.session_state[key] = wanted if wanted in options else default
     value = widget(label, options, key=key, **kwargs)
-    st.query_params[key] = value
+    url_set(key, value)
     return value
 
 
@@ -33,7 +40,7 @@ def url_toggle(label: str, key: str, **kwargs) -> bool:
     if key not in st.session_state and key in st.query_params:
         st.session_state[key] = st.query_params[key] == "true"
     value = st.toggle(label, key=key, **kwargs)
-    st.query_params[key] = "true" if value else "false"
+    url_set(key, "true" if value else "false")
     return value
 
 
@@ -80,5 +87,5 @@ def table_to_url(key: str, table: pd.DataFrame, default: pd.DataFrame) -> None:
     if rows.shape == default.shape and (rows.to_numpy(dtype=float) == default.to_numpy(dtype=float)).all():
         st.query_params.pop(key, None)
         return
-    st.query_params[key] = ";".join(",".join(f"{float(v):.10g}" for v in row)
-                                    for row in rows.itertuples(index=False))
+    url_set(key, ";".join(",".join(f"{float(v):.10g}" for v in row)
+                          for row in rows.itertuples(index=False)))
