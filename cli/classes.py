@@ -1,4 +1,4 @@
-"""``python -m solvers class create | join | export | delete | purge``: a class on the same
+"""``python -m solvers class create | join | export | delete | purge | migrate``: a class on the same
 store as the pages (classes/store.py; MEHANIZMI_DATABASE_URL or the SQLite file), so that a
 lecturer scripts a class and a student hands in answers from a file (``practice … --class
 CODE --student ID``)."""
@@ -45,6 +45,9 @@ def add(sub) -> None:
     v.set_defaults(run=_delete)
     v = verbs.add_parser("purge", help="remove the expired classes")
     v.set_defaults(run=_purge)
+    v = verbs.add_parser("migrate", help="make or upgrade the store's schema (the start "
+                                         "commands run it)")
+    v.set_defaults(run=_migrate)
 
 
 def _create(args) -> int:
@@ -85,6 +88,11 @@ def _delete(args) -> int:
 
 def _purge(args) -> int:
     print(f"purged {store.purge()} expired classes")
+    return 0
+
+
+def _migrate(args) -> int:
+    print(f"class store ready: {store.engine().url.render_as_string(hide_password=True)}")
     return 0
 
 

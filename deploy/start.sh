@@ -1,17 +1,26 @@
 #!/usr/bin/env bash
-# Several app processes behind nginx, for a class larger than one process serves.
+# Several app processes behind nginx, for a class larger than one process serves, sharing
+# one class store on PostgreSQL.
 #   deploy/start.sh                 # one process per core, nginx on 127.0.0.1:8080
 #   PROCESSES=4 PORT=80 HOST=0.0.0.0 deploy/start.sh
-# Ctrl-C (or SIGTERM) stops nginx and every process. See docs/deploy.md.
+#   MEHANIZMI_DATABASE_URL=postgresql+psycopg://user:pass@db/mehanizmi deploy/start.sh
+# Without MEHANIZMI_DATABASE_URL it starts a PostgreSQL server of its own, its data in
+# MEHANIZMI_PGDATA (default data/postgres), reached on a Unix socket only.
+# Ctrl-C (or SIGTERM) stops nginx, every process and that server. See docs/deploy.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PROCESSES=${PROCESSES:-$(nproc)}
 PORT=${PORT:-8080}
 HOST=${HOST:-127.0.0.1}
 FIRST=${FIRST_APP_PORT:-8601}
-if ! command -v nginx >/dev/null; then
-  sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
-  $sudo apt-get update -q && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q nginx-light
+sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
+wanted=""
+command -v nginx >/dev/null || wanted="nginx-light"
+PG_BIN=$(ls -d /usr/lib/postgresql/*/bin 2>/dev/null | sort -V | tail -1 || true)
+[ -n "${MEHANIZMI_DATABASE_URL:-}" ] || [ -n "$PG_BIN" ] || wanted="$wanted postgresql"
+if [ -n "$wanted" ]; then
+  $sudo apt-get update -q && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q $wanted
+  PG_BIN=$(ls -d /usr/lib/postgresql/*/bin 2>/dev/null | sort -V | tail -1 || true)
 fi
 [ -d node_modules ] || bash scripts/bundles.sh
 if [ ! -x .venv/bin/streamlit ]; then
@@ -21,8 +30,33 @@ fi
 RUN=$(mktemp -d /tmp/mehanizmi-deploy.XXXXXX)
 SECRET=$(head -c 32 /dev/urandom | od -An -tx1 | tr -d ' \n')  # one for all processes
 pids=()
-stop() { kill "${pids[@]}" 2>/dev/null || true; wait 2>/dev/null || true; rm -rf "$RUN"; }
-trap stop EXIT INT TERM
+PGDATA=""
+as_postgres=()  # PostgreSQL refuses to run as root
+[ "$(id -u)" -eq 0 ] && as_postgres=(runuser -u postgres --)
+stop() {
+  trap - EXIT
+  kill "${pids[@]}" 2>/dev/null || true; wait 2>/dev/null || true
+  [ -z "$PGDATA" ] || "${as_postgres[@]}" "$PG_BIN/pg_ctl" -D "$PGDATA" -m fast -w stop >/dev/null || true
+  rm -rf "$RUN"
+}
+trap stop EXIT
+trap 'exit 143' INT TERM  # (stop runs on the way out)
+if [ -z "${MEHANIZMI_DATABASE_URL:-}" ]; then  # a server of our own, its data kept
+  data=${MEHANIZMI_PGDATA:-data/postgres}
+  mkdir -p "$data" "$RUN/pg"
+  data=$(cd "$data" && pwd)
+  if [ ${#as_postgres[@]} -gt 0 ]; then
+    chmod 711 "$RUN"; chown postgres "$data" "$RUN/pg"; chmod 700 "$RUN/pg"
+    "${as_postgres[@]}" test -w "$data" || {
+      echo "the postgres user cannot write $data: set MEHANIZMI_PGDATA to a folder it can reach" >&2; exit 1; }
+  fi
+  [ -f "$data/PG_VERSION" ] || "${as_postgres[@]}" "$PG_BIN/initdb" -D "$data" -A trust -U postgres >/dev/null
+  "${as_postgres[@]}" "$PG_BIN/pg_ctl" -D "$data" -l "$RUN/pg/log" -w \
+    -o "-k $RUN/pg -c listen_addresses=''" start >/dev/null
+  PGDATA=$data
+  export MEHANIZMI_DATABASE_URL="postgresql+psycopg://postgres@/postgres?host=$RUN/pg"
+fi
+.venv/bin/python -m solvers class migrate  # the schema, made or upgraded before any process serves
 servers=""
 for i in $(seq 0 $((PROCESSES - 1))); do
   port=$((FIRST + i))

@@ -4,18 +4,20 @@
 # installs Plotly's partial bundles (scripts/bundles.sh), which the tests check are served.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# (PostgreSQL: the class store's tests run against a real server they start themselves)
-if [ ! -x /usr/bin/chromium ] || ! command -v npm >/dev/null || ! ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1; then
+# (PostgreSQL: the class store's tests run against a real server they start themselves;
+# nginx: deploy/start.sh is tested as a faculty runs it)
+if [ ! -x /usr/bin/chromium ] || ! command -v npm >/dev/null || ! command -v nginx >/dev/null \
+    || ! ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1; then
   sudo=""
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
   if command -v apt-get >/dev/null; then
-    wanted="chromium chromium-driver fonts-dejavu-core postgresql"
+    wanted="chromium chromium-driver fonts-dejavu-core postgresql nginx-light"
     # Debian's npm conflicts with a Node.js installed from elsewhere that brings its own npm.
     command -v npm >/dev/null || wanted="$wanted npm"
     $sudo apt-get update -q
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q $wanted
   else
-    echo "warning: no apt-get here; browser tests need /usr/bin/chromium, npm and postgresql" >&2
+    echo "warning: no apt-get here; browser tests need /usr/bin/chromium, npm, postgresql and nginx" >&2
   fi
 fi
 bash scripts/bundles.sh

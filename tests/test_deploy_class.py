@@ -1,0 +1,118 @@
+"""A class on the faculty's setup, for real: ``deploy/start.sh`` (two app processes behind
+nginx, a PostgreSQL server of its own, the schema migrated by the start command). A student
+on a phone joins through nginx and checks a step; the same link opened on each app process
+brings the progress back from the store; the check is stored once; SIGTERM stops all."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import tempfile
+import time
+import urllib.request
+from pathlib import Path
+
+import pytest
+
+from classes import store
+from deploy.client import free_port
+
+from .test_browser import CHROMIUM, FLAGS, wait_idle
+from .test_classes import PG_BIN
+from .test_classroom_browser import check_first_step
+
+ROOT = Path(__file__).resolve().parents[1]
+pytestmark = pytest.mark.browser
+
+if shutil.which("nginx") is None or PG_BIN is None:
+    if os.environ.get("CI"):
+        raise RuntimeError("nginx or PostgreSQL is missing in CI: scripts/test.sh installs them")
+    pytest.skip("nginx and Debian's postgresql are installed by scripts/test.sh",
+                allow_module_level=True)
+
+
+def free_pair() -> int:
+    """The first of two free ports in a row (the app processes')."""
+    for _ in range(50):
+        port = free_port()
+        try:
+            with socket.socket() as s:
+                s.bind(("127.0.0.1", port + 1))
+            return port
+        except OSError:
+            continue
+    raise RuntimeError("no two free ports in a row")
+
+
+@pytest.fixture(scope="module")
+def deployed():
+    """deploy/start.sh running: (nginx's address, the app processes' addresses, store URL)."""
+    pgdata = Path(tempfile.mkdtemp(prefix="mz-deploy-pg-"))
+    if os.getuid() == 0:
+        shutil.chown(pgdata, "postgres")
+    port, first = free_port(), free_pair()
+    env = {**os.environ, "PROCESSES": "2", "PORT": str(port), "FIRST_APP_PORT": str(first),
+           "MEHANIZMI_PGDATA": str(pgdata)}
+    env.pop("MEHANIZMI_DATABASE_URL", None)
+    script = subprocess.Popen(["bash", "deploy/start.sh"], cwd=ROOT, env=env, text=True,
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    url, lines = None, []
+    deadline = time.monotonic() + 180
+    while time.monotonic() < deadline:
+        line = script.stdout.readline()
+        if not line:
+            break
+        lines.append(line)
+        if line.startswith("class store ready: "):
+            url = line.split(": ", 1)[1].strip()
+        if line.startswith("Mehanizmi: "):
+            break
+    assert url and url.startswith("postgresql+psycopg://"), "".join(lines)
+    apps = [f"http://127.0.0.1:{first + i}" for i in range(2)]
+    for address in [f"http://127.0.0.1:{port}", *apps]:  # each process answers its health check
+        for _ in range(120):
+            try:
+                urllib.request.urlopen(f"{address}/_stcore/health", timeout=2)
+                break
+            except OSError:
+                time.sleep(0.5)
+    yield f"http://127.0.0.1:{port}", apps, url, script, pgdata
+    if script.poll() is None:
+        script.send_signal(signal.SIGTERM)
+        script.wait(timeout=60)
+    shutil.rmtree(pgdata, ignore_errors=True)
+
+
+def test_a_student_behind_nginx_resumes_on_either_process_from_postgresql(deployed):
+    from playwright.sync_api import sync_playwright
+
+    proxy, apps, url, script, pgdata = deployed
+    assert (pgdata / "PG_VERSION").exists()  # its own server, its data where it was told
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        phone = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
+        student = browser.new_context(**phone, locale="sr-RS").new_page()
+        student.goto(f"{proxy}/class?join={code}&lang=sr")
+        student.get_by_label("Nadimak").fill("ana")
+        student.get_by_role("button", name="Pridruži se i vežbaj").tap()
+        student.wait_for_url("**/velocity_plans**", timeout=60_000)
+        student.locator("[data-testid='stForm'] input").first.wait_for(timeout=60_000)
+        wait_idle(student)
+        check_first_step(student)
+        link = student.url.removeprefix(proxy)
+        for app in apps:  # another process (no sticky cookie): the progress from the store
+            other = browser.new_context(viewport={"width": 1200, "height": 900}).new_page()
+            other.goto(app + link)
+            other.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=60_000)
+            other.context.close()
+        browser.close()
+    rows = store.export(code, key, url=url)
+    assert [(r["nickname"], r["diagnosis"], r["try"]) for r in rows] == [("ana", "ok", 1)]
+
+    script.send_signal(signal.SIGTERM)  # Ctrl-C: nginx, both processes and PostgreSQL stop
+    assert script.wait(timeout=60) == 143  # (stopped by the signal, cleaned up on the way out)
+    assert not (pgdata / "postmaster.pid").exists()
