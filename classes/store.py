@@ -37,6 +37,7 @@ NICKNAME_MAX = 40  # characters
 ANSWER_MAX = 200  # characters of an answer's JSON
 PER_SECOND = 5  # checks a student may send in a second; more are slowed, not refused
 METHODS = ("compass", "plans", "forces", "lever", "willis", "balance")
+REVEALED = "revealed"  # a check's diagnosis when the student asked to be shown the step
 
 metadata = sa.MetaData()
 classes = sa.Table(
@@ -67,7 +68,8 @@ checks = sa.Table(
               nullable=False),
     sa.Column("step", sa.String(64), nullable=False),
     sa.Column("answer", sa.String(ANSWER_MAX), nullable=False),  # JSON: [x, y], a number, null
-    sa.Column("diagnosis", sa.String(16), nullable=False),
+    sa.Column("diagnosis", sa.String(16), nullable=False),  # methods.practice's, or REVEALED
+    sa.Column("term", sa.String(64)),  # the term a "missing-term" answer left out (0002)
     sa.Column("try", sa.Integer, nullable=False),
     sa.Column("time", sa.DateTime(timezone=True), nullable=False),
     sa.Column("variant", sa.String(64)),
@@ -121,13 +123,13 @@ def _engine(url: str) -> sa.Engine:
     return made
 
 
-def migrate(made: sa.Engine) -> None:
-    """Bring the schema to the newest migration (``classes/migrations``)."""
+def migrate(made: sa.Engine, to: str = "head") -> None:
+    """Bring the schema to the newest migration (``classes/migrations``), or to ``to``."""
     config = Config()
     config.set_main_option("script_location", str(Path(__file__).with_name("migrations")))
     with made.begin() as connection:
         config.attributes["connection"] = connection
-        command.upgrade(config, "head")
+        command.upgrade(config, to)
 
 
 def _now() -> datetime:
@@ -216,12 +218,12 @@ def _student(found: Class, token: str, url: str | None) -> dict:
 
 
 def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: int,
-           variant: str | None = None, url: str | None = None) -> None:
+           variant: str | None = None, term: str = "", url: str | None = None) -> None:
     """Store one check, durably, before its verdict is shown. The same check sent again
     (after "not saved") is stored once; a student sending more than PER_SECOND checks a
     second waits. NotSaved when the store cannot take it."""
     text = json.dumps(answer)
-    if len(text) > ANSWER_MAX or len(step) > 64:
+    if len(text) > ANSWER_MAX or len(step) > 64 or len(term) > 64 or len(variant or "") > 64:
         raise ClassError(Text("class.too_long"))
     try:
         found = find(code, url)
@@ -230,8 +232,8 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: in
         while _recent(made, who["student"]) >= PER_SECOND:
             time.sleep(0.2)  # a machine, not a person: slowed
         values = {"class_id": found.id, "student": who["student"], "step": step,
-                  "answer": text, "diagnosis": diagnosis, "try": attempt, "time": _now(),
-                  "variant": variant}
+                  "answer": text, "diagnosis": diagnosis, "term": term or None, "try": attempt,
+                  "time": _now(), "variant": variant}
         with made.begin() as db:
             seen = db.execute(sa.select(checks.c.id).where(
                 checks.c.student == who["student"], checks.c.step == step,
@@ -262,20 +264,26 @@ def tries(code: str, token: str, url: str | None = None) -> list[dict]:
 
 def export(code: str, key: str, url: str | None = None) -> list[dict]:
     """Every try of the class, for its lecturer: student, nickname, step, answer,
-    diagnosis, try, time, variant."""
-    found = opened(code, key, url)
+    diagnosis, term, try, time, variant."""
+    return [{k: v for k, v in row.items() if k != "id"} for row in since(opened(code, key, url), 0, url)]
+
+
+def since(found: Class, after: int, url: str | None = None) -> list[dict]:
+    """The class's checks stored after the check numbered ``after``, oldest first, each with
+    its number (``id``): what a live view fetches each second, only what is new. (``found``
+    comes from ``opened``: the lecturer's key was checked.)"""
     with engine(url).connect() as db:
         rows = db.execute(sa.select(checks, students.c.nickname)
                           .join(students, students.c.id == checks.c.student)
-                          .where(checks.c.class_id == found.id)
-                          .order_by(checks.c.time, checks.c.id)).all()
-    return [_row(r, r.nickname) for r in rows]
+                          .where(checks.c.class_id == found.id, checks.c.id > after)
+                          .order_by(checks.c.id)).all()
+    return [{"id": r.id, **_row(r, r.nickname)} for r in rows]
 
 
 def _row(r, nickname: str) -> dict:
     return {"student": r.student, "nickname": nickname, "step": r.step,
-            "answer": json.loads(r.answer), "diagnosis": r.diagnosis, "try": r._mapping["try"],
-            "time": _aware(r.time).isoformat(), "variant": r.variant}
+            "answer": json.loads(r.answer), "diagnosis": r.diagnosis, "term": r.term or "",
+            "try": r._mapping["try"], "time": _aware(r.time).isoformat(), "variant": r.variant}
 
 
 def delete(code: str, key: str, url: str | None = None) -> None:

@@ -13,7 +13,8 @@ from classes import store
 from mechanisms import load_preset
 from mechanisms.link import PARAMETER
 
-FIELDS = ("student", "nickname", "step", "answer", "diagnosis", "try", "time", "variant")
+FIELDS = ("student", "nickname", "step", "answer", "diagnosis", "term", "try", "time",
+          "variant")
 
 
 def add(sub) -> None:
@@ -102,5 +103,5 @@ def stored(data: dict, code: str, token: str, answers: dict) -> None:
     for result in data["results"]:
         if result["id"] in answers:
             store.record(code, token, result["id"], answers[result["id"]], result["diagnosis"],
-                         1)
+                         1, term=result["term"])
 

@@ -67,7 +67,7 @@ def hint(step: Step, verdict: Verdict) -> str:
 
 
 def graded(steps: list[Step], answers: dict) -> dict:
-    """``{"results": [{"id", "diagnosis", "hint"}], "score": {"ok", "of"}}`` for the answers
+    """``{"results": [{"id", "diagnosis", "term", "hint"}], "score": {"ok", "of"}}`` for the answers
     (a step not answered is ``none``)."""
     known = [s.id for s in steps]
     unknown = [name for name in answers if name not in known]
@@ -82,7 +82,7 @@ def graded(steps: list[Step], answers: dict) -> dict:
         except ValueError as exc:
             raise SceneError(f"answers: {step.id} must be {exc}") from None
         verdict = progress.give(step, value)
-        results.append({"id": step.id, "diagnosis": verdict.diagnosis,
+        results.append({"id": step.id, "diagnosis": verdict.diagnosis, "term": verdict.term,
                         "hint": hint(step, verdict)})
     return {"results": results, "score": {"ok": sum(r["diagnosis"] == "ok" for r in results),
                                           "of": len(steps)}}

@@ -83,11 +83,36 @@ def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
         ("v.a-b", "sense", 1), ("v.a-b", "ok", 2)]
     rows = store.export(code, key, url=url)
     assert len(rows) == 3 and set(rows[0]) == {"student", "nickname", "step", "answer",
-                                               "diagnosis", "try", "time", "variant"}
+                                               "diagnosis", "term", "try", "time", "variant"}
     assert {r["nickname"] for r in rows} == {"Ana", "student 2"}
     assert rows[0]["answer"] == [0.19, -3.09]
     with store.engine(url).connect() as db:  # the schema came from the migrations
-        assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0001"
+        assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0002"
+
+
+def test_a_store_made_by_the_first_migration_is_upgraded_with_its_checks_kept(url):
+    """A faculty's store from before the term column: the start command's migration adds it,
+    and the checks stored before come back with no term."""
+    if url.startswith("postgresql"):  # a database of its own on the tests' server
+        name = f"upgrade_{os.getpid()}_{time.monotonic_ns()}"
+        with sa.create_engine(url, isolation_level="AUTOCOMMIT").connect() as db:
+            db.execute(sa.text(f"create database {name}"))
+        url = url.rsplit("/", 1)[0] + f"/{name}"
+    made = sa.create_engine(url)
+    store.migrate(made, "0001")
+    with made.begin() as db:
+        db.execute(sa.text("insert into classes (code, key_hash, scene, method, created, expires) "
+                           "values ('OLDONE', 'x', 'zbirka-3.1', 'plans', :now, :later)"),
+                   {"now": datetime.now(UTC), "later": datetime.now(UTC) + timedelta(days=1)})
+        db.execute(sa.text("insert into students (id, class_id, nickname, joined) "
+                           "select 'old-student', id, 'Ana', :now from classes"), {"now": datetime.now(UTC)})
+        db.execute(sa.text("insert into checks (class_id, student, step, answer, diagnosis, try, time) "
+                           "select id, 'old-student', 'v.b', '1.0', 'ok', 1, :now from classes"),
+                   {"now": datetime.now(UTC)})
+    made.dispose()  # (the store's engine for this new URL is made, and upgrades, below)
+    assert [(r["step"], r["term"]) for r in store.tries("OLDONE", "old-student", url=url)] == [("v.b", "")]
+    store.record("OLDONE", "old-student", "v.c", 2.0, "missing-term", 1, term="a^k", url=url)
+    assert store.tries("OLDONE", "old-student", url=url)[-1]["term"] == "a^k"
 
 
 def test_wrong_codes_keys_and_students_are_refused_in_words(url):

@@ -62,7 +62,11 @@ def resumed(seated: tuple[str, str], steps: list[Step]) -> Progress:
     by_id = {s.id: s for s in steps}
     for check in store.tries(*seated):
         step = by_id.get(check["step"])
-        if step is not None:
+        if step is None:
+            continue
+        if check["diagnosis"] == store.REVEALED:
+            progress.reveal(step)
+        else:
             progress.give(step, answer_of(check["answer"], step.kind))
     return progress
 
@@ -71,13 +75,31 @@ def give(seated: tuple[str, str] | None, progress: Progress, step: Step, answer)
     """A check: graded, stored (in a class) and only then counted and shown."""
     if seated is not None and not progress.done(step):
         verdict = grade(step, answer)
-        try:
-            store.record(*seated, step.id, _plain(answer), verdict.diagnosis,
-                         len(progress.verdicts.get(step.id, [])) + 1)
-        except NotSaved:
-            st.session_state[NOT_SAVED] = True
+        if not _stored(seated, progress, step, _plain(answer), verdict.diagnosis, verdict.term):
             return
     progress.give(step, answer)
+
+
+def reveal(seated: tuple[str, str] | None, progress: Progress, step: Step) -> None:
+    """"Show it": stored as the student's last try of the step (the class view counts it,
+    and a reload keeps it shown), then shown."""
+    if seated is not None and not progress.done(step):
+        if not _stored(seated, progress, step, None, store.REVEALED, ""):
+            return
+    progress.reveal(step)
+
+
+def _stored(seated: tuple[str, str], progress: Progress, step: Step, answer, diagnosis: str,
+            term: str) -> bool:
+    """One try in the store (False, and "not saved" said, when it could not be taken)."""
+    try:
+        store.record(*seated, step.id, answer, diagnosis,
+                     len(progress.verdicts.get(step.id, [])) + 1,
+                     variant=st.query_params.get("v") or None, term=term)
+    except NotSaved:
+        st.session_state[NOT_SAVED] = True
+        return False
+    return True
 
 
 def _plain(answer):

@@ -183,7 +183,7 @@ def _moves(steps: list[Step], index: int, key: str, state: dict, progress: Progr
     cols[0].button(t("practice.previous"), key=f"{key}_prev", on_click=go, args=(index - 1,),
                    disabled=index == 0, icon=":material/arrow_back:", width="stretch")
     cols[1].button(t("practice.reveal"), key=f"{key}_reveal",
-                   on_click=lambda: progress.reveal(steps[index]),
+                   on_click=lambda: classroom.reveal(state["seat"], progress, steps[index]),
                    disabled=progress.done(steps[index]), icon=":material/visibility:",
                    width="stretch")
     cols[2].button(t("practice.next"), key=f"{key}_next", on_click=go, args=(index + 1,),
