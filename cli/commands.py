@@ -26,6 +26,7 @@ from mechanisms.gears import GearTrain
 from mechanisms.link import PARAMETER, decode, encode
 from mechanisms.messages import strings
 from mechanisms.rotor import Rotor
+from methods import practice_steps
 from methods.plans import build
 from reports.values import forces_json, gears_json, motion_json, plan_json, rotor_json
 from solvers.balancing import BalanceError, balance
@@ -85,7 +86,7 @@ def _parser() -> argparse.ArgumentParser:
     p = sub.add_parser("practice", help="a construction's steps to practise, or a student's "
                                         "answers graded step by step (docs/practice.md)")
     _scene_arguments(p)
-    p.add_argument("--method", required=True, choices=list(practice.KINDS),
+    p.add_argument("--method", required=True, choices=list(practice_steps.KINDS),
                    help="compass, plans, forces, lever (linkages), willis (gear trains), "
                         "balance (rotors)")
     p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver "

@@ -8,54 +8,11 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-import numpy as np
-
 from figures.plans import plain
-from mechanisms import Scene, SceneError
-from mechanisms.gears import GearTrain
+from mechanisms import SceneError
 from mechanisms.messages import english
-from mechanisms.rotor import Rotor
-from methods import practice_steps
-from methods.plans import build
 from methods.practice import Progress, Step, Verdict, answer_of, hint_keys
-from methods.scales import plan_scales, polygon_scale
-from solvers.balancing import balance
-from solvers.diagnostics import solve_instant
-from solvers.gears import solve_train
-from solvers.kinematics import solve
-from solvers.kinetostatics import analyse
-from solvers.paths import cycle_values
-
-KINDS = {"compass": Scene, "plans": Scene, "forces": Scene, "lever": Scene,
-         "willis": GearTrain, "balance": Rotor}
-
-
-def steps_for(scene, method: str, at: float | None = None) -> list[Step]:
-    """The steps of ``method`` on ``scene`` (at ``at``: φ₂ in degrees, or s in m, where the
-    method works at one instant); SceneError when the scene is not of the method's kind."""
-    kind = KINDS.get(method)
-    if kind is None:
-        raise SceneError(f"unknown method {method!r}: choose one of {', '.join(KINDS)}")
-    if not isinstance(scene, kind):
-        raise SceneError(f"the {method} method needs a {kind.__name__.lower()} scene; this is a "
-                         f"{type(scene).__name__.lower()}")
-    if method == "compass":
-        motion = solve(scene, cycle_values(scene, 12), order=0)
-        return practice_steps.compass(motion, plan_scales(scene, None)["L"])
-    if method == "willis":
-        return practice_steps.willis(solve_train(scene))
-    if method == "balance":
-        return practice_steps.balance(balance(scene))
-    motion = solve_instant(scene, at)
-    if method == "plans":
-        plans = build(motion)
-        return practice_steps.plans(plans, plan_scales(scene, plans))
-    k = analyse(scene, inertia=True, motion=motion)
-    if method == "lever":
-        return practice_steps.lever(k, 0)
-    forces = [complex(np.ravel(r.force)[0]) for r in k.reactions.values()]
-    return practice_steps.forces(k, 0, scene.scales.get("F", polygon_scale(forces)))
-
+from methods.practice_steps import steps_for
 
 def hint(step: Step, verdict: Verdict) -> str:
     """The hint for a diagnosis, in the English strings table's words (a term's name as text

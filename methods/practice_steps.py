@@ -15,19 +15,26 @@ from __future__ import annotations
 
 from itertools import accumulate
 
+import numpy as np
+
+from mechanisms import Scene, SceneError
+from mechanisms.gears import GearTrain
+from mechanisms.rotor import Rotor
 from mechanisms.schema import DRIVER
-from solvers.balancing import Balance, unit as rotation
-from solvers.gears import TrainSolution
-from solvers.kinematics import Motion
-from solvers.kinetostatics import Kinetostatics
+from solvers.balancing import Balance, balance as solve_balance, unit as rotation
+from solvers.diagnostics import solve_instant
+from solvers.gears import TrainSolution, solve_train
+from solvers.kinematics import Motion, solve
+from solvers.kinetostatics import Kinetostatics, analyse
+from solvers.paths import cycle_values
 
 from .compass import construction as compass_construction
 from .force_steps import latex_name, steps as force_construction
 from .gear_steps import speed_steps
 from .lever_steps import construction as lever_construction
-from .plans import POLE, Plans, is_construction, readings
+from .plans import POLE, Plans, build, is_construction, readings
 from .practice import RELATIVE, Step, Term
-from .scales import PRECISION_CM, polygon_scale
+from .scales import PRECISION_CM, plan_scales, polygon_scale
 
 UNITS = {"v": "m/s", "a": "m/s²"}
 
@@ -242,3 +249,35 @@ def _polygon(vectors, sheet: str, unit: str, scale: float, closing: complex, pla
                        f"correction ({unit})", name, "vector", unit, closing, tol, scale, sheet,
                        tail, tuple(Term(n, -v) for n, v in known),
                        tuple(Term(n, closing + v) for n, v in known), "closing")]
+
+
+# the kind of scene each method practises on
+KINDS = {"compass": Scene, "plans": Scene, "forces": Scene, "lever": Scene,
+         "willis": GearTrain, "balance": Rotor}
+
+
+def steps_for(scene, method: str, at: float | None = None) -> list[Step]:
+    """The steps of ``method`` on ``scene`` (at ``at``: φ₂ in degrees, or s in m, where the
+    method works at one instant); SceneError when the scene is not of the method's kind."""
+    kind = KINDS.get(method)
+    if kind is None:
+        raise SceneError(f"unknown method {method!r}: choose one of {', '.join(KINDS)}")
+    if not isinstance(scene, kind):
+        raise SceneError(f"the {method} method needs a {kind.__name__.lower()} scene; this is a "
+                         f"{type(scene).__name__.lower()}")
+    if method == "compass":
+        motion = solve(scene, cycle_values(scene, 12), order=0)
+        return compass(motion, plan_scales(scene, None)["L"])
+    if method == "willis":
+        return willis(solve_train(scene))
+    if method == "balance":
+        return balance(solve_balance(scene))
+    motion = solve_instant(scene, at)
+    if method == "plans":
+        drawn = build(motion)
+        return plans(drawn, plan_scales(scene, drawn))
+    k = analyse(scene, inertia=True, motion=motion)
+    if method == "lever":
+        return lever(k, 0)
+    known = [complex(np.ravel(r.force)[0]) for r in k.reactions.values()]
+    return forces(k, 0, scene.scales.get("F", polygon_scale(known)))
