@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 import sqlalchemy as sa
 
-from classes import store
+from classes import store, summary
 from deploy.client import free_port
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -241,3 +241,47 @@ def test_a_check_time_is_when_it_was_stored(url):
     store.record(code, store.join(code, url=url), "v.b", 1.0, "ok", 1, url=url)
     (row,) = store.export(code, key, url=url)
     assert abs(datetime.fromisoformat(row["time"]) - datetime.now(UTC)) < timedelta(minutes=1)
+
+
+def test_a_planted_class_is_counted_step_by_step_from_the_store(url):
+    """Five students on two of three steps: the counts, the first tries, the most common
+    mistake with its term, the cloud's latest answers and the table of students, all read
+    back from the store (and ``since`` gives only what is newer)."""
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    who = {name: store.join(code, name, url=url) for name in "abcde"}
+    planted = [("a", "s1", "ok", ""), ("a", "s2", "ok", ""),
+               ("b", "s1", "sense", ""), ("b", "s1", "ok", ""),
+               ("c", "s1", "missing-term", "X"), ("c", "s1", "missing-term", "X"), ("c", "s1", "wrong", ""),
+               ("d", "s1", store.REVEALED, ""),
+               ("e", "s1", "missing-term", "X"), ("e", "s1", store.REVEALED, "")]
+    tried = {}
+    for name, step, diagnosis, term in planted:
+        tried[name, step] = tried.get((name, step), 0) + 1
+        answer = None if diagnosis == store.REVEALED else [tried[name, step], 0.5]
+        store.record(code, who[name], step, answer, diagnosis, tried[name, step], term=term, url=url)
+    rows = store.since(store.opened(code, key, url=url), 0, url=url)
+    assert len(rows) == len(planted) and rows == sorted(rows, key=lambda r: r["id"])
+    assert store.since(store.opened(code, key, url=url), rows[5]["id"], url=url) == rows[6:]
+
+    s1, s2, s3 = summary.counts(rows, ["s1", "s2", "s3"])
+    assert (s1.reached, s1.first, s1.later, s1.revealed) == (5, 1, 1, 3)
+    assert s1.first_tries == {"ok": 1, "sense": 1, "missing-term": 2, "none": 1}
+    assert s1.mistake == ("missing-term", "X", 2)  # c twice and e once: two students
+    assert (s2.reached, s2.first, s2.mistake) == (1, 1, None)
+    assert (s3.reached, sum(s3.first_tries.values())) == (0, 0)
+    cloud = summary.latest(rows, "s1")
+    assert {rows_nick["nickname"]: (rows_nick["diagnosis"], rows_nick["answer"])
+            for rows_nick in cloud.values()} == {
+        "a": ("ok", [1, 0.5]), "b": ("ok", [2, 0.5]), "c": ("wrong", [3, 0.5]),
+        "e": ("missing-term", [1, 0.5])}  # d was shown it: nothing to draw
+    assert summary.students(rows, ["s1", "s2", "s3"]) == [
+        {"nickname": "a", "done": 2, "first": 2}, {"nickname": "b", "done": 1, "first": 0},
+        {"nickname": "c", "done": 1, "first": 0}, {"nickname": "d", "done": 1, "first": 0},
+        {"nickname": "e", "done": 1, "first": 0}]
+
+
+def test_students_are_split_in_bands_of_a_given_value():
+    split = summary.bands({"a": 10.0, "b": 20.0, "c": 40.0, "d": 39.0}, 3)
+    assert split["a"] == (10.0, 20.0) and split["b"] == (20.0, 30.0)
+    assert split["c"] == split["d"] == (30.0, 40.0)
+    assert set(summary.bands({"a": 5.0, "b": 5.0}).values()) == {(5.0, 5.0)}
