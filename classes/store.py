@@ -25,7 +25,8 @@ import sqlalchemy as sa
 from alembic import command
 from alembic.config import Config
 
-from exams.codes import CHECK_LETTERS
+from exams.codes import CHECK_LETTERS, parse
+from exams.codes import code as variant_code
 from mechanisms.messages import Text
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -37,6 +38,8 @@ NICKNAME_MAX = 40  # characters
 ANSWER_MAX = 200  # characters of an answer's JSON
 PER_SECOND = 5  # checks a student may send in a second; more are slowed, not refused
 METHODS = ("compass", "plans", "forces", "lever", "willis", "balance")
+FIELDS = ("student", "nickname", "step", "answer", "diagnosis", "term", "try", "time",
+          "variant")  # of every try exported, in this order
 REVEALED = "revealed"  # a check's diagnosis when the student asked to be shown the step
 
 metadata = sa.MetaData()
@@ -219,7 +222,8 @@ def _student(found: Class, token: str, url: str | None) -> dict:
 
 def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: int,
            variant: str | None = None, term: str = "", url: str | None = None) -> None:
-    """Store one check, durably, before its verdict is shown. The same check sent again
+    """Store one check, durably, before its verdict is shown (in a class of variants, with
+    the student's variant code unless ``variant`` names it). The same check sent again
     (after "not saved") is stored once; a student sending more than PER_SECOND checks a
     second waits. NotSaved when the store cannot take it."""
     text = json.dumps(answer)
@@ -228,6 +232,8 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: in
     try:
         found = find(code, url)
         who = _student(found, token, url)
+        if variant is None and found.variants and who["variant"]:  # the student's own variant
+            variant = variant_code(parse(found.variants)[0], who["variant"])
         made = engine(url)
         while _recent(made, who["student"]) >= PER_SECOND:
             time.sleep(0.2)  # a machine, not a person: slowed

@@ -15,8 +15,6 @@ from methods.practice import TRIES
 
 from .store import REVEALED
 
-DIAGNOSES = ("ok", "sense", "direction", "length", "scale", "missing-term", "wrong", "none")
-
 
 @dataclass
 class StepCount:
@@ -119,3 +117,16 @@ def bands(values: dict[str, float], count: int = 3) -> dict[str, tuple[float, fl
         k = min(int((value - low) / width), count - 1)
         out[student] = (low + k * width, low + (k + 1) * width if k < count - 1 else high)
     return out
+
+
+def relative(answer: complex | float, own: complex | float, reference: complex | float,
+             kind: str) -> complex | float:
+    """An answer to another variant's step, carried to the reference variant's geometry: an
+    arrow or a number scaled and turned as the student's own right answer is to the
+    reference's, a point shifted by the difference; a right answer lands on the
+    reference's, and a reversed arrow on its reverse."""
+    if own == reference:
+        return answer
+    if kind != "point" and abs(own) > 1e-12 * abs(reference):
+        return answer / own * reference
+    return answer - own + reference

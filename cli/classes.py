@@ -13,9 +13,6 @@ from classes import store
 from mechanisms import load_preset
 from mechanisms.link import PARAMETER
 
-FIELDS = ("student", "nickname", "step", "answer", "diagnosis", "term", "try", "time",
-          "variant")
-
 
 def add(sub) -> None:
     """The ``class`` command and its subcommands."""
@@ -75,7 +72,7 @@ def _export(args) -> int:
         for row in rows:
             print(json.dumps(row, ensure_ascii=False))
         return 0
-    writer = csv.DictWriter(sys.stdout, FIELDS)
+    writer = csv.DictWriter(sys.stdout, store.FIELDS)
     writer.writeheader()
     writer.writerows({**row, "answer": json.dumps(row["answer"])} for row in rows)
     return 0

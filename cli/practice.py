@@ -14,6 +14,7 @@ from mechanisms.messages import english
 from methods.practice import Progress, Step, Verdict, answer_of, hint_keys
 from methods.practice_steps import steps_for
 
+
 def hint(step: Step, verdict: Verdict) -> str:
     """The hint for a diagnosis, in the English strings table's words (a term's name as text
     with sub- and superscripts, aᵏ_A4A, not LaTeX source)."""

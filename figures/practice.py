@@ -26,8 +26,29 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
     and a draggable circle named "tip" at ``tip`` (cm on the paper; the tail plus a small
     offset when None) with the student's arrow to it."""
     step = steps[index]
-    scale = step.scale or 1.0
     fig = RawFigure()
+    start = sheet(fig, steps, index, t, look)
+    if tip is None:
+        tip = start + (1.0 + 0.5j)
+    if step.kind == "vector":
+        fig.add_raw(arrow_traces([(start, tip, ANSWER)], 2.4 * look.line))
+    shapes = [dict(type="circle", name="tip", xref="x", yref="y", x0=tip.real - TIP,
+                   x1=tip.real + TIP, y0=tip.imag - TIP, y1=tip.imag + TIP,
+                   line=dict(color=ANSWER, width=1.5 * look.line),
+                   fillcolor="rgba(214, 39, 40, 0.15)")]
+    plane_layout(fig, title, look, x_title="x [cm]", y_title="y [cm]")
+    # no drag mode: a swipe scrolls the page, the tip is moved by its handle (ui/plot.js);
+    # each step opens at its own view (a zoom of the last one would show an empty sheet)
+    fig.merge_layout(dict(shapes=shapes, dragmode=False, uirevision=f"practice-{step.id}",
+                          editrevision=revision))
+    return fig
+
+
+def sheet(fig: RawFigure, steps: list[Step], index: int, t: Text, look: Look = NORMAL) -> complex:
+    """Draw on ``fig`` what step ``index``'s sheet holds before it (the earlier steps exactly,
+    a polygon's known sides, the tail) and room around the tail: the tail, in cm of paper."""
+    step = steps[index]
+    scale = step.scale or 1.0
     earlier = [s for s in steps[:index] if s.sheet == step.sheet and s.kind != "scalar"]
     arrows = [(s.tail / scale, (s.tail + complex(s.expected)) / scale, DONE)
               for s in earlier if s.kind == "vector" and s.rule != "sum"]
@@ -53,17 +74,4 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
     corners = [start + REACH * c for c in (1 + 1j, -1 - 1j)]
     fig.add_raw([scatter(x=[z.real for z in corners], y=[z.imag for z in corners], mode="markers",
                          hoverinfo="skip", showlegend=False, marker=dict(opacity=0))])
-    if tip is None:
-        tip = start + (1.0 + 0.5j)
-    if step.kind == "vector":
-        fig.add_raw(arrow_traces([(start, tip, ANSWER)], 2.4 * look.line))
-    shapes = [dict(type="circle", name="tip", xref="x", yref="y", x0=tip.real - TIP,
-                   x1=tip.real + TIP, y0=tip.imag - TIP, y1=tip.imag + TIP,
-                   line=dict(color=ANSWER, width=1.5 * look.line),
-                   fillcolor="rgba(214, 39, 40, 0.15)")]
-    plane_layout(fig, title, look, x_title="x [cm]", y_title="y [cm]")
-    # no drag mode: a swipe scrolls the page, the tip is moved by its handle (ui/plot.js);
-    # each step opens at its own view (a zoom of the last one would show an empty sheet)
-    fig.merge_layout(dict(shapes=shapes, dragmode=False, uirevision=f"practice-{step.id}",
-                          editrevision=revision))
-    return fig
+    return start

@@ -44,6 +44,7 @@ ANGLE_READ = math.radians(1.0)  # a direction read with a protractor (as the pol
 RELATIVE = 0.01  # a value computed from an equation by hand: ±1 %
 SLIP = 0.02  # an answer within 2 % of a slipped value is that slip
 TRIES = 3  # after three tries the step is revealed
+DIAGNOSES = ("ok", "sense", "direction", "length", "scale", "missing-term", "wrong", "none")
 
 
 @dataclass(frozen=True)

@@ -6,9 +6,7 @@ stored (classes.store, docs/classes.md)."""
 from __future__ import annotations
 
 import io
-import json
 
-import pandas as pd
 import segno
 import streamlit as st
 
@@ -20,6 +18,7 @@ from mechanisms import SceneError
 from mechanisms.link import PARAMETER
 from ui.chapters import CLASSROOM
 from ui.classroom import METHODS
+from ui.classview import view
 from ui.i18n import current, message, t
 from ui.numbers import number_field
 from ui.scenes import preset_titles
@@ -106,33 +105,12 @@ def go(found: store.Class, token: str) -> None:
     st.switch_page(page, query_params=params)  # (practice is on there: ui.practice.toggle)
 
 
-def results(code: str, key: str) -> None:
-    """For the lecturer's link: how many have joined and checked, and every try."""
-    try:
-        rows = store.export(code, key)
-    except ClassError as exc:
-        st.error(message(exc.args[0]))
-        return
-    st.header(t("class.results", code=code.upper()))
-    st.metric(t("class.students"), len({r["student"] for r in rows}))
-    st.metric(t("class.checks"), len(rows))
-    table = pd.DataFrame(rows, columns=["student", "nickname", "step", "answer", "diagnosis",
-                                        "try", "time", "variant"])
-    st.download_button(t("class.export_csv"), lambda: table.assign(
-        answer=table["answer"].map(json.dumps)).to_csv(index=False).encode("utf-8"),
-        f"class-{code}.csv", mime="text/csv", on_click="ignore", icon=":material/download:")
-    st.download_button(t("class.export_jsonl"), lambda: "".join(
-        json.dumps(r, ensure_ascii=False) + "\n" for r in rows).encode("utf-8"),
-        f"class-{code}.jsonl", mime="application/jsonl", on_click="ignore",
-        icon=":material/download:")
-
-
 st.title(f"{CLASSROOM.icon} {t(CLASSROOM.title)}")
 query = st.query_params
 if query.get("join"):
     join(query["join"])
 elif query.get("class") and query.get("key"):
-    results(query["class"], query["key"])
+    view(query["class"], query["key"])
 elif st.session_state.get("class_made"):
     made(*st.session_state.pop("class_made"))
 else:

@@ -19,10 +19,11 @@ SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *RO
 def message_families() -> set[str]:
     """The messages' keys made from a name (``Text(f"why_open.{kind}")``): each family from
     the table in the code that names its members."""
+    from classes.store import METHODS
     from mechanisms import limits
     from mechanisms.loader import TOML_REASONS
+    from methods.practice import DIAGNOSES
     from solvers.diagnostics import WHY_OPEN
-    from classes.store import METHODS
     from ui.numbers import REASONS
     gears = (ROOT / "mechanisms" / "gears.py").read_text()
     return ({f"scene.lists.{what}" for _, what, _ in (*limits.LINKAGE, *limits.GEARS,
@@ -32,6 +33,8 @@ def message_families() -> set[str]:
             | {f"why_open.{kind}" for kind in (*WHY_OPEN, "other")}
             | {f"num.{reason}" for reason in REASONS}
             | {f"class.method_{method}" for method in METHODS}
+            | {f"class.diagnosis_{d}" for d in DIAGNOSES}
+            | {f"class.mistake_{d}" for d in DIAGNOSES if d not in ("ok", "none")}
             | {f"toml.{key}" for key in (*TOML_REASONS.values(), "other")})
 
 

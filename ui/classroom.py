@@ -94,8 +94,7 @@ def _stored(seated: tuple[str, str], progress: Progress, step: Step, answer, dia
     """One try in the store (False, and "not saved" said, when it could not be taken)."""
     try:
         store.record(*seated, step.id, answer, diagnosis,
-                     len(progress.verdicts.get(step.id, [])) + 1,
-                     variant=st.query_params.get("v") or None, term=term)
+                     len(progress.verdicts.get(step.id, [])) + 1, term=term)
     except NotSaved:
         st.session_state[NOT_SAVED] = True
         return False

@@ -1,0 +1,103 @@
+"""The lecturer's class view (AppTest), in Serbian and English, on a class planted in the
+store: hidden at first (only who reached each step), then revealed — the bars by diagnosis,
+the most common mistake in words, the cloud of the latest answers with the right one at a
+click, the students' table on demand — and the printable summary with decimal commas."""
+
+from __future__ import annotations
+
+import pytest
+
+from classes import store
+from mechanisms import load_preset
+from methods.practice_steps import steps_for
+from ui import classview
+from ui.i18n import t
+
+from .test_pages import chart, page
+
+
+@pytest.fixture(autouse=True)
+def database(tmp_path, monkeypatch):
+    monkeypatch.setenv("MEHANIZMI_DATABASE_URL", f"sqlite:///{tmp_path / 'class.db'}")
+
+
+STEPS = steps_for(load_preset("zbirka-3.1"), "plans")
+
+
+def planted() -> tuple[str, str]:
+    """Three students on task 3.1's first step: one right, two reversed (one then right)."""
+    code, key = store.create("zbirka-3.1", "plans")
+    first = STEPS[0]
+    z = complex(first.expected)
+    for name, tries in (("ana", [("ok", z)]), ("ben", [("sense", -z), ("ok", z)]),
+                        ("<b>cira</b>", [("sense", -z * 1.01)])):
+        token = store.join(code, name)
+        for n, (diagnosis, answer) in enumerate(tries, 1):
+            store.record(code, token, first.id, [answer.real, answer.imag], diagnosis, n)
+    return code, key
+
+
+def names(figure: dict) -> list[str]:
+    return [str(tr.get("name", "")) for tr in figure["data"]]
+
+
+@pytest.mark.parametrize("lang", ["sr", "en"])
+def test_the_view_is_hidden_until_revealed_then_counts_and_draws_the_class(lang, monkeypatch):
+    monkeypatch.setattr("ui.i18n.current", lambda: lang)  # (AppTest formats choices outside a run)
+    code, key = planted()
+    at = page("pages/class.py", lang=lang, query=None)
+    at.query_params.update({"class": code, "key": key})
+    at.run()
+    assert not at.exception
+    bars = chart(at, "cv_bars")
+    assert names(bars) == [t("class.hidden", lang)] and bars["data"][0]["x"][0] == 3
+    assert "cv_cloud" not in {e.proto.id.rsplit("-", 1)[-1] for e in at.get("bidi_component")}
+    assert not any("3" in m.value and t("class.mistake_sense", lang, n=2) in m.value for m in at.markdown)
+    assert not at.dataframe  # names hidden by default
+
+    at.toggle(key="cv_all").set_value(True).run()
+    bars = chart(at, "cv_bars")
+    assert names(bars) == [t("class.diagnosis_ok", lang), t("class.diagnosis_sense", lang)]
+    assert [tr["x"][0] for tr in bars["data"]] == [1, 2]  # first tries: one right, two reversed
+    said = " ".join(m.value for m in at.markdown)
+    assert t("class.mistake_sense", lang, n=2) in said
+    cloud = chart(at, "cv_cloud")
+    tips = [tr for tr in cloud["data"] if tr.get("mode") == "markers" and tr.get("name")]
+    assert sum(int(tr["name"].rsplit("(", 1)[1].rstrip(")")) for tr in tips) == 3  # three latest answers
+    assert t("class.right", lang) not in names(cloud)
+    at.toggle(key="cv_right").set_value(True).run()
+    assert t("class.right", lang) in names(chart(at, "cv_cloud"))
+
+    at.toggle(key="cv_names").set_value(True).run()
+    table = at.dataframe[0].value
+    assert list(table[t("class.table_nickname", lang)]) == ["ana", "ben", "<b>cira</b>"]
+    assert list(table[t("class.table_first", lang)]) == [1, 0, 0]
+
+
+def test_a_new_check_shows_at_the_next_tick_without_losing_what_was_revealed():
+    code, key = planted()
+    at = page("pages/class.py", lang="en", query=None)
+    at.query_params.update({"class": code, "key": key})
+    at.run()
+    at.toggle(key="cv_all").set_value(True).run()
+    token = store.join(code, "dan")
+    store.record(code, token, STEPS[0].id, [0.0, 0.0], "wrong", 1)
+    at.run()  # (the fragment's timer, as AppTest can run it: the whole script)
+    bars = chart(at, "cv_bars")
+    assert dict(zip(names(bars), (tr["x"][0] for tr in bars["data"]))) == {
+        t("class.diagnosis_ok", "en"): 1, t("class.diagnosis_sense", "en"): 2,
+        t("class.diagnosis_wrong", "en"): 1}
+    assert at.toggle(key="cv_all").value
+
+
+def test_the_printable_summary_writes_the_language_s_numbers(monkeypatch):
+    code, key = planted()
+    found = store.opened(code, key)
+    rows = store.export(code, key)
+    monkeypatch.setattr("ui.i18n.current", lambda: "sr")
+    serbian = classview.printable(found, STEPS, rows)
+    assert "33,3 %" in serbian and "@page { size: A4" in serbian
+    assert t("class.mistake_sense", "sr", n=2) in serbian
+    assert "cira" not in serbian  # a summary for the room: no nicknames
+    monkeypatch.setattr("ui.i18n.current", lambda: "en")
+    assert "33.3 %" in classview.printable(found, STEPS, rows)
