@@ -27,7 +27,7 @@ RIGHT = "#1f77b4"
 def _bar(name: str, labels: list[str], values: list[int], colour: str, look: Look) -> dict:
     return dict(type="bar", orientation="h", name=name, y=labels, x=values,
                 marker=dict(color=colour), text=[v or "" for v in values],
-                textposition="inside", insidetextanchor="middle",
+                textposition="inside", insidetextanchor="middle", textangle=0,
                 textfont=dict(size=look.font), hovertemplate="%{y}: %{x}<extra>" + name + "</extra>")
 
 
@@ -45,12 +45,12 @@ def step_bars(steps: list[Step], first_tries: list[dict[str, int]], shown: list[
             fig.add_raw([_bar(t(f"class.diagnosis_{diagnosis}"), labels, values,
                               COLOURS[diagnosis], look)])
     hidden = [n if not on else 0 for n, on in zip(reached, shown)]
-    if any(hidden):
+    if any(hidden) or not fig.legend_names():  # (an empty class still lists its steps)
         fig.add_raw([_bar(t("class.hidden"), labels, hidden, HIDDEN, look)])
     most = max(reached + [1])
     fig.merge_layout(dict(
         title=dict(text=title, font=dict(size=look.font + 4)), barmode="stack",
-        height=max(look.height // 2, 120 + (2 * look.font + 14) * len(steps)),
+        height=max(look.height // 2, 160 + (look.font + 14) * len(steps)),
         font=dict(size=look.font, color="black"), plot_bgcolor="white",
         margin=dict(l=10 * look.font, r=20, t=3 * look.font + 20, b=4 * look.font + 40),
         legend=dict(orientation="h", yref="container", yanchor="bottom", y=0.0, traceorder="normal"),
@@ -71,6 +71,14 @@ def cloud(steps: list[Step], index: int, tips: list[tuple[complex, str]], right:
     fig = RawFigure()
     start = sheet(fig, steps, index, t, look)
     base = step.tail / scale if step.kind == "vector" else 0j
+    if right:
+        head = base + complex(step.expected) / scale
+        if step.kind == "vector":
+            fig.add_raw(arrow_traces([(start, head, RIGHT)], 2.4 * look.line))
+        fig.add_raw([scatter(x=[head.real], y=[head.imag], mode="markers",
+                             name=t("class.right"), hoverinfo="skip",
+                             marker=dict(size=14 * look.line, symbol="star-open", color=RIGHT,
+                                         line=dict(width=2 * look.line)))])
     for diagnosis in DIAGNOSES:
         here = [base + z / scale for z, d in tips if d == diagnosis]
         if here:
@@ -79,13 +87,6 @@ def cloud(steps: list[Step], index: int, tips: list[tuple[complex, str]], right:
                                  hoverinfo="skip", marker=dict(
                                      size=9 * look.line, color=COLOURS[diagnosis], opacity=0.75,
                                      line=dict(width=look.line, color="white")))])
-    if right:
-        head = base + complex(step.expected) / scale
-        if step.kind == "vector":
-            fig.add_raw(arrow_traces([(start, head, RIGHT)], 2.4 * look.line))
-        fig.add_raw([scatter(x=[head.real], y=[head.imag], mode="markers",
-                             name=t("class.right"), hoverinfo="skip",
-                             marker=dict(size=14 * look.line, symbol="star", color=RIGHT))])
     plane_layout(fig, title, look, x_title="x [cm]", y_title="y [cm]")
     fig.merge_layout(dict(uirevision=f"cloud-{step.id}"))  # the lecturer's zoom survives a tick
     return fig

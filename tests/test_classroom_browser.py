@@ -27,15 +27,17 @@ def chromium():
         browser.close()
 
 
-def check_first_step(page) -> None:
-    """Type the first step of task 3.1's plans, right, the Serbian way, and press Check."""
+def check_first_step(page, turn: float = 0.0) -> None:
+    """Type the first step of task 3.1's plans the Serbian way — right, or turned by ``turn``
+    degrees — press Check and wait for the verdict (right: a success; else a warning)."""
     step = steps_for(load_preset("zbirka-3.1"), "plans")[0]
     z = complex(step.expected)
     boxes = page.locator("[data-testid='stForm'] input")
     boxes.nth(0).fill(f"{abs(z):.6g}".replace(".", ","))
-    boxes.nth(1).fill("93,5768")
+    boxes.nth(1).fill(f"{93.5768 + turn:.4f}".replace(".", ","))
     page.get_by_role("button", name="Proveri").click()
-    page.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=30_000)
+    verdict = "Success" if turn == 0 else "Warning"
+    page.locator(f"[data-testid='stAlertContent{verdict}']").wait_for(timeout=30_000)
 
 
 def test_a_class_is_started_joined_from_phones_and_resumed_after_a_reload(app_url, chromium,

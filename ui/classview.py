@@ -91,15 +91,19 @@ def view(code: str, key: str) -> None:
         st.error(t("class.no_steps", why=message(exc)))
         return
     symbols = {s.id: f"{i + 1}. {plain(s.symbol)}" for i, s in enumerate(steps)}
-    controls = st.columns([1, 2, 1])
-    every = controls[0].toggle(t("class.reveal_all"), key="cv_all")
-    chosen = controls[1].multiselect(t("class.revealed_steps"), list(symbols), key="cv_shown",
-                                     format_func=symbols.get, disabled=every)
-    names = controls[2].toggle(t("class.show_names"), key="cv_names")
+    # the lecturer's controls in one row (the sidebar is hidden on a projector)
+    cols = st.columns([1, 1, 1, 2, 1], vertical_alignment="bottom")
+    every = cols[0].toggle(t("class.reveal_all"), key="cv_all", help=t("class.hidden_note"))
+    right = cols[1].toggle(t("class.show_right"), key="cv_right")
+    names = cols[2].toggle(t("class.show_names"), key="cv_names", help=t("class.names_help"))
+    look_at = cols[3].selectbox(t("class.look_step"), list(symbols), key="cv_step",
+                                format_func=symbols.get)
+    with cols[4].popover(t("class.more"), icon=":material/tune:", width="stretch"):
+        chosen = st.multiselect(t("class.revealed_steps"), list(symbols), key="cv_shown",
+                                format_func=symbols.get, disabled=every,
+                                placeholder=t("class.choose_steps"))
+        split = _split_choice(found)
     shown = set(symbols) if every else set(chosen)
-    look_at = st.selectbox(t("class.look_step"), list(symbols), key="cv_step", format_func=symbols.get)
-    right = st.toggle(t("class.show_right"), key="cv_right")
-    split = _split_choice(found)
     live(found, steps, shown, names, look_at, right, split)
     exports(found, steps)
 
