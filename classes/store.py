@@ -18,7 +18,7 @@ import secrets
 import time
 from dataclasses import dataclass
 from datetime import UTC, datetime, timedelta
-from functools import cache
+from functools import cache, wraps
 from pathlib import Path
 
 import sqlalchemy as sa
@@ -87,6 +87,23 @@ class NotSaved(RuntimeError):
     """The store could not take a check: the student is told, and no verdict is shown."""
 
 
+class StoreDown(ClassError):
+    """The store cannot be reached (its server stopped, the network): said in words, and
+    nothing kept of the attempt, so the next one asks the store again."""
+
+
+def _reachable(function):
+    """``function`` with the database's own errors said as StoreDown (a page shows the
+    message; nothing is cached from a store that did not answer)."""
+    @wraps(function)
+    def reached(*args, **kwargs):
+        try:
+            return function(*args, **kwargs)
+        except sa.exc.SQLAlchemyError as exc:
+            raise StoreDown(Text("class.store_down"), str(exc)) from None
+    return reached
+
+
 @dataclass(frozen=True)
 class Class:
     id: int
@@ -147,6 +164,7 @@ def _aware(moment: datetime) -> datetime:
     return moment if moment.tzinfo else moment.replace(tzinfo=UTC)  # SQLite keeps no zone
 
 
+@_reachable
 def create(scene: str, method: str, at: float | None = None, variants: str | None = None,
            days: int = LIFETIME_DAYS, url: str | None = None) -> tuple[str, str]:
     """A new class: (join code, lecturer key). The key is shown once; only its hash stays."""
@@ -164,6 +182,7 @@ def create(scene: str, method: str, at: float | None = None, variants: str | Non
     return code, key
 
 
+@_reachable
 def find(code: str, url: str | None = None) -> Class:
     """The class a code names (typed in any case, spaces ignored); ClassError if none or
     expired."""
@@ -177,6 +196,7 @@ def find(code: str, url: str | None = None) -> Class:
     return Class(row.id, row.code, row.scene, row.method, row.at, row.variants, _aware(row.expires))
 
 
+@_reachable
 def opened(code: str, key: str, url: str | None = None) -> Class:
     """The class, for its lecturer: ClassError unless ``key`` is its key."""
     found = find(code, url)
@@ -193,6 +213,7 @@ def nickname_of(text: str) -> str:
     return cleaned[:NICKNAME_MAX] or "student"
 
 
+@_reachable
 def join(code: str, nickname: str = "", url: str | None = None) -> str:
     """A student joins: their token. In a class of variants each gets the next one."""
     found = find(code, url)
@@ -211,6 +232,7 @@ def student(code: str, token: str, url: str | None = None) -> dict:
     return _student(find(code, url), token, url)
 
 
+@_reachable
 def _student(found: Class, token: str, url: str | None) -> dict:
     with engine(url).connect() as db:
         row = db.execute(sa.select(students).where(students.c.id == token,
@@ -248,6 +270,8 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: in
                 db.execute(checks.insert().values(**values))
     except sa.exc.IntegrityError:
         return  # the same check, stored by its first sending meanwhile
+    except StoreDown as exc:
+        raise NotSaved(exc.args[-1]) from None
     except sa.exc.SQLAlchemyError as exc:
         raise NotSaved(str(exc)) from None
 
@@ -259,6 +283,7 @@ def _recent(made: sa.Engine, token: str) -> int:
             checks.c.student == token, checks.c.time >= since)).scalar()
 
 
+@_reachable
 def tries(code: str, token: str, url: str | None = None) -> list[dict]:
     """A student's checks, oldest first: what brings their progress back on a reload."""
     student(code, token, url)
@@ -274,6 +299,7 @@ def export(code: str, key: str, url: str | None = None) -> list[dict]:
     return [{k: v for k, v in row.items() if k != "id"} for row in since(opened(code, key, url), 0, url)]
 
 
+@_reachable
 def since(found: Class, after: int, url: str | None = None) -> list[dict]:
     """The class's checks stored after the check numbered ``after``, oldest first, each with
     its number (``id``): what a live view fetches each second, only what is new. (``found``
@@ -292,6 +318,7 @@ def _row(r, nickname: str) -> dict:
             "try": r._mapping["try"], "time": _aware(r.time).isoformat(), "variant": r.variant}
 
 
+@_reachable
 def delete(code: str, key: str, url: str | None = None) -> None:
     """The class and everything stored of it, at once (its lecturer's key)."""
     found = opened(code, key, url)
@@ -299,6 +326,7 @@ def delete(code: str, key: str, url: str | None = None) -> None:
         _remove(db, sa.select(classes.c.id).where(classes.c.id == found.id))
 
 
+@_reachable
 def purge(url: str | None = None, now: datetime | None = None) -> int:
     """Remove the expired classes and their students and checks: how many classes."""
     now = now or _now()

@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 from classes import store
-from classes.store import ClassError, NotSaved
+from classes.store import ClassError, NotSaved, StoreDown
 from exams import variants
 from exams.codes import DEFAULT_SPREAD, Settings
 from exams.moodle import moodle_xml
@@ -45,12 +45,12 @@ def main(argv: list[str] | None = None) -> int:
     except (SceneError, StructureError, TrainError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    except (Unsolvable, BalanceError, NotSaved, StoreDown) as exc:
+        print(f"error: {exc.args[0]}", file=sys.stderr)
+        return 3
     except ClassError as exc:
         print(f"error: {exc.args[0]}", file=sys.stderr)
         return 2
-    except (Unsolvable, BalanceError, NotSaved) as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 3
 
 
 def _parser() -> argparse.ArgumentParser:

@@ -198,6 +198,9 @@ def test_with_the_database_stopped_a_check_is_not_saved_and_later_stored_once(po
     try:
         with pytest.raises(store.NotSaved):
             store.record(code, token, "v.b", [0.0, 3.1], "ok", 1, url=url)
+        with pytest.raises(store.StoreDown) as down:  # a page reading the store: said in words
+            store.tries(code, token, url=url)
+        assert down.value.args[0].key == "class.store_down"
     finally:
         postgres.start()
     store.record(code, token, "v.b", [0.0, 3.1], "ok", 1, url=url)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import streamlit as st
 
 from classes import store
-from classes.store import ClassError, NotSaved
+from classes.store import ClassError, NotSaved, StoreDown
 from methods.practice import Progress, Step, answer_of, grade
 from ui.i18n import message, t
 
@@ -48,6 +48,8 @@ def _seat() -> tuple | None:
         try:
             method = store.find(code).method
             store.student(code, token)
+        except StoreDown as exc:  # asked again on the next run, not kept
+            return (code, token, None, message(exc.args[0]))
         except ClassError as exc:
             memo = (code, token, None, message(exc.args[0]))
         else:
@@ -57,10 +59,17 @@ def _seat() -> tuple | None:
 
 
 def resumed(seated: tuple[str, str], steps: list[Step]) -> Progress:
-    """The student's progress as the store has it: their checks graded again, in order."""
+    """The student's progress as the store has it: their checks graded again, in order.
+    A store that cannot be reached stops the page with the reason (nothing is started
+    afresh that would hide what the store holds)."""
     progress = Progress.start()
     by_id = {s.id: s for s in steps}
-    for check in store.tries(*seated):
+    try:
+        checks = store.tries(*seated)
+    except StoreDown as exc:
+        st.error(message(exc.args[0]), icon=":material/cloud_off:")
+        st.stop()
+    for check in checks:
         step = by_id.get(check["step"])
         if step is None:
             continue

@@ -18,7 +18,7 @@ import pandas as pd
 import streamlit as st
 
 from classes import store, summary
-from classes.store import Class, ClassError
+from classes.store import Class, ClassError, StoreDown
 from exams.codes import parse
 from exams.variants import MAX_COUNT, VariantError, from_code, generate
 from figures.classview import COLOURS, spread, step_bars
@@ -70,8 +70,11 @@ def _fetch(found: Class) -> list[dict]:
     again and merged by number."""
     memo = st.session_state.setdefault(f"_class_rows_{found.code}", {})
     after = max(memo, default=0)
-    for row in store.since(found, max(0, after - MARGIN)):
-        memo[row["id"]] = row
+    try:
+        for row in store.since(found, max(0, after - MARGIN)):
+            memo[row["id"]] = row
+    except StoreDown as exc:  # the view keeps what it has, says so, and catches up after
+        st.warning(message(exc.args[0]), icon=":material/cloud_off:")
     return [memo[k] for k in sorted(memo)]
 
 
