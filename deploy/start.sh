@@ -6,7 +6,9 @@
 #   MEHANIZMI_DATABASE_URL=postgresql+psycopg://user:pass@db/mehanizmi deploy/start.sh
 # Without MEHANIZMI_DATABASE_URL it starts a PostgreSQL server of its own, its data in
 # MEHANIZMI_PGDATA (default data/postgres), reached on a Unix socket only.
-# Ctrl-C (or SIGTERM) stops nginx, every process and that server. See docs/deploy.md.
+# An app process that dies is started again (its users reconnect through nginx and resume
+# from the store). Ctrl-C (or SIGTERM) stops nginx, every process and that server.
+# See docs/deploy.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PROCESSES=${PROCESSES:-$(nproc)}
@@ -57,12 +59,23 @@ if [ -z "${MEHANIZMI_DATABASE_URL:-}" ]; then  # a server of our own, its data k
   export MEHANIZMI_DATABASE_URL="postgresql+psycopg://postgres@/postgres?host=$RUN/pg"
 fi
 .venv/bin/python -m solvers class migrate  # the schema, made or upgraded before any process serves
+serve() {  # one app process on port $1, started again if it dies (its users reconnect)
+  local port=$1 child=""
+  trap 'kill $child 2>/dev/null; wait $child 2>/dev/null; exit 0' TERM
+  while true; do
+    STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/python scripts/serve.py app.py \
+      --server.port "$port" --server.address 127.0.0.1 --server.headless true \
+      >> "$RUN/app-$port.log" 2>&1 &
+    child=$!
+    wait $child && code=0 || code=$?
+    echo "the app process on port $port stopped (exit $code); starting it again" >&2
+    sleep 1
+  done
+}
 servers=""
 for i in $(seq 0 $((PROCESSES - 1))); do
   port=$((FIRST + i))
-  STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/python scripts/serve.py app.py \
-    --server.port "$port" --server.address 127.0.0.1 --server.headless true \
-    > "$RUN/app-$port.log" 2>&1 &
+  serve "$port" &
   pids+=($!)
   servers+="        server 127.0.0.1:$port max_fails=0;"$'\n'
 done
@@ -75,5 +88,5 @@ nginx -p "$RUN" -c "$RUN/nginx.conf" -g "daemon off;" &
 pids+=($!)
 echo "Mehanizmi: $PROCESSES processes behind nginx at http://$HOST:$PORT (logs in $RUN)"
 wait -n || true
-echo "a process stopped; stopping the rest (logs: $RUN)" >&2
+echo "nginx stopped; stopping the rest (logs: $RUN)" >&2
 cat "$RUN"/error.log "$RUN"/app-*.log 2>/dev/null | tail -20 >&2

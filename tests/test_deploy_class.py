@@ -1,7 +1,8 @@
 """A class on the faculty's setup, for real: ``deploy/start.sh`` (two app processes behind
 nginx, a PostgreSQL server of its own, the schema migrated by the start command). A student
 on a phone joins through nginx and checks a step; the same link opened on each app process
-brings the progress back from the store; the check is stored once; SIGTERM stops all."""
+brings the progress back from the store; an app process killed (``kill -9``) is started
+again and a reload finds the progress; the check is stored once; SIGTERM stops all."""
 
 from __future__ import annotations
 
@@ -32,6 +33,30 @@ if shutil.which("nginx") is None or PG_BIN is None:
         raise RuntimeError("nginx or PostgreSQL is missing in CI: scripts/test.sh installs them")
     pytest.skip("nginx and Debian's postgresql are installed by scripts/test.sh",
                 allow_module_level=True)
+
+
+def app_pid(port: int) -> int:
+    """The app process serving ``port`` (its command line names the port)."""
+    for proc in Path("/proc").iterdir():
+        try:
+            args = (proc / "cmdline").read_bytes().split(b"\0")
+        except OSError:
+            continue
+        if b"scripts/serve.py" in args and str(port).encode() in args:
+            return int(proc.name)
+    raise LookupError(f"no app process on port {port}")
+
+
+def healthy(address: str, seconds: float = 60) -> None:
+    deadline = time.monotonic() + seconds
+    while True:
+        try:
+            urllib.request.urlopen(f"{address}/_stcore/health", timeout=2)
+            return
+        except OSError:
+            if time.monotonic() > deadline:
+                raise
+            time.sleep(0.5)
 
 
 def free_pair() -> int:
@@ -73,12 +98,7 @@ def deployed():
     assert url and url.startswith("postgresql+psycopg://"), "".join(lines)
     apps = [f"http://127.0.0.1:{first + i}" for i in range(2)]
     for address in [f"http://127.0.0.1:{port}", *apps]:  # each process answers its health check
-        for _ in range(120):
-            try:
-                urllib.request.urlopen(f"{address}/_stcore/health", timeout=2)
-                break
-            except OSError:
-                time.sleep(0.5)
+        healthy(address)
     yield f"http://127.0.0.1:{port}", apps, url, script, pgdata
     if script.poll() is None:
         script.send_signal(signal.SIGTERM)
@@ -109,6 +129,13 @@ def test_a_student_behind_nginx_resumes_on_either_process_from_postgresql(deploy
             other.goto(app + link)
             other.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=60_000)
             other.context.close()
+        killed = app_pid(int(apps[0].rsplit(":", 1)[1]))
+        os.kill(killed, signal.SIGKILL)  # a process falls over: started again, nothing lost
+        time.sleep(1.5)
+        healthy(apps[0])
+        assert app_pid(int(apps[0].rsplit(":", 1)[1])) != killed
+        student.reload()  # through nginx, to whichever process: the progress from the store
+        student.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=60_000)
         browser.close()
     rows = store.export(code, key, url=url)
     assert [(r["nickname"], r["diagnosis"], r["try"]) for r in rows] == [("ana", "ok", 1)]
