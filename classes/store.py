@@ -15,6 +15,7 @@ import hashlib
 import json
 import os
 import secrets
+import threading
 import time
 from dataclasses import dataclass
 from datetime import UTC, datetime, timedelta
@@ -125,8 +126,14 @@ def database_url() -> str:
 
 
 def engine(url: str | None = None) -> sa.Engine:
-    """The store's engine for ``url`` (default: ``database_url()``, read each time)."""
-    return _engine(url or database_url())
+    """The store's engine for ``url`` (default: ``database_url()``, read each time). Made
+    under a lock: a fresh process's first sessions arrive at once, each in its thread, and
+    two migrations at once break Alembic's module-level context."""
+    with _MAKING:
+        return _engine(url or database_url())
+
+
+_MAKING = threading.Lock()
 
 
 @cache

@@ -44,17 +44,25 @@ class Session:
         self.whole = True  # the last run was the page's, not a fragment's
         self.page_hash = ""
         self.opened = False  # the page's first run has finished
+        self.buttons: dict[str, str] = {}  # a button's key (a form's: "submit") → its id
+        self.alerts: list[tuple[str, str]] = []  # ("success" | "warning" | "error" | "info", text)
+        self.every: tuple[float, str] | None = None  # a fragment's timer: (seconds, its id)
 
-    async def run(self, ws, states=()) -> None:
+    async def run(self, ws, states=(), fragment: str = "") -> None:
+        """One run of the page (or of ``fragment``, as its timer asks): ``states`` are the
+        widgets changed, (id, value); True presses a button."""
         msg = BackMsg()
         msg.rerun_script.query_string = f"lang=en&{self.link}"
         msg.rerun_script.page_name = self.page
         msg.rerun_script.page_script_hash = self.page_hash
+        msg.rerun_script.fragment_id = fragment
         for widget_id, value in states:  # (as a browser does: a fragment's widget reruns it)
             msg.rerun_script.fragment_id = self.fragments.get(widget_id, "")
             state = msg.rerun_script.widget_states.widgets.add()
             state.id = widget_id
-            if self.widgets.get(widget_id.rsplit("-", 1)[-1], ("", "slider"))[1] == "number":
+            if value is True:
+                state.trigger_value = True
+            elif self.widgets.get(key_of(widget_id), ("", "slider"))[1] == "number":
                 state.string_value = repr(float(value))  # typed (ui/numbers.py), lang=en
             else:
                 state.double_array_value.data.append(value)
@@ -62,12 +70,15 @@ class Session:
         await ws.send(msg.SerializeToString())
         self.metrics, self.figure_bytes, self.drawn, self.kinds = {}, 0, set(), set()
         self.charts = self.script_bytes = self.written = 0
+        self.alerts = []
         while True:
             fm = ForwardMsg()
             fm.ParseFromString(await ws.recv())
             kind = fm.WhichOneof("type")
             if kind == "navigation":
                 self.page_hash = fm.navigation.page_script_hash
+            elif kind == "auto_rerun":
+                self.every = (fm.auto_rerun.interval, fm.auto_rerun.fragment_id)
             elif kind == "delta" and fm.delta.WhichOneof("type") == "new_element":
                 self._element(fm.delta.new_element, fm.delta.fragment_id)
             elif kind == "script_finished":
@@ -88,10 +99,16 @@ class Session:
         self.kinds.add(which)
         if which in ("slider", "text_input"):  # a number is typed as text (ui/numbers.py)
             widget_id = getattr(element, which).id
-            key = widget_id.rsplit("-", 1)[-1]
+            key = key_of(widget_id)
             self.widgets[key] = (widget_id, "slider" if which == "slider" else "number")
             self.fragments[widget_id] = fragment
             self.drawn.add(key)
+        elif which == "button":
+            key = "submit" if element.button.is_form_submitter else key_of(element.button.id)
+            self.buttons[key] = element.button.id
+            self.fragments[element.button.id] = fragment
+        elif which == "alert":
+            self.alerts.append((ALERTS.get(element.alert.format, "info"), element.alert.body))
         elif which == "download_button" and element.download_button.url:
             self.written += 1
         elif which == "exception":
@@ -102,6 +119,14 @@ class Session:
             self.figure_bytes += len(element.bidi_component.bytes)
             self.script_bytes += len(element.bidi_component.js_content)
             self.charts += 1
+
+
+ALERTS = {1: "error", 2: "warning", 3: "info", 4: "success"}  # streamlit.proto Alert.Format
+
+
+def key_of(widget_id: str) -> str:
+    """A widget's own key from its id (``$$ID-<hash>-<key>``; a key may hold "-")."""
+    return widget_id.split("-", 2)[-1]
 
 
 def percentile(values: list[float], q: float) -> float:

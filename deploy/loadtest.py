@@ -3,6 +3,10 @@
 
     .venv/bin/python deploy/loadtest.py                      # starts the app itself, 30 sessions, 120 s
     .venv/bin/python deploy/loadtest.py --url http://127.0.0.1:8080 --sessions 40 --seconds 300
+    .venv/bin/python deploy/loadtest.py --class 150 --seconds 120 --json [--fault kill|database]
+
+``--class N`` is a class at once (deploy/classload.py): deploy/start.sh started here (two app
+processes behind nginx, on PostgreSQL), N students checking steps, a lecturer's view open.
 
 Loopback only, and it stops by itself. Each session works one chapter page; on the
 kinetostatics page every answer is checked against the solver run here for that
@@ -17,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import json
 import math
 import random
 import statistics
@@ -124,7 +129,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--url", help="a running app (http://127.0.0.1:PORT); default: start one")
     parser.add_argument("--sessions", type=int, default=30)
     parser.add_argument("--seconds", type=float, default=120.0)
+    parser.add_argument("--class", dest="students", type=int, metavar="N",
+                        help="a class of N students on deploy/start.sh (deploy/classload.py)")
+    parser.add_argument("--fault", choices=("kill", "database"),
+                        help="with --class: kill -9 an app process, or stop PostgreSQL for 10 s, "
+                             "half-way through")
+    parser.add_argument("--json", action="store_true", help="with --class: end with one JSON line")
     args = parser.parse_args(argv)
+    if args.students:
+        return _class(args)
     server = None
     if args.url:
         base = urlparse(args.url)
@@ -163,6 +176,18 @@ def main(argv: list[str] | None = None) -> int:
     for line in (report.errors + report.wrong)[:10]:
         print("  " + line)
     return 1 if report.errors or report.wrong or not times else 0
+
+
+def _class(args) -> int:
+    """``--class N``: the figures, and as the last line the JSON the issue asks for."""
+    from deploy.classload import class_load
+
+    found = class_load(args.students, args.seconds, args.fault)
+    if not args.json:
+        for name, value in found.items():
+            print(f"{name}: {value}")
+    print(json.dumps(found))
+    return 1 if found["errors"] or found["sent"] == 0 else 0
 
 
 if __name__ == "__main__":

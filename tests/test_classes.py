@@ -90,6 +90,19 @@ def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
         assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0002"
 
 
+def test_a_fresh_process_s_first_sessions_arriving_at_once_make_one_store(tmp_path):
+    """Eight threads (a fresh app process's first students) ask for the store at once: the
+    schema is made once and each gets the same engine (two migrations at once broke)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    url = f"sqlite:///{tmp_path / 'fresh.db'}"
+    with ThreadPoolExecutor(8) as pool:
+        made = list(pool.map(lambda _: store.engine(url), range(8)))
+    assert len({id(m) for m in made}) == 1
+    code, _ = store.create("zbirka-3.1", "plans", url=url)
+    assert store.find(code, url=url).method == "plans"
+
+
 def test_a_store_made_by_the_first_migration_is_upgraded_with_its_checks_kept(url):
     """A faculty's store from before the term column: the start command's migration adds it,
     and the checks stored before come back with no term."""

@@ -9,17 +9,13 @@ from __future__ import annotations
 import os
 import shutil
 import signal
-import socket
-import subprocess
-import tempfile
 import time
-import urllib.request
 from pathlib import Path
 
 import pytest
 
 from classes import store
-from deploy.client import free_port
+from deploy.classload import app_pid, healthy, start_deploy
 
 from .test_browser import CHROMIUM, FLAGS, wait_idle
 from .test_classes import PG_BIN
@@ -35,81 +31,19 @@ if shutil.which("nginx") is None or PG_BIN is None:
                 allow_module_level=True)
 
 
-def app_pid(port: int) -> int:
-    """The app process serving ``port`` (its command line names the port)."""
-    for proc in Path("/proc").iterdir():
-        try:
-            args = (proc / "cmdline").read_bytes().split(b"\0")
-        except OSError:
-            continue
-        if b"scripts/serve.py" in args and str(port).encode() in args:
-            return int(proc.name)
-    raise LookupError(f"no app process on port {port}")
-
-
-def healthy(address: str, seconds: float = 60) -> None:
-    deadline = time.monotonic() + seconds
-    while True:
-        try:
-            urllib.request.urlopen(f"{address}/_stcore/health", timeout=2)
-            return
-        except OSError:
-            if time.monotonic() > deadline:
-                raise
-            time.sleep(0.5)
-
-
-def free_pair() -> int:
-    """The first of two free ports in a row (the app processes')."""
-    for _ in range(50):
-        port = free_port()
-        try:
-            with socket.socket() as s:
-                s.bind(("127.0.0.1", port + 1))
-            return port
-        except OSError:
-            continue
-    raise RuntimeError("no two free ports in a row")
-
-
 @pytest.fixture(scope="module")
 def deployed():
-    """deploy/start.sh running: (nginx's address, the app processes' addresses, store URL)."""
-    pgdata = Path(tempfile.mkdtemp(prefix="mz-deploy-pg-"))
-    if os.getuid() == 0:
-        shutil.chown(pgdata, "postgres")
-    port, first = free_port(), free_pair()
-    env = {**os.environ, "PROCESSES": "2", "PORT": str(port), "FIRST_APP_PORT": str(first),
-           "MEHANIZMI_PGDATA": str(pgdata)}
-    env.pop("MEHANIZMI_DATABASE_URL", None)
-    script = subprocess.Popen(["bash", "deploy/start.sh"], cwd=ROOT, env=env, text=True,
-                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
-    url, lines = None, []
-    deadline = time.monotonic() + 180
-    while time.monotonic() < deadline:
-        line = script.stdout.readline()
-        if not line:
-            break
-        lines.append(line)
-        if line.startswith("class store ready: "):
-            url = line.split(": ", 1)[1].strip()
-        if line.startswith("Mehanizmi: "):
-            break
-    assert url and url.startswith("postgresql+psycopg://"), "".join(lines)
-    apps = [f"http://127.0.0.1:{first + i}" for i in range(2)]
-    for address in [f"http://127.0.0.1:{port}", *apps]:  # each process answers its health check
-        healthy(address)
-    yield f"http://127.0.0.1:{port}", apps, url, script, pgdata
-    if script.poll() is None:
-        script.send_signal(signal.SIGTERM)
-        script.wait(timeout=60)
-    shutil.rmtree(pgdata, ignore_errors=True)
+    """deploy/start.sh running, with a PostgreSQL of its own in a temporary folder."""
+    running = start_deploy()
+    yield running
+    running.stop()
 
 
 def test_a_student_behind_nginx_resumes_on_either_process_from_postgresql(deployed):
     from playwright.sync_api import sync_playwright
 
-    proxy, apps, url, script, pgdata = deployed
+    proxy, url, script, pgdata = deployed.proxy, deployed.database, deployed.script, deployed.pgdata
+    apps = [f"http://127.0.0.1:{port}" for port in deployed.ports]
     assert (pgdata / "PG_VERSION").exists()  # its own server, its data where it was told
     code, key = store.create("zbirka-3.1", "plans", url=url)
     with sync_playwright() as p:
@@ -129,11 +63,11 @@ def test_a_student_behind_nginx_resumes_on_either_process_from_postgresql(deploy
             other.goto(app + link)
             other.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=60_000)
             other.context.close()
-        killed = app_pid(int(apps[0].rsplit(":", 1)[1]))
+        killed = app_pid(deployed.ports[0])
         os.kill(killed, signal.SIGKILL)  # a process falls over: started again, nothing lost
         time.sleep(1.5)
         healthy(apps[0])
-        assert app_pid(int(apps[0].rsplit(":", 1)[1])) != killed
+        assert app_pid(deployed.ports[0]) not in (None, killed)
         student.reload()  # through nginx, to whichever process: the progress from the store
         student.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=60_000)
         browser.close()
