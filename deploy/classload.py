@@ -60,6 +60,7 @@ class ClassReport:
     errors: list[str] = field(default_factory=list)
     not_saved: int = 0
     reconnects: int = 0
+    pages: Report = field(default_factory=Report)  # the students' page openings and reruns
 
 
 @dataclass
@@ -203,10 +204,10 @@ async def student(url: str, code: str, token: str, steps: dict[str, Step], until
         try:
             async with websockets.connect(url, subprotocols=["streamlit"], max_size=None,
                                           open_timeout=30, ping_timeout=60) as ws:
-                session = Session(url, "velocity_plans", link, Report())
+                session = Session(url, "velocity_plans", link, report.pages)
                 await session.run(ws)
                 while time.monotonic() < until:
-                    step_id = next((k.split("_", 3)[3] for k in session.widgets
+                    step_id = next((k.split("_", 3)[3] for k in session.drawn  # (this run's)
                                     if k.startswith(("pr_plans_len_", "pr_plans_value_"))), None)
                     if step_id is None:  # the store down at the page's opening: asked again
                         await asyncio.sleep(1.0)
@@ -360,4 +361,5 @@ def class_load(students: int, seconds: float, kind: str | None = None) -> dict:
             "view_p50_ms": ms(delays, 0.5), "view_p95_ms": ms(delays, 0.95),
             "fault": kind, "lost": missing, "verdict_disagrees": disagree,
             "not_saved": report.not_saved, "reconnects": report.reconnects,
+            "open_p50_ms": ms(report.pages.opening, 0.5), "open_p95_ms": ms(report.pages.opening, 0.95),
             "seconds": seconds, **usage, "first_errors": report.errors[:5]}

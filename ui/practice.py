@@ -17,6 +17,7 @@ from figures.practice import practice_figure
 from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, polar
 from ui import classroom
 from ui.export import chart
+from ui.fragments import rerun_here
 from ui.i18n import num, t
 from ui.numbers import Refused, number_field, refusal
 from ui.present import look
@@ -116,7 +117,7 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
         classroom.give(state["seat"], progress, step,
                        at - step.tail if step.kind == "vector" else at)
         state["revision"] += 1
-        st.rerun()
+        rerun_here()
 
 
 def _typing(step: Step, key: str, state: dict) -> None:
@@ -148,7 +149,7 @@ def _typing(step: Step, key: str, state: dict) -> None:
         else:
             answer = values[0] / factor
         classroom.give(state["seat"], state["progress"], step, answer)
-    st.rerun()  # the verdict, with the step's prompt and sheet brought to the screen
+    rerun_here()  # the verdict, with the step's prompt and sheet brought to the screen
 
 
 def _feedback(step: Step, progress: Progress) -> None:
