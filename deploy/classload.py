@@ -95,15 +95,15 @@ def consecutive_ports() -> int:
     raise RuntimeError("no two free ports in a row")
 
 
-def start_deploy(processes: int = 2) -> Deploy:
-    """deploy/start.sh with its own PostgreSQL in a temporary folder; returns when nginx and
-    every process answer."""
+def start_deploy(processes: int = 2, app: str = "app.py") -> Deploy:
+    """deploy/start.sh serving ``app`` with its own PostgreSQL in a temporary folder; returns
+    when nginx and every process answer."""
     pgdata = Path(tempfile.mkdtemp(prefix="mz-deploy-pg-"))
     if os.getuid() == 0:
         shutil.chown(pgdata, "postgres")
     port, first = free_port(), consecutive_ports()
     env = {**os.environ, "PROCESSES": str(processes), "PORT": str(port),
-           "FIRST_APP_PORT": str(first), "MEHANIZMI_PGDATA": str(pgdata)}
+           "FIRST_APP_PORT": str(first), "MEHANIZMI_PGDATA": str(pgdata), "APP": app}
     env.pop("MEHANIZMI_DATABASE_URL", None)
     script = subprocess.Popen(["bash", "deploy/start.sh"], cwd=ROOT, env=env, text=True,
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
@@ -345,9 +345,13 @@ async def _run(deploy: Deploy, students: int, seconds: float, kind: str | None) 
     return report, store.export(code, key, url=deploy.database), usage
 
 
-def class_load(students: int, seconds: float, kind: str | None = None) -> dict:
-    """The whole run on a deploy of its own: the figures as one dict (the JSON line)."""
-    deploy = start_deploy()
+FLOOR = "bench/floor_class_app.py"  # a class's pages with nothing but the store behind them
+
+
+def class_load(students: int, seconds: float, kind: str | None = None, floor: bool = False) -> dict:
+    """The whole run on a deploy of its own (of the floor's pages with ``floor``): the
+    figures as one dict (the JSON line)."""
+    deploy = start_deploy(app=FLOOR if floor else "app.py")
     try:
         report, rows, usage = asyncio.run(_run(deploy, students, seconds, kind))
     finally:
@@ -359,7 +363,7 @@ def class_load(students: int, seconds: float, kind: str | None = None) -> dict:
             "sent": len(report.seen), "stored": len(rows),
             "check_p50_ms": ms(report.check_times, 0.5), "check_p95_ms": ms(report.check_times, 0.95),
             "view_p50_ms": ms(delays, 0.5), "view_p95_ms": ms(delays, 0.95),
-            "fault": kind, "lost": missing, "verdict_disagrees": disagree,
+            "fault": kind, "floor": floor, "lost": missing, "verdict_disagrees": disagree,
             "not_saved": report.not_saved, "reconnects": report.reconnects,
             "open_p50_ms": ms(report.pages.opening, 0.5), "open_p95_ms": ms(report.pages.opening, 0.95),
             "seconds": seconds, **usage, "first_errors": report.errors[:5]}

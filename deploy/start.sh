@@ -15,6 +15,7 @@ PROCESSES=${PROCESSES:-$(nproc)}
 PORT=${PORT:-8080}
 HOST=${HOST:-127.0.0.1}
 FIRST=${FIRST_APP_PORT:-8601}
+APP=${APP:-app.py}  # (bench/floor_class_app.py: the class load test's floor)
 sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
 wanted=""
 command -v nginx >/dev/null || wanted="nginx-light"
@@ -63,7 +64,7 @@ serve() {  # one app process on port $1, started again if it dies (its users rec
   local port=$1 child=""
   trap 'kill $child 2>/dev/null; wait $child 2>/dev/null; exit 0' TERM
   while true; do
-    STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/python scripts/serve.py app.py \
+    STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/python scripts/serve.py "$APP" \
       --server.port "$port" --server.address 127.0.0.1 --server.headless true \
       >> "$RUN/app-$port.log" 2>&1 &
     child=$!
