@@ -46,6 +46,7 @@ class Session:
         self.opened = False  # the page's first run has finished
         self.buttons: dict[str, str] = {}  # a button's key (a form's: "submit") → its id
         self.alerts: list[tuple[str, str]] = []  # ("success" | "warning" | "error" | "info", text)
+        self.texts: list[str] = []  # the markdown the last run wrote
         self.every: tuple[float, str] | None = None  # a fragment's timer: (seconds, its id)
 
     async def run(self, ws, states=(), fragment: str = "") -> None:
@@ -70,7 +71,7 @@ class Session:
         await ws.send(msg.SerializeToString())
         self.metrics, self.figure_bytes, self.drawn, self.kinds = {}, 0, set(), set()
         self.charts = self.script_bytes = self.written = 0
-        self.alerts = []
+        self.alerts, self.texts = [], []
         while True:
             fm = ForwardMsg()
             fm.ParseFromString(await ws.recv())
@@ -107,6 +108,8 @@ class Session:
             key = "submit" if element.button.is_form_submitter else key_of(element.button.id)
             self.buttons[key] = element.button.id
             self.fragments[element.button.id] = fragment
+        elif which == "markdown":
+            self.texts.append(element.markdown.body)
         elif which == "alert":
             self.alerts.append((ALERTS.get(element.alert.format, "info"), element.alert.body))
         elif which == "download_button" and element.download_button.url:
