@@ -101,3 +101,49 @@ def test_the_printable_summary_writes_the_language_s_numbers(monkeypatch):
     assert "cira" not in serbian  # a summary for the room: no nicknames
     monkeypatch.setattr("ui.i18n.current", lambda: "en")
     assert "33.3 %" in classview.printable(found, STEPS, rows)
+
+
+def test_a_class_of_variants_is_drawn_relative_and_split_by_a_given(monkeypatch):
+    """Three students with variants 1–3 of task 3.1 (seed 42): each right answer lands on the
+    task's right answer in the cloud, and the counts split in bands of the chosen given."""
+    from exams.codes import Settings, code
+    from exams.variants import from_code
+
+    settings = Settings("zbirka-3.1", 42)
+    class_code, key = store.create("zbirka-3.1", "plans", variants=code(settings, 1))
+    for n in range(3):
+        token = store.join(class_code, f"v{n}")
+        own = steps_for(from_code(code(settings, n + 1)).scene, "plans")[0]
+        z = complex(own.expected)  # this student's own right answer
+        store.record(class_code, token, own.id, [z.real, z.imag], "ok" if n else "sense", 1)
+    assert [r["variant"] for r in store.export(class_code, key)] == [code(settings, n) for n in (1, 2, 3)]
+
+    at = page("pages/class.py", lang="en", query=None, cv_all=True, cv_right=True)
+    at.query_params.update({"class": class_code, "key": key})
+    at.run()
+    assert not at.exception
+    cloud = chart(at, "cv_cloud")
+    right = [tr for tr in cloud["data"] if tr.get("name") == t("class.right", "en")][0]
+    ok = [tr for tr in cloud["data"] if tr.get("name") == f"{t('class.diagnosis_ok', 'en')} (2)"][0]
+    assert all(abs(x - right["x"][0]) < 1e-9 for x in ok["x"])  # each variant's right answer, on the task's
+    label = next(o for o in at.selectbox(key="cv_split").options if o != t("class.split_none", "en"))
+    at.selectbox(key="cv_split").set_value(label).run()
+    assert not at.exception
+    bands = at.dataframe[0].value
+    assert bands.shape[1] >= 1 and sum(int(c.rsplit("(", 1)[1].rstrip(")")) for c in bands.columns) == 3
+
+
+def test_a_number_step_shows_the_class_s_values_around_the_exact_one():
+    """A scalar step (ω₃): the values in bins stacked by diagnosis, every value counted once,
+    the exact one a line only when shown."""
+    from figures.classview import spread
+
+    step = next(s for s in STEPS if s.kind == "scalar")
+    exact = float(complex(step.expected).real)
+    given = [(exact, "ok"), (exact, "ok"), (-exact, "sense"), (1.5 * exact, "length")]
+    shown = spread(step, given, True, "ω", lambda key, **_: key).to_dict()
+    heights = {tr["name"]: sum(tr["y"]) for tr in shown["data"]}
+    assert heights == {"class.diagnosis_ok (2)": 2, "class.diagnosis_sense (1)": 1,
+                       "class.diagnosis_length (1)": 1}
+    assert [sh["x0"] for sh in shown["layout"]["shapes"]] == [exact]
+    assert not spread(step, given, False, "ω", lambda key, **_: key).to_dict()["layout"].get("shapes")
