@@ -1,11 +1,22 @@
 """Fixtures of the browser tests (tests/test_browser.py, tests/test_builder_browser.py): one
-app server and one chromium profile per test module."""
+app server and one chromium profile per test module.
+
+Every ``ui`` module is imported here, before any test: several tests patch
+``ui.i18n.current`` (AppTest formats a choice outside the script run), and a module first
+imported while it is patched would keep the patch in its ``from ui.i18n import current``
+for the rest of the session — a page in English then wrote "0,5" (order-dependent)."""
 
 import asyncio
+import importlib
+import pkgutil
 
 import pytest
 
+import ui
 from deploy.client import free_port, start_server, wait_ready
+
+for _module in pkgutil.iter_modules(ui.__path__):
+    importlib.import_module(f"ui.{_module.name}")
 
 
 @pytest.fixture(scope="module")
