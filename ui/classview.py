@@ -29,7 +29,7 @@ from mechanisms.link import PARAMETER, decode
 from methods.practice import DIAGNOSES, Step
 from methods.practice_steps import steps_for
 from ui.export import chart
-from ui.i18n import current, message, num, t
+from ui.i18n import current, message, num, t, title_of
 from ui.practice import shown_unit
 from ui.present import look
 
@@ -38,11 +38,16 @@ MARGIN = 256  # checks fetched again below the last one seen (see ``_fetch``)
 
 
 @st.cache_resource(max_entries=16, show_spinner=False)
-def class_steps(scene: str, method: str, at: float | None) -> list[Step]:
-    """The steps of a class (a preset id or a builder link's ``s=`` text)."""
-    made = decode(scene.removeprefix(f"{PARAMETER}=")) if scene.startswith(f"{PARAMETER}=") \
+def class_scene(scene: str):
+    """A class's scene (a preset id or a builder link's ``s=`` text)."""
+    return decode(scene.removeprefix(f"{PARAMETER}=")) if scene.startswith(f"{PARAMETER}=") \
         else load_preset(scene)
-    return steps_for(made, method, at)
+
+
+@st.cache_resource(max_entries=16, show_spinner=False)
+def class_steps(scene: str, method: str, at: float | None) -> list[Step]:
+    """The steps of a class's method on its scene."""
+    return steps_for(class_scene(scene), method, at)
 
 
 @st.cache_resource(max_entries=256, show_spinner=False)
@@ -86,13 +91,13 @@ def view(code: str, key: str) -> None:
         st.error(message(exc.args[0]))
         return
     st.header(t("class.results", code=found.code))
-    st.caption(f"{t(f'class.method_{found.method}')} · {found.scene if len(found.scene) < 40 else ''} "
-               f"· {t('class.view_live')}")
     try:
         steps = class_steps(found.scene, found.method, found.at)
     except (SceneError, ValueError) as exc:
         st.error(t("class.no_steps", why=message(exc)))
         return
+    st.caption(f"{t(f'class.method_{found.method}')} · {title_of(class_scene(found.scene))} · "
+               f"{t('class.view_live')}")
     symbols = {s.id: f"{i + 1}. {plain(s.symbol)}" for i, s in enumerate(steps)}
     # the lecturer's controls in one row (the sidebar is hidden on a projector)
     cols = st.columns([1, 1, 1, 2, 1], vertical_alignment="bottom")
@@ -260,7 +265,8 @@ def printable(found: Class, steps: list[Step], rows: list[dict]) -> str:
     return (f'<!DOCTYPE html><html lang="{current()}"><head><meta charset="utf-8">'
             f"<title>{html.escape(t('class.print_title', code=found.code))}</title><style>{PRINT_STYLE}</style>"
             f"</head><body><h1>{html.escape(t('class.print_title', code=found.code))}</h1>"
-            f"<p>{html.escape(t(f'class.method_{found.method}'))} · {html.escape(found.scene[:60])}</p>"
+            f"<p>{html.escape(t(f'class.method_{found.method}'))} · "
+            f"{html.escape(title_of(class_scene(found.scene)))}</p>"
             f"<table><tr>{head}</tr>{''.join(body)}</table><p>{legend}</p>"
             f'<p class="small">{html.escape(made)}</p></body></html>')
 
