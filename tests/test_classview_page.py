@@ -1,4 +1,4 @@
-"""The lecturer's class view (AppTest), in Serbian and English, on a class planted in the
+"""The lecturer's class view (AppTest), in Serbian (both scripts) and English, on a class planted in the
 store: hidden at first (only who reached each step), then revealed — the bars by diagnosis,
 the most common mistake in words, the cloud of the latest answers with the right one at a
 click, the students' table on demand — and the printable summary with decimal commas."""
@@ -41,7 +41,7 @@ def names(figure: dict) -> list[str]:
     return [str(tr.get("name", "")) for tr in figure["data"]]
 
 
-@pytest.mark.parametrize("lang", ["sr", "en"])
+@pytest.mark.parametrize("lang", ["sr", "en", "sr-cyrl"])
 def test_the_view_is_hidden_until_revealed_then_counts_and_draws_the_class(lang, monkeypatch):
     monkeypatch.setattr("ui.i18n.current", lambda: lang)  # (AppTest formats choices outside a run)
     code, key = planted()
