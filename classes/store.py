@@ -11,7 +11,9 @@ its SHA-256 (a stolen database does not open a class's results). Classes expire.
 
 from __future__ import annotations
 
+import csv
 import hashlib
+import io
 import json
 import os
 import secrets
@@ -317,6 +319,21 @@ def since(found: Class, after: int, url: str | None = None) -> list[dict]:
                           .where(checks.c.class_id == found.id, checks.c.id > after)
                           .order_by(checks.c.id)).all()
     return [{"id": r.id, **_row(r, r.nickname)} for r in rows]
+
+
+def as_csv(rows: list[dict]) -> str:
+    """Exported tries as CSV (FIELDS; the answer as its JSON): ``class export`` and the
+    lecturer's download write the same."""
+    out = io.StringIO()
+    writer = csv.DictWriter(out, FIELDS)
+    writer.writeheader()
+    writer.writerows({**row, "answer": json.dumps(row["answer"])} for row in rows)
+    return out.getvalue()
+
+
+def as_jsonl(rows: list[dict]) -> str:
+    """Exported tries as JSON lines, one a try."""
+    return "".join(json.dumps(row, ensure_ascii=False) + "\n" for row in rows)
 
 
 def _row(r, nickname: str) -> dict:

@@ -5,7 +5,6 @@ CODE --student ID``)."""
 
 from __future__ import annotations
 
-import csv
 import json
 import sys
 
@@ -68,13 +67,7 @@ def _join(args) -> int:
 
 def _export(args) -> int:
     rows = store.export(args.code, args.key)
-    if args.format == "jsonl":
-        for row in rows:
-            print(json.dumps(row, ensure_ascii=False))
-        return 0
-    writer = csv.DictWriter(sys.stdout, store.FIELDS)
-    writer.writeheader()
-    writer.writerows({**row, "answer": json.dumps(row["answer"])} for row in rows)
+    sys.stdout.write(store.as_jsonl(rows) if args.format == "jsonl" else store.as_csv(rows))
     return 0
 
 

@@ -45,12 +45,15 @@ def main(argv: list[str] | None = None) -> int:
     except (SceneError, StructureError, TrainError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    except (Unsolvable, BalanceError, NotSaved, StoreDown) as exc:
+    except StoreDown as exc:  # (a ClassError, but the store's fault, not the input's)
         print(f"error: {exc.args[0]}", file=sys.stderr)
         return 3
     except ClassError as exc:
         print(f"error: {exc.args[0]}", file=sys.stderr)
         return 2
+    except (Unsolvable, BalanceError, NotSaved) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 3
 
 
 def _parser() -> argparse.ArgumentParser:

@@ -20,9 +20,11 @@ import os
 import random
 import shutil
 import signal
+import socket
 import subprocess
 import tempfile
 import time
+import urllib.request
 from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -84,8 +86,6 @@ class Deploy:
 
 def consecutive_ports() -> int:
     """The first of two free ports in a row (the app processes')."""
-    import socket
-
     for _ in range(50):
         port = free_port()
         with socket.socket() as s:
@@ -126,8 +126,6 @@ def start_deploy(processes: int = 2, app: str = "app.py") -> Deploy:
 
 
 def healthy(address: str, seconds: float = 90) -> None:
-    import urllib.request
-
     deadline = time.monotonic() + seconds
     while True:
         try:

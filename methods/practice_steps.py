@@ -21,9 +21,7 @@ from mechanisms import Scene, SceneError
 from mechanisms.gears import GearTrain
 from mechanisms.rotor import Rotor
 from mechanisms.schema import DRIVER
-from solvers.balancing import Balance
-from solvers.balancing import balance as solve_balance
-from solvers.balancing import unit as rotation
+from solvers.balancing import Balance, balance as solve_balance, unit as rotation
 from solvers.diagnostics import solve_instant
 from solvers.gears import TrainSolution, solve_train
 from solvers.kinematics import Motion, solve
@@ -31,8 +29,7 @@ from solvers.kinetostatics import Kinetostatics, analyse
 from solvers.paths import cycle_values
 
 from .compass import construction as compass_construction
-from .force_steps import latex_name
-from .force_steps import steps as force_construction
+from .force_steps import latex_name, steps as force_construction
 from .gear_steps import speed_steps
 from .lever_steps import construction as lever_construction
 from .plans import POLE, Plans, build, is_construction, readings

@@ -27,8 +27,7 @@ from ui.docs import method_doc
 from ui.export import Rows, chart, show_table
 from ui.firstpaint import first_run, waiting
 from ui.fragments import Places, at_position, fragment
-from ui.i18n import current as current_language
-from ui.i18n import latex, message, num, sci, t, title_of
+from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
 from ui.numbers import number_field
 from ui.present import look

@@ -14,10 +14,8 @@ from figures.raw import RawFigure
 from figures.style import Look
 from mechanisms.schema import Scene
 from methods import practice_steps
-from methods.force_steps import equation
-from methods.force_steps import steps as force_steps
-from methods.lever_steps import construction as lever_construction
-from methods.lever_steps import latex as lever_latex
+from methods.force_steps import equation, steps as force_steps
+from methods.lever_steps import construction as lever_construction, latex as lever_latex
 from methods.scales import polygon_scale
 from reports.values import has_loads
 from solvers.diagnostics import Unsolvable, format_ranges, sweep_values, torque_resolution

@@ -12,8 +12,7 @@ from figures.style import Look
 from mechanisms.schema import Scene
 from methods import practice_steps
 from methods.analytic import derivation, equations, solved_values
-from methods.contour import contour, free_points
-from methods.contour import latex as contour_latex
+from methods.contour import contour, free_points, latex as contour_latex
 from methods.plans import Plans, build, describe, readings
 from methods.scales import plan_scales
 from solvers.diagnostics import Unsolvable, solve_instant

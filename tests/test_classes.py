@@ -4,6 +4,8 @@ scripts/test.sh; ``initdb`` and ``pg_ctl`` on a free port as the ``postgres`` us
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import multiprocessing
 import os
@@ -86,6 +88,11 @@ def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
                                                "diagnosis", "term", "try", "time", "variant"}
     assert {r["nickname"] for r in rows} == {"Ana", "student 2"}
     assert rows[0]["answer"] == [0.19, -3.09]
+    # written as the command line and the lecturer's download write them, and read back
+    assert [json.loads(line) for line in store.as_jsonl(rows).splitlines()] == rows
+    table = list(csv.DictReader(io.StringIO(store.as_csv(rows))))
+    assert [list(r) for r in table] == [list(store.FIELDS)] * 3
+    assert [json.loads(r["answer"]) for r in table] == [r["answer"] for r in rows]
     with store.engine(url).connect() as db:  # the schema came from the migrations
         assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0002"
 

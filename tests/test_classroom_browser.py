@@ -8,10 +8,8 @@ from __future__ import annotations
 import pytest
 
 from classes import store
-from cli.practice import steps_for
-from mechanisms import load_preset
 
-from .test_browser import CHROMIUM, FLAGS, wait_idle
+from .test_browser import CHROMIUM, FLAGS, check_first_step, wait_idle
 
 pytestmark = pytest.mark.browser
 
@@ -25,19 +23,6 @@ def chromium():
         phone = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
         yield browser, phone
         browser.close()
-
-
-def check_first_step(page, turn: float = 0.0) -> None:
-    """Type the first step of task 3.1's plans the Serbian way — right, or turned by ``turn``
-    degrees — press Check and wait for the verdict (right: a success; else a warning)."""
-    step = steps_for(load_preset("zbirka-3.1"), "plans")[0]
-    z = complex(step.expected)
-    boxes = page.locator("[data-testid='stForm'] input")
-    boxes.nth(0).fill(f"{abs(z):.6g}".replace(".", ","))
-    boxes.nth(1).fill(f"{93.5768 + turn:.4f}".replace(".", ","))
-    page.get_by_role("button", name="Proveri").click()
-    verdict = "Success" if turn == 0 else "Warning"
-    page.locator(f"[data-testid='stAlertContent{verdict}']").wait_for(timeout=30_000)
 
 
 def test_a_class_is_started_joined_from_phones_and_resumed_after_a_reload(app_url, chromium,

@@ -12,8 +12,7 @@ import pytest
 
 from classes import store
 
-from .test_browser import CHROMIUM, FLAGS, keep, wait_idle
-from .test_classroom_browser import check_first_step
+from .test_browser import CHROMIUM, FLAGS, check_first_step, keep, wait_idle
 
 pytestmark = pytest.mark.browser
 

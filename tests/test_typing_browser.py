@@ -6,15 +6,11 @@ other than the app's (ui/numbers.py, docs/i18n.md)."""
 
 from __future__ import annotations
 
-import math
 from urllib.parse import parse_qs, urlparse
 
 import pytest
 
-from cli.practice import steps_for
-from mechanisms import load_preset
-
-from .test_browser import CHROMIUM, FLAGS, keep, open_page, wait_idle
+from .test_browser import CHROMIUM, FLAGS, check_first_step, keep, open_page, wait_idle
 from .test_builder_browser import open_tab, shapes, type_cell
 
 pytestmark = pytest.mark.browser
@@ -105,18 +101,13 @@ def test_a_practice_answer_reads_a_comma_and_an_unreadable_one_is_named(app_url,
     page.get_by_text("Vežbaj", exact=True).click()
     page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
     wait_idle(page)
-    step = steps_for(load_preset("zbirka-3.1"), "plans")[0]
-    z = complex(step.expected)
-    boxes = page.locator("[data-testid='stForm'] input")
-    boxes.nth(0).fill(f"{abs(z):.6g}".replace(".", ","))
-    boxes.nth(1).fill(f"{math.degrees(math.atan2(z.imag, z.real)):.6g}".replace(".", ","))
-    page.get_by_role("button", name="Proveri").click()
-    page.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=30_000)
+    check_first_step(page)  # typed with decimal commas, in a browser set to English
     wait_idle(page)
 
     page.get_by_role("button", name="Sledeći korak").click()
     page.get_by_text("Korak 2 od").wait_for(timeout=30_000)
     wait_idle(page)
+    boxes = page.locator("[data-testid='stForm'] input")
     boxes.nth(0).fill("0,3,5")
     boxes.nth(1).fill("")
     page.get_by_role("button", name="Proveri").click()

@@ -11,7 +11,6 @@ that reruns every second and fetches only the checks stored since the last one.
 from __future__ import annotations
 
 import html
-import json
 from datetime import datetime
 
 import pandas as pd
@@ -113,7 +112,7 @@ def view(code: str, key: str) -> None:
         split = _split_choice(found)
     shown = set(symbols) if every else set(chosen)
     live(found, steps, shown, names, look_at, right, split)
-    exports(found, steps)
+    exports(found, key, steps)
 
 
 def _split_choice(found: Class) -> str | None:
@@ -222,24 +221,19 @@ def _by_band(found: Class, rows: list[dict], steps: list[Step], shown: set[str],
                  width="stretch")
 
 
-def exports(found: Class, steps: list[Step]) -> None:
-    """Every try as CSV or JSON lines (as ``class export``), and a printable summary; made
-    when clicked, from the store."""
-    def rows() -> list[dict]:
-        return [{k: v for k, v in r.items() if k != "id"} for r in store.since(found, 0)]
-
+def exports(found: Class, key: str, steps: list[Step]) -> None:
+    """Every try as CSV or JSON lines (what ``class export`` writes), and a printable
+    summary; made when clicked, from the store."""
     cols = st.columns(3)
-    cols[0].download_button(t("class.export_csv"), lambda: pd.DataFrame(
-        rows(), columns=list(store.FIELDS)).assign(answer=lambda d: d["answer"].map(json.dumps))
-        .to_csv(index=False).encode("utf-8"), f"class-{found.code}.csv", mime="text/csv",
-        on_click="ignore", icon=":material/download:")
-    cols[1].download_button(t("class.export_jsonl"), lambda: "".join(
-        json.dumps(r, ensure_ascii=False) + "\n" for r in rows()).encode("utf-8"),
-        f"class-{found.code}.jsonl", mime="application/jsonl", on_click="ignore",
-        icon=":material/download:")
-    cols[2].download_button(t("class.export_print"), lambda: printable(found, steps, rows()).encode("utf-8"),
-                            f"class-{found.code}.html", mime="text/html", on_click="ignore",
-                            icon=":material/print:")
+    cols[0].download_button(t("class.export_csv"), lambda: store.as_csv(
+        store.export(found.code, key)).encode("utf-8"), f"class-{found.code}.csv",
+        mime="text/csv", on_click="ignore", icon=":material/download:")
+    cols[1].download_button(t("class.export_jsonl"), lambda: store.as_jsonl(
+        store.export(found.code, key)).encode("utf-8"), f"class-{found.code}.jsonl",
+        mime="application/jsonl", on_click="ignore", icon=":material/download:")
+    cols[2].download_button(t("class.export_print"), lambda: printable(
+        found, steps, store.export(found.code, key)).encode("utf-8"), f"class-{found.code}.html",
+        mime="text/html", on_click="ignore", icon=":material/print:")
 
 
 def printable(found: Class, steps: list[Step], rows: list[dict]) -> str:
