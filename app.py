@@ -2,6 +2,7 @@
 
 import streamlit as st
 
+from ui.boundary import boundary
 from ui.chapters import BUILDER, CHAPTERS, CLASSROOM, VARIANTS
 from ui.classroom import sidebar_join
 from ui.firstpaint import begin_run, end_run
@@ -42,12 +43,13 @@ def navigation_pages() -> list[st.Page]:
 # which fails in a room without internet and tells a third party of every visit
 st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide")
 language_picker()
-sidebar_join()
 projector_switch()
 frame_css()
 page = st.navigation(navigation_pages())
+sidebar_join()  # (after the pages are known: a first run after a restart may switch at once)
 begin_run(page.url_path)
 try:
-    page.run()
+    with boundary():
+        page.run()
 finally:  # (st.stop() and a rerun leave run() by an exception)
     end_run()

@@ -36,8 +36,8 @@ def measure(url: str, checks: int) -> tuple[list[float], list[float]]:
         alone.append(time.perf_counter() - start)
         start = time.perf_counter()
         verdict = grade(step, answer)
-        store.record(code, token, step.id, [answer.real, answer.imag], verdict.diagnosis, 1,
-                     url=url)
+        store.record(code, token, step.id, [answer.real, answer.imag], verdict.diagnosis,
+                     store.new_check(), url=url)
         stored.append(time.perf_counter() - start)
     return alone, stored
 

@@ -33,7 +33,7 @@ def student() -> None:
             tries = done.setdefault(step.id, [])
             try:
                 store.record(code, token, step.id, answer if step.kind == "scalar" else
-                             [answer.real, answer.imag], verdict.diagnosis, len(tries) + 1)
+                             [answer.real, answer.imag], verdict.diagnosis, store.new_check())
             except store.NotSaved:
                 st.error("Not saved")
             else:

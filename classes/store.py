@@ -15,10 +15,12 @@ import csv
 import hashlib
 import io
 import json
+import math
 import os
 import secrets
 import threading
 import time
+import uuid
 from dataclasses import dataclass
 from datetime import UTC, datetime, timedelta
 from functools import cache, wraps
@@ -42,7 +44,7 @@ ANSWER_MAX = 200  # characters of an answer's JSON
 PER_SECOND = 5  # checks a student may send in a second; more are slowed, not refused
 METHODS = ("compass", "plans", "forces", "lever", "willis", "balance")
 FIELDS = ("student", "nickname", "step", "answer", "diagnosis", "term", "try", "time",
-          "variant")  # of every try exported, in this order
+          "variant", "check")  # of every try exported, in this order
 REVEALED = "revealed"  # a check's diagnosis when the student asked to be shown the step
 
 metadata = sa.MetaData()
@@ -79,7 +81,8 @@ checks = sa.Table(
     sa.Column("try", sa.Integer, nullable=False),
     sa.Column("time", sa.DateTime(timezone=True), nullable=False),
     sa.Column("variant", sa.String(64)),
-    sa.UniqueConstraint("student", "step", "try"))  # a check sent again is stored once
+    sa.Column("check_id", sa.String(36), nullable=False, unique=True),  # made with the check (0003)
+    sa.UniqueConstraint("student", "step", "try"))  # tries numbered by the store, one each
 
 
 class ClassError(ValueError):
@@ -150,6 +153,16 @@ def _engine(url: str) -> sa.Engine:
             connection.execute("PRAGMA foreign_keys=ON")
     migrate(made)
     return made
+
+
+def reachable(url: str | None = None) -> bool:
+    """Whether the store answers now (a page waiting for it looks every few seconds)."""
+    try:
+        with engine(url).connect() as db:
+            db.execute(sa.text("SELECT 1"))
+    except sa.exc.SQLAlchemyError:
+        return False
+    return True
 
 
 def migrate(made: sa.Engine, to: str = "head") -> None:
@@ -251,14 +264,38 @@ def _student(found: Class, token: str, url: str | None) -> dict:
     return {"student": row.id, "nickname": row.nickname, "variant": row.variant}
 
 
-def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: int,
-           variant: str | None = None, term: str = "", url: str | None = None) -> None:
-    """Store one check, durably, before its verdict is shown (in a class of variants, with
-    the student's variant code unless ``variant`` names it). The same check sent again
-    (after "not saved") is stored once; a student sending more than PER_SECOND checks a
-    second waits. NotSaved when the store cannot take it."""
-    text = json.dumps(answer)
-    if len(text) > ANSWER_MAX or len(step) > 64 or len(term) > 64 or len(variant or "") > 64:
+def new_check() -> str:
+    """A check's id, made where the check is made (the page, the command line) and kept
+    until the store has it: the same id sent again is the same check."""
+    return uuid.uuid4().hex
+
+
+def answer_text(answer) -> str:
+    """An answer as the store keeps it: strict JSON of ``None``, a finite number or a pair
+    ``[x, y]`` of them; anything else is refused in words (ClassError), never stored."""
+    def finite(v) -> bool:
+        return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+    if not (answer is None or finite(answer)
+            or (isinstance(answer, (list, tuple)) and len(answer) == 2 and all(map(finite, answer)))):
+        raise ClassError(Text("class.bad_answer", answer=str(answer)[:40]))
+    text = json.dumps(answer if not isinstance(answer, tuple) else list(answer), allow_nan=False)
+    if len(text) > ANSWER_MAX:
+        raise ClassError(Text("class.too_long"))
+    return text
+
+
+def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
+           variant: str | None = None, term: str = "", url: str | None = None) -> int:
+    """Store one check, durably, before its verdict is shown: the try number the store gave
+    it (each student's tries of a step numbered 1, 2, … in the order they were stored, in
+    the statement that inserts). ``check`` is the check's id (``new_check``): sent again
+    (after "not saved", or twice by the network) it is stored once and its number returned;
+    every other check is stored, from any tab, phone or command line. In a class of variants
+    the student's variant code is kept unless ``variant`` names it. A student sending more
+    than PER_SECOND checks a second waits. NotSaved when the store cannot take it."""
+    text = answer_text(answer)
+    if len(step) > 64 or len(term) > 64 or len(variant or "") > 64 or not 0 < len(check) <= 36:
         raise ClassError(Text("class.too_long"))
     try:
         found = find(code, url)
@@ -268,21 +305,44 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, attempt: in
         made = engine(url)
         while _recent(made, who["student"]) >= PER_SECOND:
             time.sleep(0.2)  # a machine, not a person: slowed
-        values = {"class_id": found.id, "student": who["student"], "step": step,
-                  "answer": text, "diagnosis": diagnosis, "term": term or None, "try": attempt,
+        values = {"check_id": check, "class_id": found.id, "student": who["student"],
+                  "step": step, "answer": text, "diagnosis": diagnosis, "term": term or None,
                   "time": _now(), "variant": variant}
-        with made.begin() as db:
-            seen = db.execute(sa.select(checks.c.id).where(
-                checks.c.student == who["student"], checks.c.step == step,
-                checks.c["try"] == attempt)).first()
-            if seen is None:
-                db.execute(checks.insert().values(**values))
-    except sa.exc.IntegrityError:
-        return  # the same check, stored by its first sending meanwhile
+        for _ in range(RACES):
+            stored = _stored_try(made, check)
+            if stored is not None:
+                return stored  # the same check, sent again
+            try:
+                with made.begin() as db:
+                    db.execute(_numbered(values))
+            except sa.exc.IntegrityError:
+                continue  # another tab took this number (or sent this check) meanwhile
+            return _stored_try(made, check)
+        raise NotSaved("too many checks of this step at once")
     except StoreDown as exc:
         raise NotSaved(exc.args[-1]) from None
     except sa.exc.SQLAlchemyError as exc:
         raise NotSaved(str(exc)) from None
+
+
+RACES = 8  # tries at numbering a check when others of the same step are stored at once
+
+
+def _numbered(values: dict):
+    """The INSERT of one check whose try number is the next of its student's step, counted
+    in the same statement (two checks at once collide on the unique number, and one of
+    them numbers again)."""
+    after = (sa.select(sa.func.coalesce(sa.func.max(checks.c["try"]), 0) + 1)
+             .where(checks.c.student == values["student"], checks.c.step == values["step"])
+             .scalar_subquery())
+    columns = [*values, "try"]
+    row = [sa.literal(v, type_=checks.c[k].type) for k, v in values.items()] + [after]
+    return checks.insert().from_select(columns, sa.select(*row))
+
+
+def _stored_try(made: sa.Engine, check: str) -> int | None:
+    with made.connect() as db:
+        return db.execute(sa.select(checks.c["try"]).where(checks.c.check_id == check)).scalar()
 
 
 def _recent(made: sa.Engine, token: str) -> int:
@@ -298,13 +358,12 @@ def tries(code: str, token: str, url: str | None = None) -> list[dict]:
     student(code, token, url)
     with engine(url).connect() as db:
         rows = db.execute(sa.select(checks).where(checks.c.student == token)
-                          .order_by(checks.c.time, checks.c.id)).all()
+                          .order_by(checks.c.id)).all()
     return [_row(r, "") for r in rows]
 
 
 def export(code: str, key: str, url: str | None = None) -> list[dict]:
-    """Every try of the class, for its lecturer: student, nickname, step, answer,
-    diagnosis, term, try, time, variant."""
+    """Every try of the class, for its lecturer, in the order stored: FIELDS."""
     return [{k: v for k, v in row.items() if k != "id"} for row in since(opened(code, key, url), 0, url)]
 
 
@@ -327,19 +386,20 @@ def as_csv(rows: list[dict]) -> str:
     out = io.StringIO()
     writer = csv.DictWriter(out, FIELDS)
     writer.writeheader()
-    writer.writerows({**row, "answer": json.dumps(row["answer"])} for row in rows)
+    writer.writerows({**row, "answer": json.dumps(row["answer"], allow_nan=False)} for row in rows)
     return out.getvalue()
 
 
 def as_jsonl(rows: list[dict]) -> str:
     """Exported tries as JSON lines, one a try."""
-    return "".join(json.dumps(row, ensure_ascii=False) + "\n" for row in rows)
+    return "".join(json.dumps(row, ensure_ascii=False, allow_nan=False) + "\n" for row in rows)
 
 
 def _row(r, nickname: str) -> dict:
     return {"student": r.student, "nickname": nickname, "step": r.step,
             "answer": json.loads(r.answer), "diagnosis": r.diagnosis, "term": r.term or "",
-            "try": r._mapping["try"], "time": _aware(r.time).isoformat(), "variant": r.variant}
+            "try": r._mapping["try"], "time": _aware(r.time).isoformat(), "variant": r.variant,
+            "check": r.check_id}
 
 
 @_reachable

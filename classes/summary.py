@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections import Counter, defaultdict
 from dataclasses import dataclass, field
 
-from methods.practice import TRIES
+from methods.practice import DIAGNOSES, TRIES
 
 from .store import REVEALED
 
@@ -27,13 +27,15 @@ class StepCount:
     mistakes: Counter = field(default_factory=Counter)  # (diagnosis, term) → students who made it
 
     @property
-    def mistake(self) -> tuple[str, str, int] | None:
-        """The wrong answer most students of the step gave at some try: (diagnosis, term,
-        students); ties go to the one met first."""
+    def mistake(self) -> tuple[int, list[tuple[str, str]]] | None:
+        """The wrong answers most students of the step gave at some try: (students, every
+        (diagnosis, term) that many made). A tie is all of them, in the grader's order of
+        diagnoses, then by term: the same data says the same sentence in any process."""
         if not self.mistakes:
             return None
-        (diagnosis, term), students = self.mistakes.most_common(1)[0]
-        return diagnosis, term, students
+        most = max(self.mistakes.values())
+        tied = [made for made, n in self.mistakes.items() if n == most]
+        return most, sorted(tied, key=lambda m: (DIAGNOSES.index(m[0]), m[1]))
 
 
 def by_student(rows: list[dict]) -> dict[tuple[str, str], list[dict]]:

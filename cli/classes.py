@@ -9,7 +9,8 @@ import json
 import sys
 
 from classes import store
-from mechanisms import load_preset
+from classes.steps import steps_of, variant_of
+from mechanisms import SceneError, load_preset
 from mechanisms.link import PARAMETER
 
 
@@ -87,11 +88,36 @@ def _migrate(args) -> int:
     return 0
 
 
-def stored(data: dict, code: str, token: str, answers: dict) -> None:
-    """A graded answers file's checks, stored as the student's (the first try of each step
-    answered)."""
+def stored(data: dict, code: str, token: str, answers: dict) -> dict[str, int]:
+    """A graded answers file's checks, stored as the student's: each answered step one
+    more try, numbered by the store (a second hand-in is the steps' next tries, never
+    dropped). Step id → the try it was stored as."""
+    out = {}
     for result in data["results"]:
         if result["id"] in answers:
-            store.record(code, token, result["id"], answers[result["id"]], result["diagnosis"],
-                         1, term=result["term"])
+            out[result["id"]] = store.record(code, token, result["id"], answers[result["id"]],
+                                             result["diagnosis"], store.new_check(),
+                                             term=result["term"])
+    return out
 
+
+def student_steps(code: str, token: str, method: str, given: tuple | None) -> list:
+    """The steps this student practises in the class (the class's scene, or their variant),
+    which their answers are graded on. ``given``: (scene, steps) named on the command line,
+    refused (SceneError, exit 2) unless they are those steps — another scene, method, instant
+    or variant would store grades of another task."""
+    found = store.find(code)
+    variant = store.student(code, token)["variant"]
+    own = steps_of(found, variant)
+    if method != found.method or (given is not None and _signature(given[1]) != _signature(own)):
+        named = f"{method} on {given[0].id}" if given is not None else method
+        mine = variant_of(found, variant) or found.scene
+        raise SceneError(f"answers: these are the steps of {named}; class {found.code} "
+                         f"practises {found.method} on {mine[:60]}"
+                         + (f" at {found.at:g}" if found.at is not None else "")
+                         + " (leave the scene out: the class's is taken)")
+    return own
+
+
+def _signature(steps: list) -> list[tuple[str, str]]:
+    return [(s.id, f"{complex(s.expected):.9g}") for s in steps]

@@ -186,11 +186,17 @@ def _link(args) -> int:
 def _practice(args) -> int:
     if bool(args.class_code) != bool(args.student) or (args.class_code and not args.answers):
         raise SceneError("--class and --student go together, with --answers")
-    if args.class_code:
-        store.student(args.class_code, args.student)  # a wrong code or student: exit code 2
-    data = practice.run(_load(args), args.method, args.at, args.answers)
-    if args.class_code:
-        classes.stored(data, args.class_code, args.student, practice.read_answers(args.answers))
+    if args.class_code:  # a wrong code or student, or another task's answers: exit code 2
+        given = None
+        if args.scene is not None or args.link is not None:
+            scene = _load(args)
+            given = (scene, practice_steps.steps_for(scene, args.method, args.at))
+        answers = practice.read_answers(args.answers)
+        data = practice.graded(classes.student_steps(args.class_code, args.student,
+                                                     args.method, given), answers)
+        data["stored"] = classes.stored(data, args.class_code, args.student, answers)
+    else:
+        data = practice.run(_load(args), args.method, args.at, args.answers)
     if args.json:
         return _print_json(data)
     if "steps" in data:
@@ -198,8 +204,10 @@ def _practice(args) -> int:
             print(f"{step['id']:24s} {step['asks']}: {step['expected']} ± {step['tolerance']:.3g} "
                   f"{step['unit']}")
         return 0
+    stored = data.get("stored", {})
     for result in data["results"]:
-        print(f"{result['id']:24s} {result['diagnosis']:12s} {result['hint']}")
+        kept = f" (stored as try {stored[result['id']]})" if result["id"] in stored else ""
+        print(f"{result['id']:24s} {result['diagnosis']:12s} {result['hint']}{kept}")
     print(f"score: {data['score']['ok']} of {data['score']['of']}")
     return 0
 

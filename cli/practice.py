@@ -49,15 +49,22 @@ def graded(steps: list[Step], answers: dict) -> dict:
 def read_answers(path: str) -> dict:
     """The answers file: ``{"answers": {"<id>": [x, y] or number}}`` (SceneError if not)."""
     try:
-        data = json.loads(Path(path).read_text(encoding="utf-8"))
+        data = json.loads(Path(path).read_text(encoding="utf-8"), parse_constant=_not_json)
     except OSError as exc:
         raise SceneError(f"answers: cannot read {path}: {exc.strerror}") from None
     except json.JSONDecodeError as exc:
         raise SceneError(f"answers: {path} is not JSON ({exc.msg}, line {exc.lineno})") from None
+    except ValueError as exc:  # (after JSONDecodeError, one of them)
+        raise SceneError(f"answers: {path} holds {exc}, which is not a number") from None
     if not isinstance(data, dict) or not isinstance(data.get("answers"), dict):
         raise SceneError(f'answers: {path} must hold {{"answers": {{"<step id>": [x, y] or a '
                          'number}}')
     return data["answers"]
+
+
+def _not_json(constant: str):
+    """JSON has no NaN or Infinity (Python's reader takes them): refused."""
+    raise ValueError(constant)
 
 
 def run(scene, method: str, at: float | None, answers_path: str | None) -> dict:

@@ -114,18 +114,22 @@ def _out(value, kind: str):
     return [float(value.real), float(value.imag)]
 
 
+def _finite(value) -> bool:
+    return (isinstance(value, (int, float)) and not isinstance(value, bool)
+            and math.isfinite(value))
+
+
 def answer_of(value, kind: str) -> complex | float | None:
-    """An answer as the command line or a page gives it: [x, y] or a number (None: none)."""
+    """An answer as the command line or a page gives it: [x, y] or a number (None: none);
+    anything else, NaN and infinities among them, is refused (ValueError)."""
     if value is None:
         return None
     if kind == "scalar":
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise ValueError(f"a number, got {value!r}")
+        if not _finite(value):
+            raise ValueError(f"a finite number, got {value!r}")
         return float(value)
-    ok = (isinstance(value, (list, tuple)) and len(value) == 2
-          and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value))
-    if not ok:
-        raise ValueError(f"a pair [x, y], got {value!r}")
+    if not (isinstance(value, (list, tuple)) and len(value) == 2 and all(map(_finite, value))):
+        raise ValueError(f"a pair [x, y] of finite numbers, got {value!r}")
     return complex(value[0], value[1])
 
 

@@ -5,9 +5,6 @@ stored (classes.store, docs/classes.md)."""
 
 from __future__ import annotations
 
-import io
-
-import segno
 import streamlit as st
 
 from classes import store
@@ -20,17 +17,12 @@ from ui.chapters import CLASSROOM
 from ui.classroom import METHODS
 from ui.classview import view
 from ui.i18n import current, message, t
+from ui.joinpanel import MADE, join_panel
 from ui.numbers import number_field
 from ui.scenes import preset_titles
 
 KINDS = {"compass": "linkage", "plans": "linkage", "forces": "linkage", "lever": "linkage",
          "willis": "gears", "balance": "rotor"}
-
-
-def base_url() -> str:
-    """The app's address as the browser sees it (for the join link and its QR code)."""
-    url = getattr(st.context, "url", "") or ""
-    return url.split("/class")[0].rstrip("/") if url else ""
 
 
 def start() -> None:
@@ -54,24 +46,9 @@ def start() -> None:
         except (ClassError, SceneError) as exc:
             st.error(message(exc.args[0] if isinstance(exc, ClassError) else exc))
             return
-        st.session_state["class_made"] = (code, key)  # the key is shown this once
+        # the page's address becomes the lecturer's link: any rerun or reload keeps it
+        st.query_params.update({"class": code, "key": key, MADE: "1"})
         st.rerun()
-
-
-def made(code: str, key: str) -> None:
-    """The join code, link and QR code to project; the lecturer's link, once."""
-    join = f"{base_url()}/class?join={code}"
-    st.markdown(f"## {t('class.code_is')}: `{code}`")
-    left, right = st.columns([2, 1])
-    with left:
-        st.caption(t("class.join_link"))
-        st.code(join, language=None)
-        st.warning(t("class.key_once"), icon=":material/key:")
-        st.code(f"{base_url()}/class?class={code}&key={key}", language=None)
-    with right:
-        qr = io.BytesIO()
-        segno.make(join, error="m").save(qr, kind="png", scale=12, border=2)
-        st.image(qr.getvalue(), caption=t("class.qr"), width="stretch")  # large, to project
 
 
 def join(code: str) -> None:
@@ -110,8 +87,13 @@ query = st.query_params
 if query.get("join"):
     join(query["join"])
 elif query.get("class") and query.get("key"):
-    view(query["class"], query["key"])
-elif st.session_state.get("class_made"):
-    made(*st.session_state.pop("class_made"))
+    top = st.container()  # the join code above the results, once the key opened them
+    if view(query["class"], query["key"]):
+        with top:
+            if query.get(MADE):
+                join_panel(query["class"], query["key"])
+            else:
+                st.button(t("class.show_panel"), icon=":material/qr_code:",
+                          on_click=lambda: st.query_params.update({MADE: "1"}))
 else:
     start()

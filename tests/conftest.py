@@ -4,10 +4,15 @@ app server and one chromium profile per test module.
 Every ``ui`` module is imported here, before any test: several tests patch
 ``ui.i18n.current`` (AppTest formats a choice outside the script run), and a module first
 imported while it is patched would keep the patch in its ``from ui.i18n import current``
-for the rest of the session — a page in English then wrote "0,5" (order-dependent)."""
+for the rest of the session — a page in English then wrote "0,5" (order-dependent).
+
+The error boundary (ui/boundary.py) lets exceptions through in the suite and in the servers
+it starts (``MEHANIZMI_ERRORS=raise``), with Streamlit's full details: a test sees a bug, not
+a polite sentence. tests/test_boundary.py turns both back to what users get."""
 
 import asyncio
 import importlib
+import os
 import pkgutil
 
 import pytest
@@ -15,6 +20,8 @@ import pytest
 import ui
 from deploy.client import free_port, start_server, wait_ready
 
+os.environ.setdefault("MEHANIZMI_ERRORS", "raise")
+os.environ.setdefault("STREAMLIT_CLIENT_SHOW_ERROR_DETAILS", "full")
 for _module in pkgutil.iter_modules(ui.__path__):
     importlib.import_module(f"ui.{_module.name}")
 

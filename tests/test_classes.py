@@ -77,15 +77,15 @@ def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
     code, key = store.create("zbirka-3.1", "plans", url=url)
     assert len(code) == 6 and set(code) <= set(store.CODE_LETTERS) and len(key) >= 22
     ana, ben = store.join(code.lower(), "Ana", url=url), store.join(f" {code} ", url=url)
-    store.record(code, ana, "v.a-b", [0.19, -3.09], "sense", 1, url=url)
-    store.record(code, ana, "v.a-b", [-0.19, 3.09], "ok", 2, url=url)
-    store.record(code, ana, "v.a-b", [-0.19, 3.09], "ok", 2, url=url)  # sent again: once
-    store.record(code, ben, "v.a-b", 3.1, "wrong", 1, url=url)
+    assert store.record(code, ana, "v.a-b", [0.19, -3.09], "sense", store.new_check(), url=url) == 1
+    right = store.new_check()
+    assert store.record(code, ana, "v.a-b", [-0.19, 3.09], "ok", right, url=url) == 2
+    assert store.record(code, ana, "v.a-b", [-0.19, 3.09], "ok", right, url=url) == 2  # sent again: once
+    assert store.record(code, ben, "v.a-b", 3.1, "wrong", store.new_check(), url=url) == 1
     assert [(t["step"], t["diagnosis"], t["try"]) for t in store.tries(code, ana, url=url)] == [
         ("v.a-b", "sense", 1), ("v.a-b", "ok", 2)]
     rows = store.export(code, key, url=url)
-    assert len(rows) == 3 and set(rows[0]) == {"student", "nickname", "step", "answer",
-                                               "diagnosis", "term", "try", "time", "variant"}
+    assert len(rows) == 3 and set(rows[0]) == set(store.FIELDS) and rows[1]["check"] == right
     assert {r["nickname"] for r in rows} == {"Ana", "student 2"}
     assert rows[0]["answer"] == [0.19, -3.09]
     # written as the command line and the lecturer's download write them, and read back
@@ -94,7 +94,7 @@ def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
     assert [list(r) for r in table] == [list(store.FIELDS)] * 3
     assert [json.loads(r["answer"]) for r in table] == [r["answer"] for r in rows]
     with store.engine(url).connect() as db:  # the schema came from the migrations
-        assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0002"
+        assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0003"
 
 
 def test_a_fresh_process_s_first_sessions_arriving_at_once_make_one_store(tmp_path):
@@ -126,13 +126,59 @@ def test_a_store_made_by_the_first_migration_is_upgraded_with_its_checks_kept(ur
                    {"now": datetime.now(UTC), "later": datetime.now(UTC) + timedelta(days=1)})
         db.execute(sa.text("insert into students (id, class_id, nickname, joined) "
                            "select 'old-student', id, 'Ana', :now from classes"), {"now": datetime.now(UTC)})
-        db.execute(sa.text("insert into checks (class_id, student, step, answer, diagnosis, try, time) "
-                           "select id, 'old-student', 'v.b', '1.0', 'ok', 1, :now from classes"),
-                   {"now": datetime.now(UTC)})
+        for n, answer in ((1, "NaN"), (2, "1.0")):  # (0001 stored Python's NaN as it came)
+            db.execute(sa.text("insert into checks (class_id, student, step, answer, diagnosis, try, time) "
+                               "select id, 'old-student', 'v.b', :answer, 'wrong', :n, :now from classes"),
+                       {"now": datetime.now(UTC), "answer": answer, "n": n})
     made.dispose()  # (the store's engine for this new URL is made, and upgrades, below)
-    assert [(r["step"], r["term"]) for r in store.tries("OLDONE", "old-student", url=url)] == [("v.b", "")]
-    store.record("OLDONE", "old-student", "v.c", 2.0, "missing-term", 1, term="a^k", url=url)
+    old = store.tries("OLDONE", "old-student", url=url)
+    assert [(r["step"], r["term"], r["try"], r["answer"]) for r in old] == [
+        ("v.b", "", 1, None), ("v.b", "", 2, 1.0)]  # kept, and strict JSON
+    assert len({r["check"] for r in old}) == 2  # each an id of its own (0003)
+    store.record("OLDONE", "old-student", "v.c", 2.0, "missing-term", store.new_check(), term="a^k", url=url)
     assert store.tries("OLDONE", "old-student", url=url)[-1]["term"] == "a^k"
+    assert store.record("OLDONE", "old-student", "v.b", 1.5, "ok", store.new_check(), url=url) == 3
+
+
+def test_two_devices_and_two_hand_ins_are_every_one_stored_in_order(url):
+    """One student's link on two phones (or a page and the command line): every check is a
+    try of its own, numbered by the store in the order stored; only the same check (its id)
+    sent again is stored once."""
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    token = store.join(code, url=url)
+    phone1, phone2 = store.new_check(), store.new_check()
+    assert store.record(code, token, "v.b", [0.0, -3.1], "sense", phone1, url=url) == 1
+    assert store.record(code, token, "v.b", [0.0, 3.1], "ok", phone2, url=url) == 2
+    assert store.record(code, token, "v.b", [0.0, -3.1], "sense", phone1, url=url) == 1  # again
+    rows = store.export(code, key, url=url)
+    assert [(r["diagnosis"], r["try"], r["check"]) for r in rows] == [
+        ("sense", 1, phone1), ("ok", 2, phone2)]
+
+
+def _racing(args) -> list[int]:
+    url, code, token = args
+    return [store.record(code, token, "v.b", float(k), "wrong", store.new_check(), url=url)
+            for k in range(4)]
+
+
+def test_two_processes_checking_one_step_at_once_get_distinct_tries(url):
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    token = store.join(code, url=url)
+    with multiprocessing.get_context("spawn").Pool(2) as pool:
+        numbers = pool.map(_racing, [(url, code, token)] * 2)
+    assert sorted(numbers[0] + numbers[1]) == list(range(1, 9))
+    assert sorted(r["try"] for r in store.export(code, key, url=url)) == list(range(1, 9))
+
+
+@pytest.mark.parametrize("answer", [float("nan"), float("inf"), [1.0, float("-inf")], [1.0],
+                                    "3.1", True, {"x": 1}])
+def test_an_answer_that_is_not_finite_numbers_is_refused_and_nothing_stored(url, answer):
+    code, key = store.create("zbirka-3.1", "plans", url=url)
+    token = store.join(code, url=url)
+    with pytest.raises(store.ClassError) as refused:
+        store.record(code, token, "v.b", answer, "wrong", store.new_check(), url=url)
+    assert refused.value.args[0].key == "class.bad_answer"
+    assert store.export(code, key, url=url) == []
 
 
 def test_wrong_codes_keys_and_students_are_refused_in_words(url):
@@ -141,7 +187,7 @@ def test_wrong_codes_keys_and_students_are_refused_in_words(url):
     stranger = store.join(other, url=url)
     cases = [(lambda: store.find("ABCDEF" if code != "ABCDEF" else "ACDEFH", url=url), "no_code"),
              (lambda: store.export(code, key + "x", url=url), "wrong_key"),
-             (lambda: store.record(code, stranger, "v.b", 1.0, "ok", 1, url=url), "no_student"),
+             (lambda: store.record(code, stranger, "v.b", 1.0, "ok", store.new_check(), url=url), "no_student"),
              (lambda: store.create("zbirka-3.1", "dance", url=url), "no_method")]
     for call, said in cases:
         with pytest.raises(store.ClassError) as refused:
@@ -156,7 +202,7 @@ def test_a_class_expires_is_purged_and_its_lecturer_deletes_it_at_once(url):
         store.join(old, url=url)
     assert refused.value.args[0].key == "class.expired"
     code, key = store.create("zbirka-3.1", "plans", url=url)
-    store.record(code, store.join(code, url=url), "v.b", 1.0, "ok", 1, url=url)
+    store.record(code, store.join(code, url=url), "v.b", 1.0, "ok", store.new_check(), url=url)
     assert store.purge(url=url) >= 1
     with pytest.raises(store.ClassError):
         store.find(old, url=url)
@@ -178,16 +224,16 @@ def test_hostile_nicknames_are_stored_as_bounded_text(url, nickname):
     stored = store.student(code, token, url=url)["nickname"]
     assert len(stored) <= store.NICKNAME_MAX and stored.isprintable()
     assert stored == nickname[:store.NICKNAME_MAX] or "\x00" in nickname
-    store.record(code, token, "v.b", 1.0, "ok", 1, url=url)
+    store.record(code, token, "v.b", 1.0, "ok", store.new_check(), url=url)
     assert store.export(code, key, url=url)[0]["nickname"] == stored  # the table is there
     with pytest.raises(store.ClassError):
-        store.record(code, token, "v.b", "9" * 500, "ok", 2, url=url)  # an answer too long
+        store.record(code, token, "v.b", "9" * 500, "ok", store.new_check(), url=url)  # an answer too long
 
 
 def _write(args) -> None:
     url, code, token, first = args
     for k in range(first, first + 25):
-        store.record(code, token, f"step.{k}", float(k), "ok", 1, url=url)
+        store.record(code, token, f"step.{k}", float(k), "ok", store.new_check(), url=url)
 
 
 def test_two_processes_write_to_one_class_at_once_and_nothing_is_lost(url):
@@ -205,7 +251,7 @@ def test_a_student_faster_than_a_person_is_slowed_not_refused(url):
     token = store.join(code, url=url)
     started = time.perf_counter()
     for k in range(store.PER_SECOND + 3):
-        store.record(code, token, f"step.{k}", 1.0, "ok", 1, url=url)
+        store.record(code, token, f"step.{k}", 1.0, "ok", store.new_check(), url=url)
     assert time.perf_counter() - started > 0.5  # the sixth check waited for the second
     assert len(store.export(code, key, url=url)) == store.PER_SECOND + 3
 
@@ -215,17 +261,18 @@ def test_with_the_database_stopped_a_check_is_not_saved_and_later_stored_once(po
     code, key = store.create("zbirka-3.1", "plans", url=url)
     token = store.join(code, url=url)
     postgres.stop()
+    check = store.new_check()  # made with the check, kept by the page until stored
     try:
         with pytest.raises(store.NotSaved):
-            store.record(code, token, "v.b", [0.0, 3.1], "ok", 1, url=url)
+            store.record(code, token, "v.b", [0.0, 3.1], "ok", check, url=url)
         with pytest.raises(store.StoreDown) as down:  # a page reading the store: said in words
             store.tries(code, token, url=url)
         assert down.value.args[0].key == "class.store_down"
     finally:
         postgres.start()
-    store.record(code, token, "v.b", [0.0, 3.1], "ok", 1, url=url)
-    store.record(code, token, "v.b", [0.0, 3.1], "ok", 1, url=url)  # the student's retry
-    assert [r["step"] for r in store.export(code, key, url=url)] == ["v.b"]
+    store.record(code, token, "v.b", [0.0, 3.1], "ok", check, url=url)
+    store.record(code, token, "v.b", [0.0, 3.1], "ok", check, url=url)  # sent once more
+    assert [(r["step"], r["try"]) for r in store.export(code, key, url=url)] == [("v.b", 1)]
 
 
 def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
@@ -259,9 +306,52 @@ def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
     assert "purged 0" in cli("class", "purge").stdout
 
 
+def test_a_second_hand_in_is_stored_as_the_next_tries_and_hostile_files_store_nothing(tmp_path):
+    env = {**os.environ, "MEHANIZMI_DATABASE_URL": f"sqlite:///{tmp_path / 'cli.db'}"}
+
+    def cli(*args: str) -> subprocess.CompletedProcess:
+        return subprocess.run([sys.executable, "-m", "solvers", *args], cwd=ROOT, env=env,
+                              capture_output=True, text=True)
+
+    made = json.loads(cli("class", "create", "zbirka-3.1", "--method", "plans", "--json").stdout)
+    student = cli("class", "join", made["code"]).stdout.strip()
+    seat = ("--class", made["code"], "--student", student)
+    exact = next(s for s in json.loads(cli("practice", "zbirka-3.1", "--method", "plans",
+                                           "--json").stdout)["steps"] if s["id"] == "v.a-b")
+    reversed_ = tmp_path / "first.json"
+    reversed_.write_text(json.dumps({"answers": {"v.a-b": [-v for v in exact["expected"]]}}))
+    right = tmp_path / "second.json"
+    right.write_text(json.dumps({"answers": {"v.a-b": exact["expected"]}}))
+    for path, n in ((reversed_, 1), (right, 2)):  # the scene may be left out: the class's
+        done = cli("practice", "--method", "plans", "--answers", str(path), *seat, "--json")
+        assert done.returncode == 0, done.stderr
+        assert json.loads(done.stdout)["stored"] == {"v.a-b": n}
+    texts = {"nan.json": '{"answers": {"v.a-b": [NaN, 1]}}',
+             "inf.json": '{"answers": {"v.a-b": [Infinity, 1]}}',
+             "huge.json": '{"answers": {"v.a-b": [1e309, 1]}}',
+             "shape.json": '{"answers": {"v.a-b": [1, 2, 3]}}',
+             "text.json": '{"answers": {"v.a-b": ["1", 2]}}'}
+    for name, text in texts.items():
+        (tmp_path / name).write_text(text)
+        refused = cli("practice", "zbirka-3.1", "--method", "plans", "--answers",
+                      str(tmp_path / name), *seat)
+        assert refused.returncode == 2 and refused.stderr.startswith("error: answers"), (name, refused)
+    forces = tmp_path / "forces.json"  # another task's answers, to this class
+    step = json.loads(cli("practice", "zbirka-5.1", "--method", "forces", "--json").stdout)["steps"][0]
+    forces.write_text(json.dumps({"answers": {step["id"]: step["expected"]}}))
+    for args in (("zbirka-5.1", "--method", "forces"), ("--method", "forces"),
+                 ("zbirka-3.1", "--method", "plans", "--at", "100")):
+        refused = cli("practice", *args, "--answers", str(forces), *seat)
+        assert refused.returncode == 2 and "practises plans on zbirka-3.1" in refused.stderr, refused
+    rows = [json.loads(line) for line in
+            cli("class", "export", made["code"], "--key", made["key"]).stdout.splitlines()]
+    assert [(r["step"], r["diagnosis"], r["try"]) for r in rows] == [
+        ("v.a-b", "sense", 1), ("v.a-b", "ok", 2)]
+
+
 def test_a_check_time_is_when_it_was_stored(url):
     code, key = store.create("zbirka-3.1", "plans", url=url)
-    store.record(code, store.join(code, url=url), "v.b", 1.0, "ok", 1, url=url)
+    store.record(code, store.join(code, url=url), "v.b", 1.0, "ok", store.new_check(), url=url)
     (row,) = store.export(code, key, url=url)
     assert abs(datetime.fromisoformat(row["time"]) - datetime.now(UTC)) < timedelta(minutes=1)
 
@@ -281,7 +371,7 @@ def test_a_planted_class_is_counted_step_by_step_from_the_store(url):
     for name, step, diagnosis, term in planted:
         tried[name, step] = tried.get((name, step), 0) + 1
         answer = None if diagnosis == store.REVEALED else [tried[name, step], 0.5]
-        store.record(code, who[name], step, answer, diagnosis, tried[name, step], term=term, url=url)
+        store.record(code, who[name], step, answer, diagnosis, store.new_check(), term=term, url=url)
     rows = store.since(store.opened(code, key, url=url), 0, url=url)
     assert len(rows) == len(planted) and rows == sorted(rows, key=lambda r: r["id"])
     assert store.since(store.opened(code, key, url=url), rows[5]["id"], url=url) == rows[6:]
@@ -289,7 +379,7 @@ def test_a_planted_class_is_counted_step_by_step_from_the_store(url):
     s1, s2, s3 = summary.counts(rows, ["s1", "s2", "s3"])
     assert (s1.reached, s1.first, s1.later, s1.revealed) == (5, 1, 1, 3)
     assert s1.first_tries == {"ok": 1, "sense": 1, "missing-term": 2, "none": 1}
-    assert s1.mistake == ("missing-term", "X", 2)  # c twice and e once: two students
+    assert s1.mistake == (2, [("missing-term", "X")])  # c twice and e once: two students
     assert (s2.reached, s2.first, s2.mistake) == (1, 1, None)
     assert (s3.reached, sum(s3.first_tries.values())) == (0, 0)
     cloud = summary.latest(rows, "s1")
@@ -301,6 +391,19 @@ def test_a_planted_class_is_counted_step_by_step_from_the_store(url):
         {"nickname": "a", "done": 2, "first": 2}, {"nickname": "b", "done": 1, "first": 0},
         {"nickname": "c", "done": 1, "first": 0}, {"nickname": "d", "done": 1, "first": 0},
         {"nickname": "e", "done": 1, "first": 0}]
+
+
+def test_the_most_common_mistake_is_the_same_in_any_process_and_a_tie_is_said_whole():
+    """Two mistakes made by as many students: both named, in the grader's order of
+    diagnoses, whatever order the checks came in (a set's order once chose one of them,
+    differently under another PYTHONHASHSEED)."""
+    rows = [{"student": s, "step": "v.b", "diagnosis": d, "term": term, "try": 1, "id": i,
+             "nickname": s, "answer": [1.0, 0.0], "variant": None}
+            for i, (s, d, term) in enumerate([("a", "wrong", ""), ("b", "missing-term", "Y"),
+                                              ("c", "sense", ""), ("d", "missing-term", "X"),
+                                              ("e", "sense", ""), ("f", "wrong", "")])]
+    said = [summary.counts(order, ["v.b"])[0].mistake for order in (rows, rows[::-1], rows[2:] + rows[:2])]
+    assert said == [(2, [("sense", ""), ("wrong", "")])] * 3
 
 
 def test_students_are_split_in_bands_of_a_given_value():

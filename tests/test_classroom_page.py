@@ -37,6 +37,8 @@ def test_a_lecturer_starts_a_class_and_a_student_joins_it(lang, monkeypatch):
     assert at.get("image")  # the QR code
     key = lecturer.rsplit("key=", 1)[1]
     assert store.find(code).method == "plans" and store.export(code, key) == []
+    assert (at.query_params["class"], at.query_params["key"]) == (code, key)  # the page's own link
+    assert t("class.results", lang, code=code) in [h.value for h in at.header]  # the view under it
 
     student = page("pages/class.py", lang=lang, query=None)
     student.query_params["join"] = code.lower()
@@ -47,6 +49,40 @@ def test_a_lecturer_starts_a_class_and_a_student_joins_it(lang, monkeypatch):
     assert not student.exception
     assert student.query_params["class"] == code and student.query_params["student"]
     assert store.student(code, student.query_params["student"])["nickname"] == "<b>Ana</b>"
+
+
+def _shown(at) -> tuple[str, str, bool]:
+    """The join code, the lecturer's link and whether the QR code is on the page."""
+    code = next((m.value.split("`")[1] for m in at.markdown if "`" in m.value), "")
+    return code, next((c.value for c in at.code if "key=" in c.value), ""), bool(at.get("image"))
+
+
+def test_the_lecturer_keeps_the_code_and_link_through_reruns_and_a_reload(monkeypatch):
+    """Right after Start: the language switched, projector mode on, the page reloaded (a new
+    session on the same link) — the code, the QR code and the lecturer's link stay, until the
+    lecturer hides them; the results stay under them, and the code can be shown again."""
+    language = {"now": "sr"}  # (AppTest formats choices outside a run, in this language)
+    monkeypatch.setattr("ui.i18n.current", lambda: language["now"])
+    at = page("pages/class.py", lang="sr", class_method="plans")
+    next(b for b in at.button if b.label == t("class.start", "sr")).click().run()
+    code, lecturer, qr = _shown(at)
+    assert code and lecturer and qr
+    language["now"] = "en"
+    at.session_state["lang"] = "en"  # the language picker's rerun
+    at.run()
+    assert _shown(at) == (code, lecturer, True) and not at.exception
+    at.session_state["present"] = True  # projector mode's rerun
+    at.run()
+    assert _shown(at) == (code, lecturer, True)
+    reload = page("pages/class.py", query=None)  # this browser's reload: its address, anew
+    reload.query_params.update({k: at.query_params[k] for k in ("class", "key", "made")})
+    reload.run()
+    assert _shown(reload) == (code, lecturer, True)
+    next(b for b in reload.button if b.label == t("class.close_panel", "en")).click().run()
+    assert _shown(reload)[2] is False and "made" not in reload.query_params
+    assert t("class.results", "en", code=code) in [h.value for h in reload.header]
+    next(b for b in reload.button if b.label == t("class.show_panel", "en")).click().run()
+    assert _shown(reload) == (code, lecturer, True)
 
 
 def test_a_wrong_code_or_key_is_said_in_words():
@@ -75,26 +111,41 @@ def _check(at, step, answer) -> None:
     next(b for b in at.button if b.label == t("practice.check", "en")).click().run()
 
 
-def test_every_check_is_stored_and_a_reload_brings_the_progress_back():
+def _prompt(at) -> str:
+    return next(m.value for m in at.markdown if m.value.startswith("Step "))
+
+
+def test_every_check_of_two_tabs_is_stored_and_a_reload_opens_where_they_were():
+    """One student's link in two tabs (two phones): a reversed try in one, the right one in
+    the other — both stored, in order; the second tab shows its own verdict; a reload opens
+    at the first step not yet done, its progress from the store."""
     code, key = store.create("zbirka-3.1", "plans")
     token = store.join(code, "Ana")
-    first = steps_for(load_preset("zbirka-3.1"), "plans")[0]
-    at = _seated(code, token)
-    assert not at.exception
-    _check(at, first, -complex(first.expected))  # reversed: a warning, stored
-    _check(at, first, first.expected)  # right, stored
+    steps = steps_for(load_preset("zbirka-3.1"), "plans")
+    first = steps[0]
+    phone1, phone2 = _seated(code, token), _seated(code, token)
+    assert not phone1.exception and _prompt(phone1).startswith(f"Step 1 of {len(steps)}")
+    _check(phone1, first, -complex(first.expected))  # reversed: a warning, stored
+    assert any(t("practice.hint_sense", "en") in w.value for w in phone1.warning)
+    _check(phone2, first, first.expected)  # right, stored as the second try
+    assert any(t("practice.hint_ok", "en") in s.value for s in phone2.success)
     rows = store.export(code, key)
     assert [(r["step"], r["diagnosis"], r["try"]) for r in rows] == [
         (first.id, "sense", 1), (first.id, "ok", 2)]
     again = _seated(code, token)  # a reload, another process: the store says where they are
+    assert _prompt(again).startswith(f"Step 2 of {len(steps)}")
+    next(b for b in again.button if b.label == t("practice.previous", "en")).click().run()
     assert any(t("practice.hint_ok", "en") in s.value for s in again.success)
 
 
 def test_a_check_the_store_cannot_take_shows_no_verdict(monkeypatch):
+    """Not even the verdict of the try before, which would read as this one's."""
     code, key = store.create("zbirka-3.1", "plans")
     token = store.join(code)
     first = steps_for(load_preset("zbirka-3.1"), "plans")[0]
     at = _seated(code, token)
+    _check(at, first, -complex(first.expected))  # stored: a warning
+    assert at.warning
 
     def down(*_args, **_kwargs):
         raise store.NotSaved("the database is down")
@@ -103,7 +154,21 @@ def test_a_check_the_store_cannot_take_shows_no_verdict(monkeypatch):
     _check(at, first, first.expected)
     assert any(t("class.not_saved", "en") in e.value for e in at.error)
     assert not at.success and not at.warning
-    assert store.export(code, key) == []  # and the try was not counted
+    assert len(store.export(code, key)) == 1  # and the try was not counted
+
+
+def test_a_class_deleted_while_a_student_practises_is_said_and_practice_goes_on():
+    code, key = store.create("zbirka-3.1", "plans")
+    token = store.join(code)
+    first, second = steps_for(load_preset("zbirka-3.1"), "plans")[:2]
+    at = _seated(code, token)
+    store.delete(code, key)
+    _check(at, first, first.expected)
+    assert not at.exception
+    assert any(f"No class has the code {code}" in e.value for e in at.error)
+    _check(at, first, first.expected)  # unstored now, graded and said as before
+    assert any(t("practice.hint_ok", "en") in s.value for s in at.success)
+    assert any(t("class.gone_note", "en") in w.value for w in at.warning)
 
 
 def test_a_link_with_a_student_of_no_class_says_so_once():

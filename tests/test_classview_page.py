@@ -33,7 +33,7 @@ def planted() -> tuple[str, str]:
                         ("<b>cira</b>", [("sense", -z * 1.01)])):
         token = store.join(code, name)
         for n, (diagnosis, answer) in enumerate(tries, 1):
-            store.record(code, token, first.id, [answer.real, answer.imag], diagnosis, n)
+            store.record(code, token, first.id, [answer.real, answer.imag], diagnosis, store.new_check())
     return code, key
 
 
@@ -81,7 +81,7 @@ def test_a_new_check_shows_at_the_next_tick_without_losing_what_was_revealed():
     at.run()
     at.toggle(key="cv_all").set_value(True).run()
     token = store.join(code, "dan")
-    store.record(code, token, STEPS[0].id, [0.0, 0.0], "wrong", 1)
+    store.record(code, token, STEPS[0].id, [0.0, 0.0], "wrong", store.new_check())
     at.run()  # (the fragment's timer, as AppTest can run it: the whole script)
     bars = chart(at, "cv_bars")
     assert dict(zip(names(bars), (tr["x"][0] for tr in bars["data"]))) == {
@@ -115,7 +115,8 @@ def test_a_class_of_variants_is_drawn_relative_and_split_by_a_given(monkeypatch)
         token = store.join(class_code, f"v{n}")
         own = steps_for(from_code(code(settings, n + 1)).scene, "plans")[0]
         z = complex(own.expected)  # this student's own right answer
-        store.record(class_code, token, own.id, [z.real, z.imag], "ok" if n else "sense", 1)
+        store.record(class_code, token, own.id, [z.real, z.imag], "ok" if n else "sense",
+                     store.new_check())
     assert [r["variant"] for r in store.export(class_code, key)] == [code(settings, n) for n in (1, 2, 3)]
 
     at = page("pages/class.py", lang="en", query=None, cv_all=True, cv_right=True)

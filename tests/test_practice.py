@@ -153,7 +153,9 @@ def test_a_bad_answers_file_gets_a_message_and_code_2(tmp_path, capsys):
     path = tmp_path / "a.json"
     for text, says in (("{", "is not JSON"), ('{"x": 1}', 'must hold {"answers"'),
                        ('{"answers": {"v.b": 3}}', "v.b must be a pair [x, y]"),
-                       ('{"answers": {"omega.3": [1, 2]}}', "omega.3 must be a number"),
+                       ('{"answers": {"omega.3": [1, 2]}}', "omega.3 must be a finite number"),
+                           ('{"answers": {"omega.3": NaN}}', "NaN, which is not a number"),
+                           ('{"answers": {"omega.3": 1e309}}', "omega.3 must be a finite number"),
                        ('{"answers": {"v.zz": [1, 2], "v.b": [0, 3]}}', "no step 'v.zz'")):
         path.write_text(text)
         assert main(["practice", "zbirka-3.1", "--method", "plans", "--answers", str(path)]) == 2

@@ -10,6 +10,7 @@ import streamlit as st
 from classes import store
 from classes.store import ClassError, NotSaved, StoreDown
 from methods.practice import Progress, Step, answer_of, grade
+from ui.boundary import boundary
 from ui.i18n import message, t
 
 # the practice of each method: its page, its switch's key, the page's state that shows it
@@ -23,6 +24,9 @@ PAGE = "pages/class.py"
 NOT_SAVED = "_class_not_saved"
 
 
+RETRY = 3.0  # s between two looks at a store that did not answer
+
+
 def seat(key: str) -> tuple[str, str] | None:
     """(class code, student token) when this page's practice ``key`` is the class's method
     and the link names a student of that class; None otherwise (practice is not stored)."""
@@ -31,10 +35,17 @@ def seat(key: str) -> tuple[str, str] | None:
 
 
 def seat_refused() -> None:
-    """Why the link's class or student was not found, where the practice would be."""
+    """Why the link's class or student was not found, where the practice would be; while
+    the store cannot be reached, a page that looks again every few seconds and comes back
+    to practice by itself when it answers."""
     memo = _seat()
-    if memo and memo[3]:
+    if memo and memo[3] == DOWN:
+        wait_for_store(t("class.store_down"))
+    elif memo and memo[3]:
         st.error(memo[3], icon=":material/error:")
+
+
+DOWN = "down"  # a seat's "why not" while the store cannot be reached (asked again each run)
 
 
 def _seat() -> tuple | None:
@@ -48,8 +59,8 @@ def _seat() -> tuple | None:
         try:
             method = store.find(code).method
             store.student(code, token)
-        except StoreDown as exc:  # asked again on the next run, not kept
-            return (code, token, None, message(exc.args[0]))
+        except StoreDown:  # asked again on the next run, not kept
+            return (code, token, None, DOWN)
         except ClassError as exc:
             memo = (code, token, None, message(exc.args[0]))
         else:
@@ -58,16 +69,29 @@ def _seat() -> tuple | None:
     return memo
 
 
+def wait_for_store(said: str) -> None:
+    """``said`` while the store cannot be reached, looked at again every RETRY seconds in a
+    fragment of its own; the page runs again by itself once the store answers."""
+    @st.fragment(run_every=RETRY)
+    def waiting() -> None:
+        with boundary():
+            if store.reachable():
+                st.rerun(scope="app")
+            st.warning(said, icon=":material/cloud_off:")
+
+    waiting()
+
+
 def resumed(seated: tuple[str, str], steps: list[Step]) -> Progress:
-    """The student's progress as the store has it: their checks graded again, in order.
-    A store that cannot be reached stops the page with the reason (nothing is started
-    afresh that would hide what the store holds)."""
+    """The student's progress as the store has it: every try from every tab, phone or hand-in,
+    graded again in the order stored. A store that cannot be reached stops the page with the
+    reason (nothing is started afresh that would hide what the store holds) until it answers."""
     progress = Progress.start()
     by_id = {s.id: s for s in steps}
     try:
         checks = store.tries(*seated)
-    except StoreDown as exc:
-        st.error(message(exc.args[0]), icon=":material/cloud_off:")
+    except StoreDown:
+        wait_for_store(t("class.store_down"))
         st.stop()
     for check in checks:
         step = by_id.get(check["step"])
@@ -80,33 +104,55 @@ def resumed(seated: tuple[str, str], steps: list[Step]) -> Progress:
     return progress
 
 
-def give(seated: tuple[str, str] | None, progress: Progress, step: Step, answer) -> None:
-    """A check: graded, stored (in a class) and only then counted and shown."""
-    if seated is not None and not progress.done(step):
-        verdict = grade(step, answer)
-        if not _stored(seated, progress, step, _plain(answer), verdict.diagnosis, verdict.term):
-            return
-    progress.give(step, answer)
+def first_open(steps: list[Step], progress: Progress) -> int:
+    """Where a student coming back starts: the first step not yet done (the last when all
+    are)."""
+    return next((i for i, s in enumerate(steps) if not progress.done(s)), len(steps) - 1)
 
 
-def reveal(seated: tuple[str, str] | None, progress: Progress, step: Step) -> None:
+def give(state: dict, step: Step, answer) -> None:
+    """A check: graded, stored (in a class) and only then counted and shown. In a class the
+    progress is then the store's — every tab's and phone's tries in the order stored — and
+    this device shows the verdict stored for its own check. (``state``: the page's practice
+    run, ui.practice, with its ``steps``.)"""
+    seated = state["seat"]
+    if seated is None or state["progress"].done(step):
+        state["progress"].give(step, answer)
+        return
+    verdict = grade(step, answer)
+    if verdict.diagnosis == "none":
+        return
+    if _stored(state, step, _plain(answer), verdict.diagnosis, verdict.term):
+        state["progress"] = resumed(seated, state["steps"])
+        state["mine"][step.id] = verdict
+
+
+def reveal(state: dict, step: Step) -> None:
     """"Show it": stored as the student's last try of the step (the class view counts it,
     and a reload keeps it shown), then shown."""
-    if seated is not None and not progress.done(step):
-        if not _stored(seated, progress, step, None, store.REVEALED, ""):
-            return
-    progress.reveal(step)
+    if state["seat"] is None or state["progress"].done(step):
+        state["progress"].reveal(step)
+    elif _stored(state, step, None, store.REVEALED, ""):
+        state["progress"] = resumed(state["seat"], state["steps"])
 
 
-def _stored(seated: tuple[str, str], progress: Progress, step: Step, answer, diagnosis: str,
-            term: str) -> bool:
-    """One try in the store (False, and "not saved" said, when it could not be taken)."""
+def _stored(state: dict, step: Step, answer, diagnosis: str, term: str) -> bool:
+    """One check in the store (False, and why said, when it was not taken). The check's id
+    is made here and kept until the store has it: the same answer checked again after "not
+    saved" is that check, stored once; any other is a new try."""
+    pending = state.setdefault("pending", {})
+    which = (step.id, repr(answer), diagnosis)
+    check = pending.setdefault(which, store.new_check())
     try:
-        store.record(*seated, step.id, answer, diagnosis,
-                     len(progress.verdicts.get(step.id, [])) + 1, term=term)
+        store.record(*state["seat"], step.id, answer, diagnosis, check, term=term)
     except NotSaved:
-        st.session_state[NOT_SAVED] = True
+        st.session_state[NOT_SAVED] = t("class.not_saved")
         return False
+    except ClassError as exc:  # the class deleted or expired meanwhile: practice goes on, unstored
+        st.session_state[NOT_SAVED] = t("class.gone", why=message(exc.args[0]))
+        state["seat"] = None
+        return False
+    del pending[which]
     return True
 
 
@@ -117,18 +163,25 @@ def _plain(answer):
     return None if answer is None else float(answer)
 
 
-def not_saved() -> None:
-    """The check the store could not take, said where its verdict would have been."""
-    if st.session_state.pop(NOT_SAVED, False):
-        st.error(t("class.not_saved"), icon=":material/cloud_off:")
+def not_saved() -> bool:
+    """The check the store could not take, said where its verdict would have been (and
+    nothing else there: an older verdict under it would read as this one's). True if said."""
+    said = st.session_state.pop(NOT_SAVED, None)
+    if said:
+        st.error(said, icon=":material/cloud_off:")
+    return bool(said)
 
 
 def sidebar_join() -> None:
-    """A class code typed in the sidebar of any page opens the class's join page."""
-    typed = st.sidebar.text_input(t("class.sidebar_code"), key="class_code_typed",
-                                  placeholder="ABC123", max_chars=12, autocomplete="off")
-    if typed.strip() and st.session_state.get("_class_code_opened") != typed:
-        st.session_state["_class_code_opened"] = typed
-        st.switch_page(PAGE, query_params={"join": typed.strip().upper(),
-                                           "lang": st.query_params.get("lang", "")})
+    """A class code typed in the sidebar of any page opens the class's join page. The box
+    is emptied as it is read, so a page that runs again (a restart, a reconnect) does not
+    send a practising student back to the join page."""
+    def typed() -> None:
+        st.session_state["_class_join"] = st.session_state["class_code_typed"].strip().upper()
+        st.session_state["class_code_typed"] = ""
 
+    st.sidebar.text_input(t("class.sidebar_code"), key="class_code_typed", on_change=typed,
+                          placeholder="ABC123", max_chars=12, autocomplete="off")
+    code = st.session_state.pop("_class_join", "")
+    if code:
+        st.switch_page(PAGE, query_params={"join": code, "lang": st.query_params.get("lang", "")})

@@ -17,18 +17,20 @@ import pandas as pd
 import streamlit as st
 
 from classes import store, summary
+from classes.steps import scene_of
 from classes.store import Class, ClassError, StoreDown
 from exams.codes import parse
 from exams.variants import MAX_COUNT, VariantError, from_code, generate
 from figures.classview import COLOURS, spread, step_bars
 from figures.classview import cloud as cloud_figure
 from figures.plans import plain
-from mechanisms import SceneError, load_preset
-from mechanisms.link import PARAMETER, decode
+from mechanisms import SceneError
 from methods.practice import DIAGNOSES, Step
 from methods.practice_steps import steps_for
+from ui.boundary import boundary
+from ui.classroom import wait_for_store
 from ui.export import chart
-from ui.i18n import current, message, num, t, title_of
+from ui.i18n import current, kept_language, message, num, t, title_of
 from ui.practice import shown_unit
 from ui.present import look
 
@@ -39,8 +41,7 @@ MARGIN = 256  # checks fetched again below the last one seen (see ``_fetch``)
 @st.cache_resource(max_entries=16, show_spinner=False)
 def class_scene(scene: str):
     """A class's scene (a preset id or a builder link's ``s=`` text)."""
-    return decode(scene.removeprefix(f"{PARAMETER}=")) if scene.startswith(f"{PARAMETER}=") \
-        else load_preset(scene)
+    return scene_of(scene)
 
 
 @st.cache_resource(max_entries=16, show_spinner=False)
@@ -77,24 +78,34 @@ def _fetch(found: Class) -> list[dict]:
     try:
         for row in store.since(found, max(0, after - MARGIN)):
             memo[row["id"]] = row
-    except StoreDown as exc:  # the view keeps what it has, says so, and catches up after
-        st.warning(message(exc.args[0]), icon=":material/cloud_off:")
+    except StoreDown:  # the view keeps what it has, says so, and catches up after
+        st.warning(t("class.store_down_view"), icon=":material/cloud_off:")
+    return _seen(found)
+
+
+def _seen(found: Class) -> list[dict]:
+    """The checks this view has fetched, in the order stored."""
+    memo = st.session_state.setdefault(f"_class_rows_{found.code}", {})
     return [memo[k] for k in sorted(memo)]
 
 
-def view(code: str, key: str) -> None:
-    """The whole view, for the lecturer's link (``?class=CODE&key=KEY``)."""
+def view(code: str, key: str) -> bool:
+    """The whole view, for the lecturer's link (``?class=CODE&key=KEY``): whether the key
+    opened it."""
     try:
         found = store.opened(code, key)
+    except StoreDown:
+        wait_for_store(t("class.store_down_open"))
+        return False
     except ClassError as exc:
         st.error(message(exc.args[0]))
-        return
+        return False
     st.header(t("class.results", code=found.code))
     try:
         steps = class_steps(found.scene, found.method, found.at)
     except (SceneError, ValueError) as exc:
         st.error(t("class.no_steps", why=message(exc)))
-        return
+        return True
     st.caption(f"{t(f'class.method_{found.method}')} · {title_of(class_scene(found.scene))} · "
                f"{t('class.view_live')}")
     symbols = {s.id: f"{i + 1}. {plain(s.symbol)}" for i, s in enumerate(steps)}
@@ -111,8 +122,9 @@ def view(code: str, key: str) -> None:
                                 placeholder=t("class.choose_steps"))
         split = _split_choice(found)
     shown = set(symbols) if every else set(chosen)
-    live(found, steps, shown, names, look_at, right, split)
+    live(found, key, steps, shown, names, look_at, right, split)
     exports(found, key, steps)
+    return True
 
 
 def _split_choice(found: Class) -> str | None:
@@ -129,11 +141,27 @@ def _split_choice(found: Class) -> str | None:
 
 
 @st.fragment(run_every=TICK)
-def live(found: Class, steps: list[Step], shown: set[str], names: bool, look_at: str,
-         right: bool, split: str | None) -> None:
+def live(found: Class, key: str, steps: list[Step], shown: set[str], names: bool,
+         look_at: str, right: bool, split: str | None) -> None:
     """What changes as students check: refreshed every TICK seconds, alone (the lecturer's
-    controls above keep their state, the charts their zoom)."""
-    rows = _fetch(found)
+    controls above keep their state, the charts their zoom). A class deleted or ended
+    meanwhile is said, and its last counts stay for the lecturer to read."""
+    with boundary():
+        try:
+            store.opened(found.code, key)
+        except StoreDown:
+            pass  # (said by _fetch, which keeps what it has)
+        except ClassError as exc:
+            st.error(message(exc.args[0]), icon=":material/event_busy:")
+            return _counts(found, key, steps, shown, names, look_at, right, split, live=False)
+        _counts(found, key, steps, shown, names, look_at, right, split)
+
+
+def _counts(found: Class, key: str, steps: list[Step], shown: set[str], names: bool,
+            look_at: str, right: bool, split: str | None, live: bool = True) -> None:
+    """The counts, bars, cloud, bands and students' table from the checks seen (fetched
+    anew while the class is open), and its exports."""
+    rows = _fetch(found) if live else _seen(found)
     ids = [s.id for s in steps]
     counts = summary.counts(rows, ids)
     left, right_col = st.columns(2)
@@ -163,12 +191,16 @@ def live(found: Class, steps: list[Step], shown: set[str], names: bool, look_at:
 
 
 def mistake_text(count: summary.StepCount) -> str:
-    """The step's most common mistake in words, with how many made it."""
+    """The step's most common mistake in words, with how many made it (or the mistakes
+    made equally often, each named)."""
     made = count.mistake
     if made is None:
         return t("class.no_mistake")
-    diagnosis, term, students = made
-    return t(f"class.mistake_{diagnosis}", n=students, term=plain(term))
+    students, tied = made
+    if len(tied) == 1:
+        return t(f"class.mistake_{tied[0][0]}", n=students, term=plain(tied[0][1]))
+    return t("class.mistake_tie", n=students, made="; ".join(
+        t(f"class.diagnosis_{d}") + (f" ({plain(term)})" if term else "") for d, term in tied))
 
 
 def _drawing(found: Class, steps: list[Step], index: int, rows: list[dict], right: bool) -> None:
@@ -223,16 +255,25 @@ def _by_band(found: Class, rows: list[dict], steps: list[Step], shown: set[str],
 
 def exports(found: Class, key: str, steps: list[Step]) -> None:
     """Every try as CSV or JSON lines (what ``class export`` writes), and a printable
-    summary; made when clicked, from the store."""
+    summary; made when clicked, from the store — or, when it cannot answer (down, or the
+    class deleted meanwhile), from the checks this view has seen."""
+    memo = st.session_state.setdefault(f"_class_rows_{found.code}", {})
+
+    def rows() -> list[dict]:
+        try:
+            return store.export(found.code, key)
+        except ClassError:
+            return [{k: v for k, v in memo[n].items() if k != "id"} for n in sorted(memo)]
+
     cols = st.columns(3)
-    cols[0].download_button(t("class.export_csv"), lambda: store.as_csv(
-        store.export(found.code, key)).encode("utf-8"), f"class-{found.code}.csv",
-        mime="text/csv", on_click="ignore", icon=":material/download:")
-    cols[1].download_button(t("class.export_jsonl"), lambda: store.as_jsonl(
-        store.export(found.code, key)).encode("utf-8"), f"class-{found.code}.jsonl",
-        mime="application/jsonl", on_click="ignore", icon=":material/download:")
-    cols[2].download_button(t("class.export_print"), lambda: printable(
-        found, steps, store.export(found.code, key)).encode("utf-8"), f"class-{found.code}.html",
+    cols[0].download_button(t("class.export_csv"), lambda: store.as_csv(rows()).encode("utf-8"),
+                            f"class-{found.code}.csv", mime="text/csv", on_click="ignore",
+                            icon=":material/download:")
+    cols[1].download_button(t("class.export_jsonl"), lambda: store.as_jsonl(rows()).encode("utf-8"),
+                            f"class-{found.code}.jsonl", mime="application/jsonl",
+                            on_click="ignore", icon=":material/download:")
+    cols[2].download_button(t("class.export_print"), kept_language(
+        lambda: printable(found, steps, rows()).encode("utf-8")), f"class-{found.code}.html",
         mime="text/html", on_click="ignore", icon=":material/print:")
 
 

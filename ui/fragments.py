@@ -11,6 +11,7 @@ from streamlit.delta_generator import DeltaGenerator
 from streamlit.runtime.scriptrunner_utils.script_run_context import get_script_run_ctx
 
 from mechanisms.schema import Scene
+from ui.boundary import boundary
 from ui.crank import live
 from ui.firstpaint import whole_run_owed
 from ui.i18n import run_language
@@ -32,7 +33,8 @@ def fragment(func: F) -> F:
         if whole_run_owed():
             st.rerun(scope="app")
         run_language()
-        return func(*args, **kwargs)
+        with boundary():
+            return func(*args, **kwargs)
 
     return st.fragment(run)  # type: ignore[return-value]
 

@@ -13,14 +13,18 @@ from __future__ import annotations
 import re
 import threading
 import tomllib
+from collections.abc import Callable
 from functools import cache
 from pathlib import Path
+from typing import TypeVar
 
 import cyrtranslit
 import streamlit as st
 
 from mechanisms.messages import KEEP, Text, text_of
 from ui.url import url_choice
+
+T = TypeVar("T")
 
 LOCALES = Path(__file__).resolve().parents[1] / "locales"
 LANGUAGES = {"sr": "Srpski (latinica)", "en": "English", "sr-cyrl": "Српски (ћирилица)"}
@@ -70,6 +74,21 @@ def run_language() -> None:
     does not pass through ``language_picker``)."""
     _RUN.language = None  # an earlier run's, on this thread
     _RUN.language = current()
+
+
+def kept_language(make: Callable[[], T]) -> Callable[[], T]:
+    """``make`` for later, in this run's language: a download's data is made when it is
+    clicked, on a thread with no page run, where ``current()`` would fall back to English."""
+    language = current()
+
+    def made() -> T:
+        before = getattr(_RUN, "language", None)
+        _RUN.language = language
+        try:
+            return make()
+        finally:
+            _RUN.language = before
+    return made
 
 
 def default_language() -> str:

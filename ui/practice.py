@@ -18,7 +18,7 @@ from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, p
 from ui import classroom
 from ui.export import chart
 from ui.fragments import rerun_here
-from ui.i18n import num, t
+from ui.i18n import kept_language, num, t
 from ui.numbers import Refused, number_field, refusal
 from ui.present import look
 
@@ -39,8 +39,9 @@ def toggle(key: str) -> bool:
     """The page's "Practise" switch: on by itself for a student in a class that practises
     this (a reload, or another app process, keeps them practising)."""
     classroom.seat_refused()  # a link to a class or student that is not (or no longer) there
-    if f"{key}_on" not in st.session_state and classroom.seat(key):
-        st.session_state[f"{key}_on"] = True
+    seated = classroom.seat(key)
+    if seated and st.session_state.get(f"{key}_seated") != seated:  # once a seat is found
+        st.session_state[f"{key}_on"], st.session_state[f"{key}_seated"] = True, seated
     return st.toggle(t("practice.mode"), key=f"{key}_on", help=t("practice.mode_help"))
 
 
@@ -60,10 +61,17 @@ def _state(key: str, steps: list[Step], seated: tuple[str, str] | None) -> dict:
     if state is None or state["signature"] != signature:
         restarted = state is not None and bool(state["progress"].answers)
         progress = classroom.resumed(seated, steps) if seated else Progress.start()
-        state = {"signature": signature, "progress": progress, "index": 0, "seat": seated,
-                 "tips": {}, "revision": 0, "restarted": restarted}
+        state = {"signature": signature, "progress": progress, "seat": seated, "tips": {},
+                 "index": classroom.first_open(steps, progress) if seated else 0,
+                 "revision": 0, "restarted": restarted, "mine": {}}
         st.session_state[f"{key}_state"] = state
+    state["steps"] = steps  # (the same values: the signature says so)
     return state
+
+
+def seated_before(state: dict) -> bool:
+    """Whether this run was a class's and the class went away (deleted or expired)."""
+    return bool(state["signature"][1])
 
 
 def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> None:
@@ -74,6 +82,8 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
     state = _state(key, steps, classroom.seat(key))
     if state.pop("restarted", False):
         st.info(t("practice.restarted"), icon=":material/restart_alt:")
+    if state["seat"] is None and seated_before(state):
+        st.warning(t("class.gone_note"), icon=":material/cloud_off:")
     progress: Progress = state["progress"]
     index = min(state["index"], len(steps) - 1)
     step = steps[index]
@@ -91,9 +101,9 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
                else t("practice.rule_hidden"))
     _typing(step, key, state)
     with verdict:
-        classroom.not_saved()
-        _feedback(step, progress)
-    _moves(steps, index, key, state, progress)
+        if not classroom.not_saved():
+            _feedback(step, state["progress"], state["mine"].get(step.id))
+    _moves(steps, index, key, state)
     if all(progress.done(s) for s in steps):
         score(steps, progress, key)
 
@@ -114,8 +124,7 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
     if drag and drag.get("point") == "tip":
         at = complex(float(drag["x"]), float(drag["y"])) * step.scale
         state["tips"][step.id] = at
-        classroom.give(state["seat"], progress, step,
-                       at - step.tail if step.kind == "vector" else at)
+        classroom.give(state, step, at - step.tail if step.kind == "vector" else at)
         state["revision"] += 1
         rerun_here()
 
@@ -148,14 +157,16 @@ def _typing(step: Step, key: str, state: dict) -> None:
             answer = complex(*values)
         else:
             answer = values[0] / factor
-        classroom.give(state["seat"], state["progress"], step, answer)
+        classroom.give(state, step, answer)
     rerun_here()  # the verdict, with the step's prompt and sheet brought to the screen
 
 
-def _feedback(step: Step, progress: Progress) -> None:
+def _feedback(step: Step, progress: Progress, mine: Verdict | None) -> None:
+    """The verdict of the last check of ``step`` (in a class: this device's own, as stored;
+    the tries of another tab count in ``progress``), then the exact answer once done."""
     verdicts = progress.verdicts.get(step.id, [])
-    if verdicts:
-        last = verdicts[-1]
+    last = mine or (verdicts[-1] if verdicts else None)
+    if last is not None:
         (st.success if last.ok else st.warning)(hint(step, last))
     if progress.done(step) and not any(v.ok for v in verdicts):
         st.info(t("practice.shown", tries=len(verdicts), limit=TRIES))
@@ -175,8 +186,9 @@ def exact_text(step: Step) -> str:
             f"{num(math.degrees(math.atan2(z.imag, z.real)) % 360, 4)}°")
 
 
-def _moves(steps: list[Step], index: int, key: str, state: dict, progress: Progress) -> None:
+def _moves(steps: list[Step], index: int, key: str, state: dict) -> None:
     cols = st.columns(3)
+    progress = state["progress"]
 
     def go(to: int) -> None:
         state["index"] = max(0, min(to, len(steps) - 1))
@@ -184,7 +196,7 @@ def _moves(steps: list[Step], index: int, key: str, state: dict, progress: Progr
     cols[0].button(t("practice.previous"), key=f"{key}_prev", on_click=go, args=(index - 1,),
                    disabled=index == 0, icon=":material/arrow_back:", width="stretch")
     cols[1].button(t("practice.reveal"), key=f"{key}_reveal",
-                   on_click=lambda: classroom.reveal(state["seat"], progress, steps[index]),
+                   on_click=lambda: classroom.reveal(state, steps[index]),
                    disabled=progress.done(steps[index]), icon=":material/visibility:",
                    width="stretch")
     cols[2].button(t("practice.next"), key=f"{key}_next", on_click=go, args=(index + 1,),
@@ -200,8 +212,8 @@ def score(steps: list[Step], progress: Progress, key: str) -> None:
     cols = st.columns(3)
     for col, outcome in zip(cols, ("first", "later", "revealed")):
         col.metric(t(OUTCOMES[outcome]), f"{counts[outcome]} / {len(steps)}")
-    st.download_button(t("practice.csv"), lambda: answers_table(steps, progress).to_csv(
-        index=False).encode("utf-8"), f"practice-{key}.csv", mime="text/csv",
+    st.download_button(t("practice.csv"), kept_language(lambda: answers_table(steps, progress).to_csv(
+        index=False).encode("utf-8")), f"practice-{key}.csv", mime="text/csv",
         key=f"{key}_csv", on_click="ignore", icon=":material/download:")
 
 
