@@ -42,14 +42,14 @@ def navigation_pages() -> list[st.Page]:
 # an emoji, drawn by the browser: a ":material/…:" favicon is fetched from Google's font CDN,
 # which fails in a room without internet and tells a third party of every visit
 st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide")
-language_picker()
-projector_switch()
-frame_css()
-page = st.navigation(navigation_pages())
-sidebar_join()  # (after the pages are known: a first run after a restart may switch at once)
-begin_run(page.url_path)
-try:
-    with boundary():
+with boundary():  # no traceback on any page: one sentence, and the server's log
+    language_picker()
+    projector_switch()
+    frame_css()
+    page = st.navigation(navigation_pages())
+    sidebar_join()  # (after the pages are known: a first run after a restart may switch at once)
+    begin_run(page.url_path)
+    try:
         page.run()
-finally:  # (st.stop() and a rerun leave run() by an exception)
-    end_run()
+    finally:  # (st.stop() and a rerun leave run() by an exception)
+        end_run()

@@ -4,6 +4,7 @@ web client sends and receives), for the load test and the page benchmark."""
 from __future__ import annotations
 
 import asyncio
+import os
 import subprocess
 import sys
 import time
@@ -152,15 +153,15 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def start_server(port: int, script: Path = ROOT / "app.py", log=subprocess.DEVNULL
-                 ) -> subprocess.Popen:
+def start_server(port: int, script: Path = ROOT / "app.py", log=subprocess.DEVNULL,
+                 env: dict[str, str] | None = None) -> subprocess.Popen:
     """The app served on 127.0.0.1:``port`` as scripts/start.sh serves it; its output to
-    ``log`` (an open file, or discarded)."""
+    ``log`` (an open file, or discarded); ``env`` added to this process's environment."""
     return subprocess.Popen(
         [sys.executable, str(ROOT / "scripts" / "serve.py"), str(script), "--server.port", str(port),
          "--server.address", "127.0.0.1", "--server.headless", "true",
          "--browser.gatherUsageStats", "false"],
-        cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
+        cwd=ROOT, stdout=log, stderr=subprocess.STDOUT, env={**os.environ, **(env or {})})
 
 
 async def wait_ready(url: str, seconds: float = 60) -> None:

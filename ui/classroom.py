@@ -117,7 +117,7 @@ def give(state: dict, step: Step, answer) -> None:
     run, ui.practice, with its ``steps``.)"""
     seated = state["seat"]
     if seated is None or state["progress"].done(step):
-        state["progress"].give(step, answer)
+        state["mine"][step.id] = state["progress"].give(step, answer)
         return
     verdict = grade(step, answer)
     if verdict.diagnosis == "none":
