@@ -144,7 +144,8 @@ _MAKING = threading.Lock()
 @cache
 def _engine(url: str) -> sa.Engine:
     """One engine per URL and process, its schema upgraded on first use."""
-    made = sa.create_engine(url, pool_pre_ping=True)
+    # (hide_parameters: an error's text, logged with its traceback, names no token)
+    made = sa.create_engine(url, pool_pre_ping=True, hide_parameters=True)
     if made.dialect.name == "sqlite":
         @sa.event.listens_for(made, "connect")
         def _sqlite(connection, _record) -> None:  # shared by processes on one machine

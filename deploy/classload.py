@@ -69,19 +69,24 @@ class ClassReport:
 
 @dataclass
 class Deploy:
-    """deploy/start.sh running: nginx's address, the app ports, the store, the script."""
+    """deploy/start.sh running: nginx's address, the app ports, the store, the script, its
+    logs folder."""
 
     proxy: str
     ports: list[int]
     database: str
     pgdata: Path
     script: subprocess.Popen
+    logs: Path
 
-    def stop(self) -> None:
+    def stop(self, keep: bool = False) -> None:
+        """Stopped as Ctrl-C stops it; its data and logs removed unless ``keep``."""
         if self.script.poll() is None:
             self.script.send_signal(signal.SIGTERM)
             self.script.wait(timeout=60)
-        shutil.rmtree(self.pgdata, ignore_errors=True)
+        if not keep:
+            shutil.rmtree(self.pgdata, ignore_errors=True)
+            shutil.rmtree(self.logs, ignore_errors=True)
 
 
 def consecutive_ports() -> int:
@@ -101,11 +106,13 @@ def start_deploy(processes: int = 2, app: str = "app.py") -> Deploy:
     """deploy/start.sh serving ``app`` with its own PostgreSQL in a temporary folder; returns
     when nginx and every process answer."""
     pgdata = Path(tempfile.mkdtemp(prefix="mz-deploy-pg-"))
+    logs = Path(tempfile.mkdtemp(prefix="mz-deploy-logs-"))
     if os.getuid() == 0:
         shutil.chown(pgdata, "postgres")
     port, first = free_port(), consecutive_ports()
     env = {**os.environ, "PROCESSES": str(processes), "PORT": str(port),
-           "FIRST_APP_PORT": str(first), "MEHANIZMI_PGDATA": str(pgdata), "APP": app}
+           "FIRST_APP_PORT": str(first), "MEHANIZMI_PGDATA": str(pgdata), "APP": app,
+           "MEHANIZMI_LOGS": str(logs)}
     env.pop("MEHANIZMI_DATABASE_URL", None)
     script = subprocess.Popen(["bash", "deploy/start.sh"], cwd=ROOT, env=env, text=True,
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
@@ -122,7 +129,7 @@ def start_deploy(processes: int = 2, app: str = "app.py") -> Deploy:
     ports = [first + i for i in range(processes)]
     for address in [port, *ports]:
         healthy(f"http://127.0.0.1:{address}")
-    return Deploy(f"http://127.0.0.1:{port}", ports, database, pgdata, script)
+    return Deploy(f"http://127.0.0.1:{port}", ports, database, pgdata, script, logs)
 
 
 def healthy(address: str, seconds: float = 90) -> None:
@@ -290,10 +297,9 @@ async def fault(kind: str | None, deploy: Deploy, at: float) -> None:
     await asyncio.to_thread(subprocess.run, [*as_postgres, pg_ctl, "-D", str(deploy.pgdata),
                                              "-m", "fast", "-w", "stop"], capture_output=True)
     await asyncio.sleep(GAP)
-    socket_dir = deploy.database.split("host=", 1)[1].replace("%2F", "/")
-    await asyncio.to_thread(subprocess.run, [
-        *as_postgres, pg_ctl, "-D", str(deploy.pgdata), "-w", "-l", f"{socket_dir}/log",
-        "-o", f"-k {socket_dir} -c listen_addresses=''", "start"], capture_output=True)
+    await asyncio.to_thread(subprocess.run, [  # as deploy/start.sh starts it
+        *as_postgres, pg_ctl, "-D", str(deploy.pgdata), "-w", "-l", f"{deploy.pgdata}/server.log",
+        "-o", f"-k {deploy.pgdata} -c listen_addresses=''", "start"], capture_output=True)
 
 
 def view_delays(report: ClassReport) -> list[float]:

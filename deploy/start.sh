@@ -5,10 +5,12 @@
 #   PROCESSES=4 PORT=80 HOST=0.0.0.0 deploy/start.sh
 #   MEHANIZMI_DATABASE_URL=postgresql+psycopg://user:pass@db/mehanizmi deploy/start.sh
 # Without MEHANIZMI_DATABASE_URL it starts a PostgreSQL server of its own, its data in
-# MEHANIZMI_PGDATA (default data/postgres), reached on a Unix socket only.
+# MEHANIZMI_PGDATA (default data/postgres), reached on a Unix socket in that folder only.
 # An app process that dies is started again (its users reconnect through nginx and resume
 # from the store). Ctrl-C (or SIGTERM) stops nginx, every process and that server.
-# See docs/deploy.md.
+# Logs are kept in MEHANIZMI_LOGS (default data/logs; the folder and files readable by the
+# starting user alone; rotated at LOG_BYTES, LOG_KEEP old ones kept; no key or token in
+# them). See docs/deploy.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PROCESSES=${PROCESSES:-$(nproc)}
@@ -30,7 +32,14 @@ if [ ! -x .venv/bin/streamlit ]; then
   python3 -m venv .venv
   .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
 fi
-RUN=$(mktemp -d /tmp/mehanizmi-deploy.XXXXXX)
+.venv/bin/python scripts/icon_font.py  # once per Streamlit version: its icon font, cut
+LOGS=${MEHANIZMI_LOGS:-data/logs}
+mkdir -p "$LOGS" && chmod 700 "$LOGS" && LOGS=$(cd "$LOGS" && pwd)
+logged() {  # a log file fed from a pipe: rotated, private, keys and tokens redacted
+  .venv/bin/python deploy/logpipe.py "$LOGS/$1" --bytes "${LOG_BYTES:-10485760}" --keep "${LOG_KEEP:-5}"
+}
+RUN=$(mktemp -d /tmp/mehanizmi-deploy.XXXXXX)  # nginx's configuration and scratch: removed
+[ "$(id -u)" -ne 0 ] || chmod 711 "$RUN"  # (nginx's workers run as nobody)
 SECRET=$(head -c 32 /dev/urandom | od -An -tx1 | tr -d ' \n')  # one for all processes
 pids=()
 PGDATA=""
@@ -46,18 +55,19 @@ trap stop EXIT
 trap 'exit 143' INT TERM  # (stop runs on the way out)
 if [ -z "${MEHANIZMI_DATABASE_URL:-}" ]; then  # a server of our own, its data kept
   data=${MEHANIZMI_PGDATA:-data/postgres}
-  mkdir -p "$data" "$RUN/pg"
+  mkdir -p "$data"
   data=$(cd "$data" && pwd)
   if [ ${#as_postgres[@]} -gt 0 ]; then
-    chmod 711 "$RUN"; chown postgres "$data" "$RUN/pg"; chmod 700 "$RUN/pg"
+    chown postgres "$data"
     "${as_postgres[@]}" test -w "$data" || {
       echo "the postgres user cannot write $data: set MEHANIZMI_PGDATA to a folder it can reach" >&2; exit 1; }
   fi
   [ -f "$data/PG_VERSION" ] || "${as_postgres[@]}" "$PG_BIN/initdb" -D "$data" -A trust -U postgres >/dev/null
-  "${as_postgres[@]}" "$PG_BIN/pg_ctl" -D "$data" -l "$RUN/pg/log" -w \
-    -o "-k $RUN/pg -c listen_addresses=''" start >/dev/null
+  # its socket and its log in its own folder (mode 700): the same path at every start
+  "${as_postgres[@]}" "$PG_BIN/pg_ctl" -D "$data" -l "$data/server.log" -w \
+    -o "-k $data -c listen_addresses=''" start >/dev/null
   PGDATA=$data
-  export MEHANIZMI_DATABASE_URL="postgresql+psycopg://postgres@/postgres?host=$RUN/pg"
+  export MEHANIZMI_DATABASE_URL="postgresql+psycopg://postgres@/postgres?host=$data"
 fi
 .venv/bin/python -m solvers class migrate  # the schema, made or upgraded before any process serves
 serve() {  # one app process on port $1, started again if it dies (its users reconnect)
@@ -66,7 +76,7 @@ serve() {  # one app process on port $1, started again if it dies (its users rec
   while true; do
     STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/python scripts/serve.py "$APP" \
       --server.port "$port" --server.address 127.0.0.1 --server.headless true \
-      >> "$RUN/app-$port.log" 2>&1 &
+      > >(logged "app-$port.log") 2>&1 &
     child=$!
     wait $child && code=0 || code=$?
     echo "the app process on port $port stopped (exit $code); starting it again" >&2
@@ -84,10 +94,11 @@ mkdir -p "$RUN"/{body,proxy,fastcgi,uwsgi,scgi}
 awk -v run="$RUN" -v port="$PORT" -v host="$HOST" -v servers="$servers" \
   '{gsub("@RUN@", run); gsub("@PORT@", port); gsub("@HOST@", host); sub("@SERVERS@", servers); print}' \
   deploy/nginx.conf.in > "$RUN/nginx.conf"
-nginx -t -p "$RUN" -c "$RUN/nginx.conf" -q
-nginx -p "$RUN" -c "$RUN/nginx.conf" -g "daemon off;" &
+nginx -t -e stderr -p "$RUN" -c "$RUN/nginx.conf" -q
+# its error log on stderr and its access log on stdout, each into a kept, redacted log
+nginx -e stderr -p "$RUN" -c "$RUN/nginx.conf" -g "daemon off;" > >(logged access.log) 2> >(logged nginx.log) &
 pids+=($!)
-echo "Mehanizmi: $PROCESSES processes behind nginx at http://$HOST:$PORT (logs in $RUN)"
+echo "Mehanizmi: $PROCESSES processes behind nginx at http://$HOST:$PORT (logs in $LOGS)"
 wait -n || true
-echo "nginx stopped; stopping the rest (logs: $RUN)" >&2
-cat "$RUN"/error.log "$RUN"/app-*.log 2>/dev/null | tail -20 >&2
+echo "nginx stopped; stopping the rest (logs: $LOGS)" >&2
+tail -n 20 "$LOGS"/nginx.log "$LOGS"/app-*.log >&2 2>/dev/null || true

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import shutil
+import stat
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -42,7 +44,26 @@ def test_the_proxy_configuration_is_valid_nginx(tmp_path):
         (tmp_path / sub).mkdir()
     conf = tmp_path / "nginx.conf"
     conf.write_text(text)
-    result = subprocess.run(["nginx", "-t", "-p", str(tmp_path), "-c", str(conf)],
+    result = subprocess.run(["nginx", "-t", "-e", "stderr", "-p", str(tmp_path), "-c", str(conf)],
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     assert "hash $route consistent" in text and "Upgrade $http_upgrade" in text
+
+
+def test_a_piped_log_is_rotated_at_its_cap_private_and_without_keys(tmp_path):
+    """deploy/logpipe.py: every line kept (the newest in the file, older in FILE.1 …), no
+    file over the cap, at most ``keep`` old ones, mode 600, and each key= and student=
+    value written as "…" (in a query, encoded, or in a referrer)."""
+    log = tmp_path / "app.log"
+    lines = [f"{n:05d} GET /class?class=ABC123&key=s3cret{n}&student=tok{n} referrer: "
+             f"http://x/velocity_plans?student%3Dtok{n}" for n in range(2000)]
+    done = subprocess.run([sys.executable, str(ROOT / "deploy" / "logpipe.py"), str(log),
+                           "--bytes", "20000", "--keep", "3"], input="\n".join(lines) + "\n",
+                          text=True, capture_output=True)
+    assert done.returncode == 0, done.stderr
+    files = sorted(tmp_path.iterdir())
+    assert [f.name for f in files] == ["app.log", "app.log.1", "app.log.2", "app.log.3"]
+    assert all(f.stat().st_size <= 20000 and stat.S_IMODE(f.stat().st_mode) == 0o600 for f in files)
+    text = "".join(f.read_text() for f in files)
+    assert "s3cret" not in text and "tok" not in text and "key=…" in text
+    assert f"{1999:05d} GET /class?class=ABC123&key=…&student=…" in log.read_text()
