@@ -29,7 +29,9 @@ from __future__ import annotations
 import asyncio.base_events
 import gzip
 import hashlib
+import importlib
 import os
+import pkgutil
 import queue
 import socket
 import sys
@@ -221,7 +223,21 @@ def _with_precompressed():
 _streamlit_middleware = starlette_app.create_streamlit_middleware
 
 
+def warm() -> None:
+    """Import every module of ``ui`` (and what they import) before the first session: the
+    first sessions of a class arrive at once, each page script in a thread of its own, and
+    two threads importing the same modules in opposite orders met Python's import-deadlock
+    escape, which hands one of them a half-made module ("cannot import name 'boundary' from
+    'ui.boundary'", seen by the class load test's lecturer)."""
+    sys.path.insert(0, str(ROOT))
+    import ui
+
+    for module in pkgutil.iter_modules(ui.__path__):
+        importlib.import_module(f"ui.{module.name}")
+
+
 def main() -> None:
+    warm()
     asyncio.base_events._set_nodelay = _set_nodelay  # called for every accepted connection
     starlette_app.create_streamlit_middleware = _with_precompressed
     turns.install()  # one page script at a time (scripts/turns.py)
