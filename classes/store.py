@@ -310,15 +310,13 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
                   "step": step, "answer": text, "diagnosis": diagnosis, "term": term or None,
                   "time": _now(), "variant": variant}
         for _ in range(RACES):
-            stored = _stored_try(made, check)
-            if stored is not None:
-                return stored  # the same check, sent again
             try:
                 with made.begin() as db:
-                    db.execute(_numbered(values))
-            except sa.exc.IntegrityError:
-                continue  # another tab took this number (or sent this check) meanwhile
-            return _stored_try(made, check)
+                    return db.execute(_numbered(values)).scalar_one()
+            except sa.exc.IntegrityError:  # this check sent again, or a number taken meanwhile
+                stored = _stored_try(made, check)
+                if stored is not None:
+                    return stored  # the same check, stored by an earlier sending
         raise NotSaved("too many checks of this step at once")
     except StoreDown as exc:
         raise NotSaved(exc.args[-1]) from None
@@ -338,7 +336,7 @@ def _numbered(values: dict):
              .scalar_subquery())
     columns = [*values, "try"]
     row = [sa.literal(v, type_=checks.c[k].type) for k, v in values.items()] + [after]
-    return checks.insert().from_select(columns, sa.select(*row))
+    return checks.insert().from_select(columns, sa.select(*row)).returning(checks.c["try"])
 
 
 def _stored_try(made: sa.Engine, check: str) -> int | None:
