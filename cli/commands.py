@@ -14,7 +14,6 @@ import json
 import sys
 from pathlib import Path
 
-from classes import store
 from classes.store import ClassError, NotSaved, StoreDown
 from exams import variants
 from exams.codes import DEFAULT_SPREAD, Settings

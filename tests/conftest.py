@@ -52,3 +52,18 @@ def browser(tmp_path_factory):
             viewport={"width": 1400, "height": 900})
         yield context
         context.close()
+
+
+@pytest.fixture(scope="module")
+def chromium():
+    """A chromium for a class's people: the browser, and an iPhone 13's settings for a
+    student's phone (``browser.new_context(**phone)``)."""
+    from playwright.sync_api import sync_playwright
+
+    from .test_browser import CHROMIUM, FLAGS
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        phone = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
+        yield browser, phone
+        browser.close()

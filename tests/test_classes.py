@@ -275,13 +275,18 @@ def test_with_the_database_stopped_a_check_is_not_saved_and_later_stored_once(po
     assert [(r["step"], r["try"]) for r in store.export(code, key, url=url)] == [("v.b", 1)]
 
 
-def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
-    env = {**os.environ, "MEHANIZMI_DATABASE_URL": f"sqlite:///{tmp_path / 'cli.db'}"}
+def _command_line(database: Path):
+    """``python -m solvers …`` on the SQLite store ``database``, as a separate process."""
+    env = {**os.environ, "MEHANIZMI_DATABASE_URL": f"sqlite:///{database}"}
 
     def cli(*args: str) -> subprocess.CompletedProcess:
         return subprocess.run([sys.executable, "-m", "solvers", *args], cwd=ROOT, env=env,
                               capture_output=True, text=True)
+    return cli
 
+
+def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
+    cli = _command_line(tmp_path / "cli.db")
     made = json.loads(cli("class", "create", "zbirka-3.1", "--method", "plans", "--json").stdout)
     assert set(made) == {"code", "key", "join"} and made["join"].endswith(made["code"])
     student = json.loads(cli("class", "join", made["code"], "--nickname", "Ana",
@@ -307,12 +312,7 @@ def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
 
 
 def test_a_second_hand_in_is_stored_as_the_next_tries_and_hostile_files_store_nothing(tmp_path):
-    env = {**os.environ, "MEHANIZMI_DATABASE_URL": f"sqlite:///{tmp_path / 'cli.db'}"}
-
-    def cli(*args: str) -> subprocess.CompletedProcess:
-        return subprocess.run([sys.executable, "-m", "solvers", *args], cwd=ROOT, env=env,
-                              capture_output=True, text=True)
-
+    cli = _command_line(tmp_path / "cli.db")
     made = json.loads(cli("class", "create", "zbirka-3.1", "--method", "plans", "--json").stdout)
     student = cli("class", "join", made["code"]).stdout.strip()
     seat = ("--class", made["code"], "--student", student)

@@ -10,20 +10,9 @@ import pytest
 
 from classes import store
 
-from .test_browser import CHROMIUM, FLAGS, check_first_step, wait_idle
+from .test_browser import check_first_step, wait_idle
 
 pytestmark = pytest.mark.browser
-
-
-@pytest.fixture(scope="module")
-def chromium():
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
-        phone = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
-        yield browser, phone
-        browser.close()
 
 
 def test_a_class_is_started_joined_from_phones_and_resumed_after_a_reload(app_url, chromium,

@@ -17,7 +17,7 @@ import pytest
 from classes import store
 from deploy.client import free_port, start_server
 
-from .test_browser import CHROMIUM, FLAGS, check_first_step, keep, wait_idle
+from .test_browser import check_first_step, keep, wait_idle
 from .test_classes import PG_BIN, Postgres
 
 pytestmark = pytest.mark.browser
@@ -71,17 +71,6 @@ def served(tmp_path_factory):
     running = Served(tmp_path_factory.mktemp("faults"))
     yield running
     running.stop()
-
-
-@pytest.fixture(scope="module")
-def chromium():
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
-        phone = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
-        yield browser, phone
-        browser.close()
 
 
 def no_exception(*pages) -> None:
