@@ -16,12 +16,14 @@ import os
 import pkgutil
 
 import pytest
+from streamlit import config as streamlit_config
 
 import ui
 from deploy.client import free_port, start_server, wait_ready
 
 os.environ.setdefault("MEHANIZMI_ERRORS", "raise")
 os.environ.setdefault("STREAMLIT_CLIENT_SHOW_ERROR_DETAILS", "full")
+streamlit_config.set_option("client.showErrorDetails", "full")  # (AppTest reads config.toml)
 for _module in pkgutil.iter_modules(ui.__path__):
     importlib.import_module(f"ui.{_module.name}")
 

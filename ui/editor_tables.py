@@ -25,8 +25,8 @@ import streamlit as st
 
 from mechanisms.sketch import COLUMNS
 from ui.i18n import current, t
-from ui.numbers import Refused, parse, refusal, shown
-from ui.url import table_to_url, url_table
+from ui.numbers import Refused, literal, parse, refusal, shown
+from ui.url import table_refused, table_to_url, url_table
 
 TEXT_COLUMNS = {"point", "label", "first", "second", "through", "type", "form", "side"}
 WHOLE_COLUMNS = {"member", "p", "q"}  # member numbers: the editor's own whole-number cells
@@ -126,6 +126,8 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     cells are written the new language's way and no edit is lost."""
     language = current()
     start = url_table(key, default, scene, rows_fixed)
+    if (text := table_refused(key)) is not None:
+        st.warning(t("link.table_refused", text=literal(text)), icon=":material/link_off:")
     memo = st.session_state.get(f"_{key}_typed")
     if memo is None or memo["scene"] != scene:
         memo = {"scene": scene, "language": language, "start": start, "good": start}

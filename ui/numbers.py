@@ -23,10 +23,11 @@ import math
 import re
 from dataclasses import dataclass
 
+import numpy as np
 import streamlit as st
 
-from ui.i18n import current, num, t
-from ui.url import url_set
+from ui.i18n import current, t
+from ui.url import link_default, url_set
 
 REASONS = ("empty", "not_number", "comma", "integer", "below", "above")  # num.<reason>
 NUMBER = re.compile(r"[+\-\u2212]?(?:[0-9]+(?:[.,][0-9]*)?|[.,][0-9]+)(?:[eE][+\-\u2212]?[0-9]+)?")
@@ -78,9 +79,15 @@ def refusal(field: str, refused: Refused, language: str | None = None) -> str:
     """The refusal in words: the field, what was typed (as typed, cut and shown literally)
     and why."""
     language = language or current()
-    limit = num(refused.limit, 6, language) if refused.limit is not None else ""
+    limit = written(refused.limit, language) if refused.limit is not None else ""
     return t(f"num.{refused.reason}", language, field=field, text=literal(refused.text),
              limit=limit)
+
+
+def written(value: float, language: str) -> str:
+    """A limit as people write it: every digit, no exponent (0,000000001, not 1e-09)."""
+    text = np.format_float_positional(value, trim="-")
+    return text.replace(".", ",") if comma_is_decimal(language) else text
 
 
 def literal(text: str) -> str:
@@ -130,13 +137,15 @@ def number_field(label: str, key: str, value: float | None = None, *,
     state = st.session_state
     memo = state.get(_memo(key))  # (language, text shown, value) of the last good reading
     given = state.get(key)
+    from_link = None  # why the link's value was refused, said under the field
     if isinstance(given, (int, float)) and not isinstance(given, bool):
         value, given = float(given), None  # seeded by the page (ui.url.seed)
     elif given is None and url and key in st.query_params:
-        try:
-            value = parse(st.query_params[key], "sr", integer=integer)  # either sign
-        except Refused:
-            pass  # a hand-edited link: the page's own value
+        try:  # read as a typed value is, range and all (either decimal sign)
+            value = check(st.query_params[key], "sr", minimum=minimum, maximum=maximum,
+                          integer=integer)
+        except Refused as refused:  # a hand-edited link: the page's own value, said
+            value, from_link = link_default(key, value), refused
     if given is None:
         text = "" if value is None else shown(value, language, integer=integer)
         state[key] = text
@@ -162,6 +171,8 @@ def number_field(label: str, key: str, value: float | None = None, *,
             box.error(refusal(label, refused), icon=":material/error:")
             if optional:
                 result = None  # an answer: a refused one is no answer, not the last one
+    if from_link is not None:
+        box.warning(t("link.refused", why=refusal(label, from_link)), icon=":material/link_off:")
     state[_memo(key)] = memo
     if url and result is not None:
         url_set(key, f"{result:.15g}")

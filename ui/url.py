@@ -8,6 +8,7 @@ editor's rows) travel as compact rows of numbers.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 
 import pandas as pd
@@ -54,9 +55,19 @@ def seed(defaults: dict[str, object], scene: str) -> None:
     previous = st.session_state.get("_seeded_for")
     st.session_state["_seeded_for"] = scene
     changed = previous is not None and previous != scene
+    fallback = st.session_state.setdefault(LINK_DEFAULTS, {})
     for key, value in defaults.items():
         if changed or (key not in st.session_state and key not in st.query_params):
             st.session_state[key] = value
+        fallback[key] = value  # what a refused value of the link gives way to
+
+
+LINK_DEFAULTS = "_link_defaults"
+
+
+def link_default(key: str, value=None):
+    """The page's own value of ``key`` (``seed``'s), for a link whose value was refused."""
+    return st.session_state.get(LINK_DEFAULTS, {}).get(key, value)
 
 
 def url_table(key: str, default: pd.DataFrame, scene: str, rows_fixed: bool = True) -> pd.DataFrame:
@@ -73,12 +84,19 @@ def url_table(key: str, default: pd.DataFrame, scene: str, rows_fixed: bool = Tr
             try:
                 rows = [[float(v) for v in row.split(",")] for row in text.split(";")]
                 table = pd.DataFrame(rows, columns=default.columns).astype(default.dtypes)
-                if not rows_fixed or len(table) == len(default):
-                    start = table
-            except ValueError:  # a hand-edited link: keep the scene's own table
-                pass
+                if not table.map(math.isfinite).all().all() or (
+                        rows_fixed and len(table) != len(default)):
+                    raise ValueError(text)
+                start = table
+            except (ValueError, TypeError):  # a hand-edited link: the scene's own table, said
+                st.session_state[f"_{key}_link_refused"] = text
         st.session_state[memo] = (scene, start)
     return st.session_state[memo][1]
+
+
+def table_refused(key: str) -> str | None:
+    """The link's text for the table ``key`` when it was refused (said once, by the page)."""
+    return st.session_state.pop(f"_{key}_link_refused", None)
 
 
 def table_to_url(key: str, table: pd.DataFrame, default: pd.DataFrame) -> None:
