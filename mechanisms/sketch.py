@@ -92,6 +92,30 @@ def _int(value: Any) -> Any:
     return value
 
 
+def required(table: str, row: Mapping[str, Any]) -> tuple[str, ...]:
+    """The cells a filled row of ``table`` must have (``document`` would skip the row, or
+    the loader name an internal key, without them): a frame point's name, x and y; a
+    member's number and, with two points, its length; a point's member, name and cells in
+    the form it is given in; a pair's type, members and point (a sliding pair's line too);
+    a force's member, point, size and angle; a moment's member and value.
+    (ui.editor_tables refuses a row with one of them blank, at that cell.)"""
+    if table == "frame":
+        return ("point", "x", "y")
+    if table == "members":
+        two = not (_blank(row.get("first")) or _blank(row.get("second")))
+        return ("member", "length") if two else ("member",)
+    if table == "extra":
+        form = FORM_COLUMNS.get(row.get("form") or "offset", ())
+        return ("member", "point", *(c for c in form if c != "side"))
+    if table == "pairs":
+        return ("type", "p", "q", "point") + (("through",) if row.get("type") == "prismatic" else ())
+    if table == "forces":
+        return ("member", "point", "magnitude", "angle")
+    if table == "moments":
+        return ("member", "value")
+    return ()
+
+
 def tables(doc: dict) -> dict[str, list[dict]]:
     """The document as rows of plain values, one list per table (blank cells are None)."""
     out: dict[str, list[dict]] = {name: [] for name in TABLES}

@@ -17,6 +17,7 @@ from mechanisms.sketch import (
     TABLES,
     document,
     driver_values,
+    required,
     tables,
     template,
     template_ids,
@@ -26,7 +27,7 @@ from solvers.structure import StructureError, decompose, degrees_of_freedom, loo
 from ui import builder
 from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
-from ui.editor_tables import frame_of, marks, refused, rows_of
+from ui.editor_tables import MARK, REFUSED_CELL, frame_of, marks, refused, rows_of
 from ui.export import chart
 from ui.firstpaint import waiting
 from ui.fragments import fragment
@@ -67,8 +68,6 @@ UNITS = {"x": "m", "y": "m", "length": "m", "mass": "kg", "centre_along": "m",
          "centre_left": "m", "gyration": "m", "along": "m", "left": "m", "angle": "°",
          "d1": "m", "d2": "m", "r": "m", "theta": "°",
          "slider_angle": "°", "magnitude": "N", "value": "N·m"}
-MARK = "⚠"  # the column that names a row's refused cells
-REFUSED_CELL = "background-color: #fde8e8; color: #a4000f; font-weight: 600"
 
 
 def column_label(name: str) -> str:
@@ -94,11 +93,16 @@ def column(name: str):
     return st.column_config.TextColumn(label)  # numbers too: read by ui.numbers, not the browser
 
 
+def needs(name: str):
+    """The cells a filled row of the table ``name`` must have (mechanisms.sketch.required)."""
+    return lambda row: required(name, row)
+
+
 def refusals(name: str, rows: list[dict]) -> list[str]:
     """What a table holds that is not one number, each in words: the table, the row, the
     column and the text as typed."""
     return [refusal(f"{t(TABS[name][0])} · {t('table.row', row=i + 1)} · {column_label(col)}", why)
-            for i, col, why in refused(rows, current())]
+            for i, col, why in refused(rows, current(), needs(name))]
 
 
 def edited_tables(doc: dict) -> dict[str, list[dict]]:
@@ -120,7 +124,8 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
             for said in refusals(name, rows[name]):
                 st.error(said, icon=":material/error:")
             data = frame
-            if any(mark := marks(rows[name], language, {c: column_label(c) for c in COLUMNS[name]})):
+            if any(mark := marks(rows[name], language, {c: column_label(c) for c in COLUMNS[name]},
+                                 needs(name))):
                 frame.insert(0, MARK, mark)
                 config[MARK] = st.column_config.TextColumn("⚠", disabled=True)
                 data = frame.style.map(lambda v: REFUSED_CELL if v else "", subset=[MARK])
@@ -275,9 +280,9 @@ def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerato
         driver = driver_inputs(driver_values(base))
     doc = document(edited, driver, base)
     builder.remember(doc)
-    now = {name: refused(rows, current()) for name, rows in edited.items()}
+    now = {name: refused(rows, current(), needs(name)) for name, rows in edited.items()}
     shown = tables(base)
-    if (_texts(now) != _texts({n: refused(r, current()) for n, r in shown.items()})
+    if (_texts(now) != _texts({n: refused(r, current(), needs(n)) for n, r in shown.items()})
             or (edited["extra"] != shown["extra"] and builder.stale_forms(edited["extra"], doc))):
         builder.replace(doc)  # the tables again: the ⚠ marks where they are now, a point's
         st.rerun()  # other forms computed from what was just typed in one of them

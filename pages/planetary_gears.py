@@ -80,7 +80,8 @@ with main:
     with st.container(key="later_meshes"):  # on a phone, after the charts (ui/layout.py)
         st.markdown(f"**{t('gears.meshes')}**")
         own = meshes_table(base)
-        table = typed_table("meshes", own, base.id, ("R_a [m]", "R_b [m]"), width="stretch",
+        table = typed_table("meshes", own, base.id, ("R_a [m]", "R_b [m]"),
+                            name=t("gears.meshes_short"), width="stretch",
                             disabled=["a", "b"], column_config={
                                 "ring": st.column_config.NumberColumn(t("gears.ring"))})
     meshes = tuple(Mesh((int(r["a"]), int(r["b"])), (float(r["R_a [m]"]), float(r["R_b [m]"])),

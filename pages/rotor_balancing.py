@@ -23,7 +23,7 @@ from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
-from ui.numbers import last_value, number_field
+from ui.numbers import as_given, last_value, number_field
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -48,13 +48,15 @@ def defaults(base: Rotor) -> dict[str, object]:
         c = base.corrections.get(plane, Correction(radius=0.1))
         given = "mass" if c.mass is not None else "radius"
         values[f"given{plane}"] = given
-        values[f"value{plane}"] = float(getattr(c, given) * (1 if given == "mass" else MM))
-        values[f"x{plane}"] = float(base.planes.get(plane, 0.0) * MM)
+        values[f"value{plane}"] = as_given(getattr(c, given) * (1 if given == "mass" else MM))
+        values[f"x{plane}"] = as_given(base.planes.get(plane, 0.0) * MM)
     return values
 
 
 def table_of(base: Rotor) -> pd.DataFrame:
-    return pd.DataFrame([(m.mass, m.radius * MM, math.degrees(m.angle), m.x * MM)
+    """The task's masses in the table's units, as the task gives them (120°, not the
+    119,99999999999999 that radians and back make of it)."""
+    return pd.DataFrame([tuple(map(as_given, (m.mass, m.radius * MM, math.degrees(m.angle), m.x * MM)))
                          for m in base.masses], columns=COLUMNS)
 
 
@@ -98,8 +100,8 @@ with controls:
 with main, st.container(key="later_masses"):  # on a phone, after the polygons (ui/layout.py)
     st.markdown(f"**{t('rotor.masses')}**")
     own = table_of(base)
-    table = typed_table("masses", own, base.id, COLUMNS, rows_fixed=False, num_rows="dynamic",
-                        width="stretch")
+    table = typed_table("masses", own, base.id, COLUMNS, name=t("rotor.masses_short"),
+                        rows_fixed=False, num_rows="dynamic", width="stretch")
     rotor = rotor_from_inputs(base, table, typed)
     try:
         result = balance(rotor)

@@ -1,15 +1,22 @@
-"""The builder's tables in and out of the data editor (ui/editor_tables.py): number cells
-are text written and read the page's way, so a round trip changes no number and a text that
-is not one number is kept, to be refused by name."""
+"""The tables in and out of the data editor (ui/editor_tables.py): number cells are text
+written and read the page's way, so a round trip changes no number and a text that is not
+one number is kept, to be refused by name; every row is whole or refused at its cells."""
 
 import math
+import tomllib
 
 import pandas as pd
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from mechanisms.sketch import COLUMNS, TABLES, tables, template, template_ids
+from mechanisms import load_preset, preset_ids
+from mechanisms.schema import Scene
+from mechanisms.sketch import COLUMNS, TABLES, required, tables, template, template_ids
+from mechanisms.writer import to_toml
 from ui.editor_tables import frame_of, is_number_column, marks, refused, rows_of
 from ui.i18n import LANGUAGES
+from ui.numbers import parse
 
 ODD_MEMBER = {"member": "x", "label": None, "first": "A", "second": None, "length": "abc",
               "mass": None, "centre_along": 2, "centre_left": None, "gyration": None}
@@ -85,3 +92,57 @@ def test_a_point_typed_in_one_form_makes_its_checking_cells_stale():
     typed = document(edited, driver_values(doc), doc)
     assert stale_forms([row], typed)  # along and left still say the old place
     assert not stale_forms([row, {"member": None, "point": None}], typed)  # a row being typed
+
+
+def test_a_row_is_whole_or_refused_at_its_empty_needed_cell_and_an_empty_row_is_left_out():
+    """The one rule (issue 61): clearing task 7.1's first mass once dropped the whole row
+    and silently changed the correction; a cleared frame coordinate or member length reached
+    the loader as an internal key."""
+    rows = [{"m": "0,2", "r": None, "x": "1"}, {"m": None, "r": None, "x": None},
+            {"m": "abc", "r": "2", "x": ""}]
+    found = [(i, c, why.reason) for i, c, why in refused(rows, "sr", lambda row: ("m", "r", "x"))]
+    assert found == [(0, "r", "empty"), (2, "m", "not_number"), (2, "x", "empty")]
+    frame = [{"point": "A", "x": None, "y": 0.0}]
+    assert [(c, w.reason) for _, c, w in refused(frame, "en", lambda row: required("frame", row))] \
+        == [("x", "empty")]
+    member = {"member": 3, "label": None, "first": "B", "second": "C", "length": None,
+              "mass": None, "centre_along": None, "centre_left": None, "gyration": None}
+    assert [c for _, c, _ in refused([member], "en", lambda row: required("members", row))] == ["length"]
+    one_point = {**member, "second": None}
+    assert refused([one_point], "en", lambda row: required("members", row)) == []
+
+
+CELL = st.one_of(st.none(), st.just(""), st.text(max_size=8),
+                 st.floats(allow_nan=True, allow_infinity=True).map(str),
+                 st.floats(allow_nan=False, allow_infinity=False).map(lambda v: f"{v:.6g}".replace(".", ",")))
+
+
+@given(st.lists(st.fixed_dictionaries({"a": CELL, "b": CELL, "c": CELL}), max_size=6),
+       st.sampled_from(["sr", "en"]))
+@settings(max_examples=300, deadline=None)
+def test_any_table_of_text_cells_reads_whole_or_names_each_refused_cell(rows, language):
+    """Never raises; a table with no refusal reads every kept row as finite numbers, and a
+    refused one names a row and column that hold what it says."""
+    found = refused(rows, language, lambda row: ("a", "b", "c"))
+    for i, column, why in found:
+        cell = rows[i][column]
+        assert (cell in (None, "") and why.reason == "empty") or cell == why.text
+    if not found:
+        for row in rows:
+            cells = [row[c] for c in "abc"]
+            if all(v in (None, "") for v in cells):
+                continue  # a new row not yet filled: left out
+            assert all(math.isfinite(parse(v, language)) for v in cells)
+
+
+def test_every_template_and_task_reads_whole_under_the_rule():
+    """The rule asks no cell a real mechanism leaves empty (a one-point member's length, a
+    revolute pair's line)."""
+    docs = [template(name) for name in template_ids()]
+    docs += [tomllib.loads(to_toml(scene)) for scene in map(load_preset, preset_ids())
+             if isinstance(scene, Scene)]
+    for doc in docs:
+        rows = tables(doc)
+        for name in TABLES:
+            read = rows_of(frame_of(name, rows[name], "en"), "en")
+            assert refused(read, "en", lambda row, name=name: required(name, row)) == [], name

@@ -17,7 +17,7 @@ builder, where these take 0.4–0.5 ms (measured on the four-bar template's memb
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 
 import numpy as np
 import pandas as pd
@@ -91,23 +91,32 @@ def _cell(name: str, value, language: str):
         return value
 
 
-def refused(rows: list[dict], language: str) -> list[tuple[int, str, Refused]]:
-    """The number cells that hold a text which is not one number: (row, column, why)."""
+def refused(rows: list[dict], language: str,
+            required: Callable[[dict], Iterable[str]] = lambda row: ()) -> list[tuple[int, str, Refused]]:
+    """The one rule of every table a person types in: a row left wholly empty is a new row
+    not yet filled (left out, not refused); any other row is whole or refused at its cells —
+    each number cell holding a text that is not one number, and each of the row's
+    ``required`` cells left empty: (row, column, why)."""
     found = []
     for i, row in enumerate(rows):
+        if all(_blank_cell(v) or v == "" or v is False for v in row.values()):
+            continue
         for name, value in row.items():
-            if is_number_column(name) and isinstance(value, str):
+            if is_number_column(name) and isinstance(value, str) and value.strip():
                 try:
                     parse(value, language)
                 except Refused as why:
                     found.append((i, name, why))
+            elif name in required(row) and (_blank_cell(value) or value == ""):
+                found.append((i, name, Refused("empty", "")))
     return found
 
 
-def marks(rows: list[dict], language: str, label: Mapping[str, str]) -> list[str]:
+def marks(rows: list[dict], language: str, label: Mapping[str, str],
+          required: Callable[[dict], Iterable[str]] = lambda row: ()) -> list[str]:
     """One cell a row for the table's ⚠ column: the refused columns of that row, by name."""
     by_row: dict[int, list[str]] = {}
-    for i, name, _ in refused(rows, language):
+    for i, name, _ in refused(rows, language, required):
         by_row.setdefault(i, []).append(label[name])
     return [", ".join(by_row.get(i, [])) for i in range(len(rows))]
 
@@ -117,45 +126,76 @@ def _blank_cell(value) -> bool:
 
 
 def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[str], *,
-                rows_fixed: bool = True, column_config: dict | None = None,
+                name: str, rows_fixed: bool = True, column_config: dict | None = None,
                 **editor) -> pd.DataFrame:
     """An editor of a table of numbers kept in the link (ui.url.url_table): the ``numbers``
-    columns typed as text and read by ui.numbers. A cell that is not one number is named
-    above the table and keeps its text; the page goes on with the last table that read
-    whole. The editor starts again from that table when the language changes, so that its
-    cells are written the new language's way and no edit is lost."""
+    columns typed as text and read by ui.numbers, every row whole or refused by the one
+    rule (``refused``: every cell not disabled is needed). A refused cell is named above the
+    table ("``name`` · row 2 · m [kg]: type a number") and marked in its row (the ⚠ column);
+    the page goes on with the last table that read whole, so no result and no link changes.
+    When a cell is refused or mended the editor starts again from exactly what was typed
+    (with the marks where they are now), and when the language changes from that last whole
+    table, written the new language's way."""
     language = current()
     start = url_table(key, default, scene, rows_fixed)
     if (text := table_refused(key)) is not None:
         st.warning(t("link.table_refused", text=literal(text)), icon=":material/link_off:")
     memo = st.session_state.get(f"_{key}_typed")
     if memo is None or memo["scene"] != scene:
-        memo = {"scene": scene, "language": language, "start": start, "good": start}
+        memo = {"scene": scene, "language": language, "text": _written(start, numbers, language),
+                "good": start, "version": 0, "marks": []}
     elif memo["language"] != language:
-        memo = {**memo, "language": language, "start": memo["good"]}
-    text = memo["start"].astype({c: object for c in numbers})
-    for c in numbers:
-        text[c] = [_text(v, language) for v in memo["start"][c]]
-    place = st.container()
+        memo = {**memo, "language": language, "text": _written(memo["good"], numbers, language),
+                "version": memo["version"] + 1, "marks": []}
     config = {c: st.column_config.TextColumn(c) for c in numbers} | (column_config or {})
-    edited = st.data_editor(text, key=f"{key}-{scene}-{language}", column_config=config, **editor)
-    table, problems = edited.copy(), []
-    for c in numbers:
-        values = []
-        for i, v in enumerate(edited[c].tolist()):
-            try:
-                values.append(_number(v, language))
-            except Refused as why:
-                problems.append(refusal(f"{t('table.row', row=i + 1)} · {c}", why))
-                values.append(math.nan)
-        table[c] = np.array(values, dtype=float)
-    for said in problems:
-        place.error(said, icon=":material/error:")
+    data = memo["text"]
+    if any(memo["marks"]):
+        data = data.copy()
+        data.insert(0, MARK, memo["marks"])
+        config[MARK] = st.column_config.TextColumn(MARK, disabled=True)
+        data = data.style.map(lambda v: REFUSED_CELL if v else "", subset=[MARK])
+    place = st.container()
+    edited = st.data_editor(data, key=f"{key}-{scene}-{language}-{memo['version']}",
+                            column_config=config, hide_index=True, **editor)
+    edited = edited.drop(columns=MARK, errors="ignore").reset_index(drop=True)
+    needed = [c for c in edited.columns if c not in set(editor.get("disabled") or ())]
+    rows = [dict(zip(edited.columns, values)) for values in edited.itertuples(index=False)]
+    problems = refused(rows, language, lambda row: needed)
+    for i, column, why in problems:
+        place.error(refusal(f"{name} · {t('table.row', row=i + 1)} · {column}", why),
+                    icon=":material/error:")
     if not problems:
-        memo["good"] = table
+        memo["good"] = _read(rows, numbers, language, default)
+    now = marks(rows, language, {c: c for c in edited.columns}, lambda row: needed)
+    if now != memo["marks"] and (any(now) or any(memo["marks"])):
+        memo.update(text=edited, marks=now, version=memo["version"] + 1)
+        st.session_state[f"_{key}_typed"] = memo
+        st.rerun()  # the editor again from what was typed, the marks where they are now
     st.session_state[f"_{key}_typed"] = memo
     table_to_url(key, memo["good"], default)
     return memo["good"]
+
+
+MARK = "⚠"  # the column that names a row's refused cells (the builder's tables too)
+REFUSED_CELL = "background-color: #fde8e8; color: #a4000f; font-weight: 600"
+
+
+def _written(table: pd.DataFrame, numbers: Sequence[str], language: str) -> pd.DataFrame:
+    """A table of numbers as the editor shows it: the ``numbers`` columns as text written
+    in ``language`` with every digit."""
+    text = table.astype({c: object for c in numbers}).reset_index(drop=True)
+    for c in numbers:
+        text[c] = [_text(v, language) for v in table[c]]
+    return text
+
+
+def _read(rows: list[dict], numbers: Sequence[str], language: str,
+          default: pd.DataFrame) -> pd.DataFrame:
+    """The rows of a table that read whole, as numbers; rows left wholly empty left out."""
+    kept = [row for row in rows if not all(_blank_cell(v) or v == "" for v in row.values())]
+    table = pd.DataFrame([{c: _number(v, language) if c in numbers else v for c, v in row.items()}
+                          for row in kept], columns=list(default.columns))
+    return table.astype(default.dtypes)
 
 
 def _number(value, language: str) -> float:

@@ -64,6 +64,13 @@ def parse(text: str, language: str, *, integer: bool = False) -> float:
     return value
 
 
+def as_given(value: float) -> float:
+    """A value a task gives, after a change of units: rounded to 12 significant digits, so
+    that 120° made radians and back is 120 again, not 119,99999999999999. (For the page's
+    own values only; what a person types keeps every digit.)"""
+    return float(f"{float(value):.12g}")
+
+
 def shown(value: float, language: str, *, integer: bool = False) -> str:
     """``value`` as a person writes it in ``language``, with every digit it holds (Python's
     shortest text that reads back as the same float)."""

@@ -1,0 +1,81 @@
+"""A cleared or mistyped table cell in chromium (browser in English, page in Serbian): the
+rotor's, the gears' and the builder's tables each refuse it at the cell — named above the
+table as the table shows it, marked in its row — and keep the last table that read whole:
+the results and the link do not change. Mended, it is taken (issue 61: clearing task 7.1's
+first mass once dropped the row and changed the correction silently; clearing a radius of
+task 6.1 crashed the page)."""
+
+from __future__ import annotations
+
+import pytest
+
+from .test_browser import keep, open_page, wait_idle
+from .test_builder_browser import open_tab, shapes, type_cell
+from .test_typing_browser import cells, errors
+
+pytestmark = pytest.mark.browser
+EXCEPTION = "[data-testid='stException'], .st-key-unexpected"
+
+
+@pytest.fixture(scope="module")
+def english(chromium):
+    context = chromium[0].new_context(locale="en-US", viewport={"width": 1400, "height": 900})
+    yield context
+    context.close()
+
+
+def main_text(page) -> str:
+    return page.locator("[data-testid='stMain']").inner_text()
+
+
+def said(page, text: str) -> str:
+    """The error that says ``text``, once it is on the page."""
+    page.wait_for_function("t => [...document.querySelectorAll(\"[data-testid='stAlertContentError']\")]"
+                           ".some(e => e.innerText.includes(t))", arg=text, timeout=30_000)
+    wait_idle(page)
+    return next(e for e in errors(page) if text in e)
+
+
+def test_a_rotor_mass_cleared_or_mistyped_is_refused_and_the_correction_kept(app_url, english,
+                                                                           tmp_path):
+    page = open_page(english, f"{app_url}/rotor_balancing?lang=sr&scene=zbirka-7.1")
+    before, link = main_text(page), page.url
+    assert "0,35408" in before  # task 7.1's correction in plane I
+    type_cell(page, "m [kg]", 0, 0, " ", redraws=False)  # cleared
+    assert "upišite broj" in said(page, "Mase · red 1 · m [kg]")
+    grid = page.locator("[data-testid='stDataFrame']").filter(has_text="m [kg]")
+    assert "m [kg]" in cells(grid)  # the row's ⚠ cell names the column
+    assert "0,35408" in main_text(page) and page.url == link  # nothing changed
+    shot = tmp_path / "rotor-cleared-mass.png"
+    page.screenshot(path=str(shot))
+    keep(shot)
+    type_cell(page, "m [kg]", 0, 1, "abc", redraws=False)  # (1: after the ⚠ column)
+    assert "nije jedan broj" in said(page, "Mase · red 1 · m [kg]")
+    assert "0,35408" in main_text(page) and page.url == link
+    type_cell(page, "m [kg]", 0, 1, "0,3", redraws=False)  # mended: taken
+    page.wait_for_function("() => !document.body.innerText.includes('Mase · red 1')",
+                           timeout=30_000)
+    wait_idle(page)
+    assert "0,35408" not in main_text(page) and "masses=" in page.url
+    assert page.locator(EXCEPTION).count() == 0
+
+
+def test_a_gear_radius_cleared_is_refused_and_the_page_keeps_its_drawing(app_url, english):
+    page = open_page(english, f"{app_url}/planetary_gears?lang=sr&scene=zbirka-6.1")
+    charts, link = page.locator(".js-plotly-plot").count(), page.url
+    type_cell(page, "R_a [m]", 0, 2, " ", redraws=False)  # (a and b come first, fixed)
+    assert "upišite broj" in said(page, "Sprege · red 1 · R_a [m]")
+    assert page.locator(".js-plotly-plot").count() == charts and page.url == link
+    assert page.locator(EXCEPTION).count() == 0
+
+
+def test_a_builder_frame_coordinate_cleared_is_named_by_table_row_and_column(app_url, english):
+    page = open_page(english, f"{app_url}/builder?lang=sr")
+    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
+    open_tab(page, "Tačke postolja", "tačka")
+    before = shapes(page)
+    type_cell(page, "tačka", 0, 1, " ", redraws=False)  # the first frame point's x
+    text = said(page, "Tačke postolja · red 1 · x [m]")
+    assert "upišite broj" in text and "frame" not in text
+    assert shapes(page) == before  # the drawing keeps the last mechanism that read whole
+    assert page.locator(EXCEPTION).count() == 0
