@@ -29,7 +29,7 @@ from ui.firstpaint import first_run, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
-from ui.numbers import number_field
+from ui.numbers import bound_link, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_start, scene_picker
@@ -190,6 +190,7 @@ with main:  # the structure, which φ₂ does not change
     upto = groups
     if groups > 1:
         st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
+        bound_link("upto", t("assur.upto"), 1, groups, options=list(range(1, groups + 1)))
         upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
 
 

@@ -33,7 +33,7 @@ from ui.firstpaint import waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
-from ui.numbers import last_value, number_field
+from ui.numbers import bound_link, last_value, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_speed, driver_start, scene_picker
@@ -158,6 +158,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
     count = len(construction.steps)
     st.write(t("forces.steps_intro"))
     st.session_state["fstep"] = min(max(int(st.session_state.get("fstep", 1)), 1), count)
+    bound_link("fstep", t("forces.step"), 1, count, options=list(range(1, count + 1)))
     number = st.slider(t("forces.step"), 1, count, key="fstep", bind="query-params")
     step = construction.steps[number - 1]
     members = ", ".join(str(m) for m in sorted(step.members))
@@ -344,6 +345,7 @@ with controls:
     seed(defaults(base), st.session_state["scene"])
     position = st.container()  # φ₂ (or s): drawn by the fragment below
     loaded = load_inputs(base, driver_speed(base))
+    bound_link("steps", t("forces.steps"), options=list(RESOLUTIONS))
     steps = st.select_slider(t("forces.steps"), options=RESOLUTIONS, key="steps",
                              bind="query-params")
     download = st.container()

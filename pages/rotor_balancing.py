@@ -23,7 +23,7 @@ from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
-from ui.numbers import as_given, last_value, number_field
+from ui.numbers import as_given, bound_link, last_value, number_field
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -270,6 +270,7 @@ def accuracy() -> None:
     polygons): moving it reruns this alone, not the inputs, the balance and the polygons.
     The slider is drawn on every run (Streamlit forgets a widget a run leaves out)."""
     with precision_slot:
+        bound_link("precision", t("rotor.precision"), 0.1, 2.0)
         precision = st.slider(t("rotor.precision"), 0.1, 2.0, 0.5, 0.1, key="precision",
                               bind="query-params")
     with main:  # (a fragment may only write where it wrote in the last full run: every run)

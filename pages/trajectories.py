@@ -44,6 +44,7 @@ from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
+from ui.numbers import bound_link, bound_slider
 from ui.present import look
 from ui.scenes import length_range, length_slider, scene_download, scene_picker
 from ui.selfcheck import Quantity, answer_box
@@ -218,7 +219,7 @@ def defaults(base: Scene) -> dict[str, object]:
 
 def travel_sliders(base: Travel) -> Travel:
     """v_R and the chain drive of task 1.3, kept in the URL."""
-    return Travel(**{field: st.slider(t(label), lo, hi, step=step, key=key, bind="query-params")
+    return Travel(**{field: bound_slider(t(label), lo, hi, step=step, key=key)
                      for key, (label, field, lo, hi, step, _) in TRAVEL.items()},
                   angle=base.angle)
 
@@ -260,6 +261,7 @@ def paths_tab(base: Scene, scene: Scene, construction: Motion, steps: int, view:
 def field_tab(scene: Scene, fine: Motion, steps: int, point: str, asked: bool | str) -> None:
     """The tine's path in the field (the linkage and the travel) with the chart's own control
     of the travel, and the drive's figures."""
+    bound_link("cycles", t("traj.cycles"), 1, 6, options=list(range(1, 7)))
     cycles = st.slider(t("traj.cycles"), 1, 6, 3, key="cycles", bind="query-params")
     times, field = field_path(fine, scene.travel, point, cycles)
     control = travel_control(scene, steps, cycles, point, asked) if steps <= SMOOTH_FRAMES else None
@@ -337,6 +339,7 @@ def resolution_table(base: Scene, scene: Scene, fine: Motion, points: list[str],
 with controls:
     base = scene_picker()
     seed(defaults(base), st.session_state["scene"])
+    bound_link("res", t("traj.resolution"), options=list(RESOLUTIONS))
     steps = st.select_slider(t("traj.resolution"), RESOLUTIONS, value=360, key="res",
                              bind="query-params")
     views = {"steps": "traj.view_steps", "smooth": "traj.view_smooth", "compass": "traj.view_compass"}
@@ -359,8 +362,7 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
         if base.travel:
             scene = base.with_(travel=travel_sliders(base.travel))
         else:
-            omega = st.slider(t("traj.omega"), -50.0, 50.0, step=0.5, key="omega",
-                              bind="query-params")
+            omega = bound_slider(t("traj.omega"), -50.0, 50.0, step=0.5, key="omega")
             scene = base.with_(speed=omega)
         with st.expander(t("traj.lengths")):
             scene = scene.with_(lengths=length_sliders(base))

@@ -98,8 +98,8 @@ def test_a_row_is_whole_or_refused_at_its_empty_needed_cell_and_an_empty_row_is_
     """The one rule (issue 61): clearing task 7.1's first mass once dropped the whole row
     and silently changed the correction; a cleared frame coordinate or member length reached
     the loader as an internal key."""
-    rows = [{"m": "0,2", "r": None, "x": "1"}, {"m": None, "r": None, "x": None},
-            {"m": "abc", "r": "2", "x": ""}]
+    rows = [{"m": "0,2", "r": None, "x": "1"}, {"m": None, "r": " ", "x": None},
+            {"m": "abc", "r": "2", "x": "  "}]
     found = [(i, c, why.reason) for i, c, why in refused(rows, "sr", lambda row: ("m", "r", "x"))]
     assert found == [(0, "r", "empty"), (2, "m", "not_number"), (2, "x", "empty")]
     frame = [{"point": "A", "x": None, "y": 0.0}]
@@ -112,7 +112,7 @@ def test_a_row_is_whole_or_refused_at_its_empty_needed_cell_and_an_empty_row_is_
     assert refused([one_point], "en", lambda row: required("members", row)) == []
 
 
-CELL = st.one_of(st.none(), st.just(""), st.text(max_size=8),
+CELL = st.one_of(st.none(), st.just(""), st.just("  "), st.text(max_size=8),
                  st.floats(allow_nan=True, allow_infinity=True).map(str),
                  st.floats(allow_nan=False, allow_infinity=False).map(lambda v: f"{v:.6g}".replace(".", ",")))
 
@@ -126,11 +126,11 @@ def test_any_table_of_text_cells_reads_whole_or_names_each_refused_cell(rows, la
     found = refused(rows, language, lambda row: ("a", "b", "c"))
     for i, column, why in found:
         cell = rows[i][column]
-        assert (cell in (None, "") and why.reason == "empty") or cell == why.text
+        assert (why.reason == "empty" and (cell is None or not cell.strip())) or cell == why.text
     if not found:
         for row in rows:
             cells = [row[c] for c in "abc"]
-            if all(v in (None, "") for v in cells):
+            if all(v is None or not v.strip() for v in cells):
                 continue  # a new row not yet filled: left out
             assert all(math.isfinite(parse(v, language)) for v in cells)
 

@@ -25,7 +25,21 @@ def english(chromium):
 
 
 def main_text(page) -> str:
-    return page.locator("[data-testid='stMain']").inner_text()
+    """The page's text, with every table's cells (drawn on a canvas, held in a grid)."""
+    grids = page.locator("[role=gridcell]").all_text_contents()
+    return page.locator("[data-testid='stMain']").inner_text() + " | " + " | ".join(grids)
+
+
+def shows(page, text: str) -> None:
+    """Wait until a table's cell says ``text`` (the tables draw after the page settles)."""
+    page.wait_for_function("t => [...document.querySelectorAll('[role=gridcell]')]"
+                           ".some(c => c.textContent.includes(t))", arg=text, timeout=30_000)
+
+
+def gone(page, text: str) -> None:
+    """Wait until no table's cell says ``text``."""
+    page.wait_for_function("t => ![...document.querySelectorAll('[role=gridcell]')]"
+                           ".some(c => c.textContent.includes(t))", arg=text, timeout=30_000)
 
 
 def said(page, text: str) -> str:
@@ -39,8 +53,9 @@ def said(page, text: str) -> str:
 def test_a_rotor_mass_cleared_or_mistyped_is_refused_and_the_correction_kept(app_url, english,
                                                                            tmp_path):
     page = open_page(english, f"{app_url}/rotor_balancing?lang=sr&scene=zbirka-7.1")
-    before, link = main_text(page), page.url
-    assert "0,35408" in before  # task 7.1's correction in plane I
+    shows(page, "0,35408")  # task 7.1's correction in plane I
+    assert "| 120 |" in main_text(page) and "119,99" not in main_text(page)  # as given
+    link = page.url
     type_cell(page, "m [kg]", 0, 0, " ", redraws=False)  # cleared
     assert "upišite broj" in said(page, "Mase · red 1 · m [kg]")
     grid = page.locator("[data-testid='stDataFrame']").filter(has_text="m [kg]")
@@ -50,13 +65,15 @@ def test_a_rotor_mass_cleared_or_mistyped_is_refused_and_the_correction_kept(app
     page.screenshot(path=str(shot))
     keep(shot)
     type_cell(page, "m [kg]", 0, 1, "abc", redraws=False)  # (1: after the ⚠ column)
-    assert "nije jedan broj" in said(page, "Mase · red 1 · m [kg]")
+    text = said(page, "abc")  # (the message of the text as typed, not the one before)
+    assert "nije jedan broj" in text and "Mase · red 1 · m [kg]" in text
     assert "0,35408" in main_text(page) and page.url == link
     type_cell(page, "m [kg]", 0, 1, "0,3", redraws=False)  # mended: taken
     page.wait_for_function("() => !document.body.innerText.includes('Mase · red 1')",
                            timeout=30_000)
+    gone(page, "0,35408")
     wait_idle(page)
-    assert "0,35408" not in main_text(page) and "masses=" in page.url
+    assert "masses=" in page.url
     assert page.locator(EXCEPTION).count() == 0
 
 
@@ -78,4 +95,30 @@ def test_a_builder_frame_coordinate_cleared_is_named_by_table_row_and_column(app
     text = said(page, "Tačke postolja · red 1 · x [m]")
     assert "upišite broj" in text and "frame" not in text
     assert shapes(page) == before  # the drawing keeps the last mechanism that read whole
+    assert page.locator(EXCEPTION).count() == 0
+
+
+def test_an_empty_row_added_is_left_out_and_a_row_deleted_is_taken(app_url, english):
+    page = open_page(english, f"{app_url}/rotor_balancing?lang=sr&scene=zbirka-7.1")
+    shows(page, "0,35408")
+    grid = page.locator("[data-testid='stDataFrame']").filter(has_text="m [kg]")
+    rows = len(cells(grid)) // 4
+    before, link = main_text(page), page.url
+    box = grid.bounding_box()
+    page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * rows + 17)  # the row to add one
+    page.wait_for_function("([g, n]) => document.querySelectorAll(g).length > n",
+                           arg=["[data-testid='stDataFrame'] [role=gridcell]", 4 * rows],
+                           timeout=30_000)
+    page.keyboard.press("Escape")
+    page.wait_for_timeout(1500)
+    wait_idle(page)
+    assert not errors(page)  # a new row not yet filled: no refusal …
+    assert "0,35408" in main_text(page) and page.url == link  # … and nothing changed
+    page.mouse.click(box["x"] + 12, box["y"] + 35 + 17)  # the first row's selector
+    page.keyboard.press("Delete")
+    page.wait_for_function("() => location.href.includes('masses=')", timeout=30_000)
+    gone(page, "0,35408")
+    wait_idle(page)
+    assert not errors(page)
+    assert before != main_text(page)
     assert page.locator(EXCEPTION).count() == 0

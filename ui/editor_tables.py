@@ -99,7 +99,7 @@ def refused(rows: list[dict], language: str,
     ``required`` cells left empty: (row, column, why)."""
     found = []
     for i, row in enumerate(rows):
-        if all(_blank_cell(v) or v == "" or v is False for v in row.values()):
+        if all(_empty(v) or v is False for v in row.values()):
             continue
         for name, value in row.items():
             if is_number_column(name) and isinstance(value, str) and value.strip():
@@ -107,9 +107,14 @@ def refused(rows: list[dict], language: str,
                     parse(value, language)
                 except Refused as why:
                     found.append((i, name, why))
-            elif name in required(row) and (_blank_cell(value) or value == ""):
+            elif name in required(row) and _empty(value):
                 found.append((i, name, Refused("empty", "")))
     return found
+
+
+def _empty(value) -> bool:
+    """A cell with nothing in it: blank, or only spaces."""
+    return _blank_cell(value) or (isinstance(value, str) and not value.strip())
 
 
 def marks(rows: list[dict], language: str, label: Mapping[str, str],
@@ -192,7 +197,7 @@ def _written(table: pd.DataFrame, numbers: Sequence[str], language: str) -> pd.D
 def _read(rows: list[dict], numbers: Sequence[str], language: str,
           default: pd.DataFrame) -> pd.DataFrame:
     """The rows of a table that read whole, as numbers; rows left wholly empty left out."""
-    kept = [row for row in rows if not all(_blank_cell(v) or v == "" for v in row.values())]
+    kept = [row for row in rows if not all(_empty(v) for v in row.values())]
     table = pd.DataFrame([{c: _number(v, language) if c in numbers else v for c, v in row.items()}
                           for row in kept], columns=list(default.columns))
     return table.astype(default.dtypes)

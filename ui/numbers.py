@@ -144,7 +144,6 @@ def number_field(label: str, key: str, value: float | None = None, *,
     state = st.session_state
     memo = state.get(_memo(key))  # (language, text shown, value) of the last good reading
     given = state.get(key)
-    from_link = None  # why the link's value was refused, said under the field
     if isinstance(given, (int, float)) and not isinstance(given, bool):
         value, given = float(given), None  # seeded by the page (ui.url.seed)
     elif given is None and url and key in st.query_params:
@@ -152,7 +151,8 @@ def number_field(label: str, key: str, value: float | None = None, *,
             value = check(st.query_params[key], "sr", minimum=minimum, maximum=maximum,
                           integer=integer)
         except Refused as refused:  # a hand-edited link: the page's own value, said
-            value, from_link = link_default(key, value), refused
+            value = link_default(key, value)
+            said_of_link(key, refused, value)
     if given is None:
         text = "" if value is None else shown(value, language, integer=integer)
         state[key] = text
@@ -178,12 +178,58 @@ def number_field(label: str, key: str, value: float | None = None, *,
             box.error(refusal(label, refused), icon=":material/error:")
             if optional:
                 result = None  # an answer: a refused one is no answer, not the last one
-    if from_link is not None:
-        box.warning(t("link.refused", why=refusal(label, from_link)), icon=":material/link_off:")
+    link_note(key, label, result, box)
     state[_memo(key)] = memo
     if url and result is not None:
         url_set(key, f"{result:.15g}")
     return result
+
+
+def bound_link(key: str, label: str, low: float | None = None, high: float | None = None,
+               options: list | None = None) -> None:
+    """Before a widget Streamlit binds to the link (``bind="query-params"``: φ₂, ω₂, a
+    step): a link value that is not one number in ``[low, high]`` (or not one of
+    ``options``) is said in words and dropped, and the page's own value is used — Streamlit
+    would silently put the widget at its first value instead (φ₂ = 0 for ``?at=abc``)."""
+    read = f"_link_read_{key}"  # the link is read when the page opens, not after
+    text = st.query_params.get(key)
+    if text is not None and not st.session_state.get(read):
+        st.session_state[read] = True
+        try:
+            value = check(text, "sr", minimum=low, maximum=high)
+            if options is not None and value not in options:
+                raise Refused("not_number", text)
+        except Refused as refused:
+            st.query_params.pop(key, None)
+            if (own := link_default(key)) is not None:
+                st.session_state[key] = own
+            said_of_link(key, refused, st.session_state.get(key))
+    link_note(key, label, st.session_state.get(key))
+
+
+def said_of_link(key: str, refused: Refused, value) -> None:
+    """Remember that the link's value of ``key`` was refused, to be said while the field
+    holds the value the page used instead (every run: a page's next run would drop a note
+    made once)."""
+    st.session_state[f"_link_refused_{key}"] = (refused, value)
+
+
+def link_note(key: str, label: str, value, where=None) -> None:
+    """Say a refused link value of ``key`` while the field still holds the page's own."""
+    kept = st.session_state.get(f"_link_refused_{key}")
+    if kept is None:
+        return
+    if kept[1] != value:  # the person has set the field since: the link is behind them
+        del st.session_state[f"_link_refused_{key}"]
+        return
+    (where or st).warning(t("link.refused", why=refusal(label, kept[0])), icon=":material/link_off:")
+
+
+def bound_slider(label: str, low, high, *, key: str, where=None, **options):
+    """``st.slider`` kept in the link (``bind="query-params"``), its link value read first
+    by ``bound_link``."""
+    bound_link(key, label, low, high)
+    return (where or st).slider(label, low, high, key=key, bind="query-params", **options)
 
 
 def last_value(key: str) -> float | None:

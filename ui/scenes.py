@@ -19,6 +19,7 @@ from mechanisms.writer import to_text
 from ui.cache import preset
 from ui.chapters import page_for
 from ui.i18n import current, message, note_of, source_of, t, title_of
+from ui.numbers import bound_link, bound_slider
 from ui.url import url_choice
 
 UPLOADED = "upload"
@@ -197,11 +198,12 @@ def driver_position(base: Scene) -> Scene:
     """The driver's position slider (φ₂ in degrees, or s in m for a slider), kept in the URL
     as ``at``; the scene at that position."""
     if base.driver.kind == "rotating":
-        at = st.slider(t("plans.phi"), 0.0, 360.0, step=0.5, key="at", bind="query-params")
+        at = bound_slider(t("plans.phi"), 0.0, 360.0, step=0.5, key="at")
         if at == driver_start(base):
             return base  # the file's φ₂ exactly: radians(degrees(φ)) may differ in the last bit
         return base.with_(at=math.radians(at))
     reach = max(abs(base.driver.at), 0.1)
+    bound_link("at", t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3))
     at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3),
                    step=round(reach / 100, 4), key="at", bind="query-params")
     return base.with_(at=at)
@@ -217,14 +219,16 @@ def length_slider(base: Scene, number: int, **options) -> float:
     ``base``: the trajectories page's, and its floor's in bench/floor_chart_app.py."""
     member = base.members[number]
     lo, hi, step = length_range(base.lengths[number])
-    return st.slider(t("traj.length", link="".join(member.axis), member=number), lo, hi,
-                     step=step, format="%.4f", key=f"L{number}", **options)
+    label = t("traj.length", link="".join(member.axis), member=number)
+    if options.get("bind"):
+        bound_link(f"L{number}", label, lo, hi)
+    return st.slider(label, lo, hi, step=step, format="%.4f", key=f"L{number}", **options)
 
 
 def driver_speed(scene: Scene) -> Scene:
     """The driver's speed slider (``omega`` in the URL): ω₂, or v for a slider."""
     if scene.driver.kind == "rotating":
-        speed = st.slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega", bind="query-params")
+        speed = bound_slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega")
     else:
-        speed = st.slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", bind="query-params")
+        speed = bound_slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega")
     return scene.with_(speed=speed)
