@@ -34,7 +34,7 @@ from solvers.gears import TrainError, solve_train
 from solvers.kinetostatics import analyse
 from solvers.structure import StructureError, decompose
 
-from . import classes, practice
+from . import check, classes, practice
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -101,6 +101,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.set_defaults(run=_practice)
     classes.add(sub)
+    check.add(sub)
     p = sub.add_parser("link", help=f"the share parameter ({PARAMETER}=…) that carries a scene "
                                     "in any page's link")
     p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")

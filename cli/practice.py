@@ -10,18 +10,21 @@ from pathlib import Path
 
 from figures.plans import plain
 from mechanisms import SceneError
-from mechanisms.messages import english
-from methods.practice import Progress, Step, Verdict, answer_of, hint_keys
+from mechanisms.messages import KEEP, english, strings
+from methods.practice import Progress, Step, Verdict, answer_of, hint_keys, ratio_digits
 from methods.practice_steps import steps_for
 
 
-def hint(step: Step, verdict: Verdict) -> str:
-    """The hint for a diagnosis, in the English strings table's words (a term's name as text
-    with sub- and superscripts, aᵏ_A4A, not LaTeX source)."""
-    values = dict(ratio=f"{verdict.ratio:.3g}" if verdict.ratio is not None else "",
+def hint(step: Step, verdict: Verdict, language: str = "en") -> str:
+    """The hint for a diagnosis, in the strings table's words (English unless ``language``
+    says "sr"; a term's name as text with sub- and superscripts, aᵏ_A4A, not LaTeX source)."""
+    comma = language == "sr"
+    ratio = f"{verdict.ratio:.{ratio_digits(verdict.ratio)}g}" if verdict.ratio is not None else ""
+    values = dict(ratio=ratio.replace(".", ",") if comma else ratio,
                   term=plain(verdict.term) if verdict.term else "",
                   turn=f"{verdict.turn:.0f}" if verdict.turn is not None else "")
-    return " ".join(english(key).format(**values) for key in hint_keys(step, verdict))
+    said = english if language == "en" else (lambda key: KEEP.sub(r"\1", strings(language)[key]))
+    return " ".join(said(key).format(**values) for key in hint_keys(step, verdict))
 
 
 def graded(steps: list[Step], answers: dict) -> dict:

@@ -7,11 +7,12 @@ build on one another — and Moodle's quiz draws one question at random from a c
 "a random question from this category" hands each student one whole variant. A numerical
 question holds one number; a variant split into several would be drawn apart.
 
-Each asked value is a NUMERICAL part whose answers come, in order, from the practice grader
-(``methods.practice``): the key (100 %, the key's tolerance as Moodle's absolute
-tolerance), then the usual mistakes in the order the grader tries them — a term left out,
-the sign reversed, a power of ten — each 0 % with the hint practice gives for it, then the
-right sign but another size, and last a catch-all. Moodle takes the first answer whose
+Each asked value is a NUMERICAL part whose answers come, in order, from the one judge
+(``methods.judge``, the practice grader of a scalar step): the key (100 %, the judge's
+tolerance as Moodle's absolute tolerance), then the usual mistakes in the order the judge
+tries them — a term left out, the sign reversed, a power of ten — each 0 % with the hint
+practice gives for it, then 0 (no size: "go back to the equation"), the right sign but
+another size (up to 10⁹ times the key), and last a catch-all. Moodle takes the first answer whose
 [value − tolerance, value + tolerance] holds the response, as the grader takes the first
 diagnosis that fits, so the same response gets the same words in both.
 
@@ -41,13 +42,14 @@ from mechanisms.messages import Text
 from mechanisms.schema import Scene
 from methods import practice_steps
 from methods.plans import build
+from methods.judge import value_step
 from methods.practice import Step, Term, Verdict, hint_keys, scalar_mistakes
 from methods.scales import plan_scales
 from solvers.diagnostics import Unsolvable, solve_instant
 from solvers.structure import StructureError
 
-KEY_RELATIVE = 0.005  # a key computed only (no drawing): right within 0.5 %, as the self-check
-WIDE = 1e6  # "the right sign, another size": an interval this many times the key, from 0
+WIDE = 1e9  # "the right sign, another size": up to this many times the key (wider, and a float
+# no longer tells a small response on the other side of 0 from the interval's edge)
 WORDS = {
     "en": {"category": "Variants of {task} (seed {seed}, ± {spread} %)", "variant": "Variant",
            "given": "Given", "find": "Find", "code": "Code",
@@ -71,20 +73,16 @@ class Choice:
 
 
 def asked_steps(variant: Variant) -> list[tuple[Answer, Step]]:
-    """Each asked value of the variant as a scalar practice step: its key, its tolerance
-    (a drawing's where the key has one, else ``KEY_RELATIVE``), and the value without each
-    term a plan's sum adds, where the value is the size of a plan's sum (|v_C|, |a_C|)."""
-    left_out = _left_out(variant.scene)
-    out = []
-    for answer in (a for a in variant.key if a.asked):
-        tolerance = answer.tolerance or KEY_RELATIVE * abs(answer.value) or KEY_RELATIVE
-        out.append((answer, Step(answer.key, answer.key, symbol(answer.key), "scalar", answer.unit,
-                                 answer.value, tolerance, missing=left_out.get(answer.key, ()),
-                                 rule="")))
-    return out
+    """Each asked value of the variant as the judge's step (methods.judge.value_step): its
+    key, the one tolerance rule (a drawing's where the key has one), and the value without
+    each term a plan's sum adds, where the value is the size of a plan's sum (|v_C|, |a_C|)."""
+    terms = left_out(variant.scene)
+    return [(answer, value_step(answer.key, answer.value, answer.unit, answer.tolerance,
+                                terms.get(answer.key, ()), symbol(answer.key)))
+            for answer in variant.key if answer.asked]
 
 
-def _left_out(scene) -> dict[str, tuple[Term, ...]]:
+def left_out(scene) -> dict[str, tuple[Term, ...]]:
     """For a linkage: result key → the sizes of its plan's sum with one term left out."""
     if not isinstance(scene, Scene):
         return {}
@@ -110,6 +108,7 @@ def choices(step: Step) -> list[Choice]:
                    _hint(step, Verdict(m.diagnosis, ratio=m.ratio, term=m.term)))
             for m in scalar_mistakes(step)]
     if abs(exact) > step.tolerance:  # the right sign, another size: (0, WIDE·|x|] on its side
+        out.append(Choice("wrong", 0.0, 0.0, 0, _hint(step, Verdict("wrong"))))  # (0 is no size)
         half = math.copysign(WIDE * abs(exact) / 2, exact)
         out.append(Choice("length", half, abs(half), 0, _hint(step, Verdict("length"))))
     out.append(Choice("wrong", None, 0.0, 0, _hint(step, Verdict("wrong"))))

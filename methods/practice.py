@@ -235,6 +235,11 @@ def _scalar(step: Step, answer: float) -> Verdict:
     return Verdict("wrong")
 
 
+def ratio_digits(ratio: float) -> int:
+    """Significant digits that show how far a ratio is from 1 (1,004 times, not "1 times")."""
+    return 3 if abs(ratio - 1) >= 0.01 else 4
+
+
 def hint_keys(step: Step, verdict: Verdict) -> list[str]:
     """The strings that say a verdict: its diagnosis — of a value and its sign for a scalar
     step, of an arrow otherwise — and for a step drawn the wrong way or not at all the

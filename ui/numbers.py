@@ -19,49 +19,17 @@ changes it.
 
 from __future__ import annotations
 
-import math
 import re
-from dataclasses import dataclass
 
 import numpy as np
 import streamlit as st
 
+from mechanisms.typed import NUMBER, Refused, comma_is_decimal, parse  # noqa: F401 (the pages' parser)
 from ui.i18n import current, t
 from ui.url import link_default, url_set
 
 REASONS = ("empty", "not_number", "comma", "integer", "below", "above")  # num.<reason>
-NUMBER = re.compile(r"[+\-\u2212]?(?:[0-9]+(?:[.,][0-9]*)?|[.,][0-9]+)(?:[eE][+\-\u2212]?[0-9]+)?")
 SHOWN_MAX = 40  # characters of a typed text repeated in a message
-
-
-@dataclass(frozen=True)
-class Refused(ValueError):
-    """Why a typed text is not taken: ``reason`` is a ``num.<reason>`` string key."""
-
-    reason: str
-    text: str
-    limit: float | None = None
-
-
-def comma_is_decimal(language: str) -> bool:
-    return language.startswith("sr")
-
-
-def parse(text: str, language: str, *, integer: bool = False) -> float:
-    """The one number ``text`` says in ``language``, or :class:`Refused`."""
-    typed = text.strip()
-    if not typed:
-        raise Refused("empty", text)
-    if NUMBER.fullmatch(typed) is None:
-        raise Refused("not_number", text)
-    if "," in typed and not comma_is_decimal(language):
-        raise Refused("comma", text)
-    value = float(typed.replace(",", ".").replace("\u2212", "-"))
-    if not math.isfinite(value):
-        raise Refused("not_number", text)
-    if integer and not value.is_integer():
-        raise Refused("integer", text)
-    return value
 
 
 def as_given(value: float) -> float:

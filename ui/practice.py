@@ -14,7 +14,7 @@ import streamlit as st
 
 from figures.plans import plain
 from figures.practice import practice_figure
-from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, polar
+from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, polar, ratio_digits
 from ui import classroom
 from ui.export import chart
 from ui.fragments import rerun_here
@@ -47,7 +47,7 @@ def toggle(key: str) -> bool:
 
 def hint(step: Step, verdict: Verdict) -> str:
     """The diagnosis in words, and the book's rule for the step where it helps."""
-    values = dict(ratio=num(verdict.ratio, 3) if verdict.ratio is not None else "",
+    values = dict(ratio=num(verdict.ratio, ratio_digits(verdict.ratio)) if verdict.ratio is not None else "",
                   term=plain(verdict.term), turn=num(abs(verdict.turn), 2) if verdict.turn else "")
     return " ".join(t(key, **values) for key in hint_keys(step, verdict))
 

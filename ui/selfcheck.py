@@ -1,4 +1,6 @@
-"""Exam self-check: the student types a value and learns how far it is from the exact one."""
+"""Exam self-check: the student types a value and hears the one judge's verdict
+(methods.judge) — the same as practice, ``python -m solvers check`` and the Moodle bank —
+with the exact value and the tolerance that made it."""
 
 from __future__ import annotations
 
@@ -6,8 +8,11 @@ from dataclasses import dataclass
 
 import streamlit as st
 
+from methods.judge import judge, value_step
+from methods.practice import Step, Verdict
 from ui.i18n import num, t
 from ui.numbers import number_field
+from ui.practice import hint
 
 
 @dataclass(frozen=True)
@@ -17,17 +22,16 @@ class Quantity:
     unit: str
     drawing: float | None = None  # the error a drawing at the user's scales allows
 
+    def step(self) -> Step:
+        """The value as the one judge asks it (methods.judge: the drawing's error where it
+        is read off a drawing, else 0.5 %)."""
+        return value_step(self.label, self.exact, self.unit, self.drawing)
 
-def grade(typed: float, quantity: Quantity, tolerance: float = 0.005) -> tuple[str, float]:
-    """("correct" | "drawing" | "off", relative error): correct within 0.5 %, within the
-    drawing's expected error for a graphical answer, or off by the returned fraction."""
-    error = typed - quantity.exact
-    relative = abs(error) / abs(quantity.exact) if quantity.exact else abs(error)
-    if relative <= tolerance:
-        return "correct", relative
-    if quantity.drawing is not None and abs(error) <= quantity.drawing:
-        return "drawing", relative
-    return "off", relative
+
+def verdict(typed: float, quantity: Quantity) -> tuple[Verdict, Step]:
+    """The one judge's verdict of ``typed`` (practice's, the command line's and Moodle's)."""
+    step = quantity.step()
+    return judge(step, typed), step
 
 
 def _open_code(key: str) -> None:
@@ -56,12 +60,9 @@ def answer_box(quantities: list[Quantity], key: str) -> None:
         value = number_field(t("self.value", unit=quantity.unit), f"{key}_value", optional=True)
         if value is None:
             return
-        verdict, relative = grade(value, quantity)
-        exact = f"{num(quantity.exact, 5)} {quantity.unit}"
-        if verdict == "correct":
-            st.success(t("self.correct", exact=exact))
-        elif verdict == "drawing":
-            st.info(t("self.drawing", percent=num(100 * relative, 2), exact=exact,
-                      allowed=f"{num(quantity.drawing, 2)} {quantity.unit}"))
-        else:
-            st.warning(t("self.off", percent=num(100 * relative, 3), exact=exact))
+        said, step = verdict(value, quantity)
+        allowed = f"± {num(step.tolerance, 2)} {quantity.unit}".rstrip()
+        exact = t("self.exact", exact=f"{num(quantity.exact, 5)} {quantity.unit}".rstrip(),
+                  allowed=allowed,
+                  why=t("self.why_drawing" if quantity.drawing is not None else "self.why_computed"))
+        (st.success if said.ok else st.warning)(f"{hint(step, said)} {exact}")
