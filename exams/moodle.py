@@ -53,9 +53,13 @@ WIDE = 1e9  # "the right sign, another size": up to this many times the key (wid
 WORDS = {
     "en": {"category": "Variants of {task} (seed {seed}, ± {spread} %)", "variant": "Variant",
            "given": "Given", "find": "Find", "code": "Code",
+           "decimal": "Write a decimal with a point: 3.8266 (this Moodle's English reads a "
+                      "comma as a thousands separator).",
            "drawing": "The mechanism at the asked instant, drawn at U_L = {u} m/cm"},
     "sr": {"category": "Varijante zadatka {task} (seme {seed}, ± {spread} %)",
            "variant": "Varijanta", "given": "Dato", "find": "Odrediti", "code": "Kod",
+           "decimal": "Decimalni broj pišite zarezom, 3,8266, ako je Moodle na srpskom; ako je "
+                      "na engleskom, tačkom, 3.8266 (zarez bi tamo odvajao hiljade).",
            "drawing": "Mehanizam u traženom položaju, nacrtan u razmeri U_L = {u} m/cm"},
 }
 
@@ -171,7 +175,7 @@ def _question(variant: Variant, title: str, language: str, w: dict,
                     f'<p><img src="@@PLUGINFILE@@/{name}" alt="{_h(variant.code)}"></p>')
         files.append(f'<file name="{name}" path="/" encoding="base64">'
                      f"{base64.b64encode(svg.encode('utf-8')).decode('ascii')}</file>")
-    text.append(f"<p><strong>{_h(w['find'])}</strong></p><ul>")
+    text.append(f"<p><strong>{_h(w['find'])}</strong> <em>{_h(w['decimal'])}</em></p><ul>")
     for answer, step in asked_steps(variant):
         text.append(f"<li>{_h(symbol(answer.key))} = {_cloze(choices(step), lookup, comma)} "
                     f"{_h(answer.unit)}</li>")

@@ -66,6 +66,7 @@ def test_the_file_has_what_moodles_importer_reads(task, language):
         text = question.findtext("questiontext/text")
         asked = [a for a in variant.key if a.asked]
         assert len(parts_of(text)) == len(asked)
+        assert ("3,8266" if language == "sr" else "3.8266") in text  # how to type a decimal
         for g, value in variant.given:  # the given values, the language's way
             shown = f"{value:.6g}"
             assert (shown.replace(".", ",") if language == "sr" else shown) in text
