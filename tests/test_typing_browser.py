@@ -89,10 +89,11 @@ def test_a_builder_cell_reads_a_comma_and_a_point_and_refuses_the_rest(app_url, 
     assert coupler(page) == pytest.approx(0.25, abs=1e-12)
     page.wait_for_function("() => !document.body.innerText.includes('nije jedan broj')",
                            timeout=30_000)
-    type_cell(page, "druga tačka", 1, 4, " ", redraws=False)  # nothing: the loader names it
+    type_cell(page, "druga tačka", 1, 4, " ", redraws=False)  # nothing: refused at the cell
     page.get_by_text("Crtež pokazuje poslednji").wait_for(timeout=30_000)
     assert shapes(page) != before and coupler(page) == pytest.approx(0.25, abs=1e-12)
-    assert any("3" in e for e in errors(page))
+    assert any("Članovi · red 2 · dužina [m]: upišite broj" in e for e in errors(page))
+    assert not any("members." in e for e in errors(page))  # no internal key
     assert page.locator("[data-testid='stException']").count() == 0
 
 

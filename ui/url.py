@@ -83,6 +83,8 @@ def url_table(key: str, default: pd.DataFrame, scene: str, rows_fixed: bool = Tr
         if text:
             try:
                 rows = [[float(v) for v in row.split(",")] for row in text.split(";")]
+                if any(len(row) != len(default.columns) for row in rows):
+                    raise ValueError(text)
                 table = pd.DataFrame(rows, columns=default.columns).astype(default.dtypes)
                 if not table.map(math.isfinite).all().all() or (
                         rows_fixed and len(table) != len(default)):
