@@ -83,6 +83,9 @@ def test_a_gear_radius_cleared_is_refused_and_the_page_keeps_its_drawing(app_url
     type_cell(page, "R_a [m]", 0, 2, " ", redraws=False)  # (a and b come first, fixed)
     assert "upišite broj" in said(page, "Sprege · red 1 · R_a [m]")
     assert page.locator(".js-plotly-plot").count() == charts and page.url == link
+    type_cell(page, "R_a [m]", 0, 3, "0,3,5", redraws=False)  # (3: after the ⚠ column)
+    assert "nije jedan broj" in said(page, "0,3,5") and page.url == link
+    assert page.locator(".js-plotly-plot").count() == charts
     assert page.locator(EXCEPTION).count() == 0
 
 
