@@ -239,6 +239,8 @@ def unit_of(key: str) -> str:
     """The unit of a result key (members.4.omega → s⁻¹; ratios are pure numbers)."""
     if key.startswith("ratios."):
         return "–"
+    if key.startswith("travel."):  # the hay tedder's travel (task 1.3)
+        return TRAVEL[key.split(".", 1)[1]][1]
     if key.startswith("turned."):  # an arm on the turned velocity plan, read at U_v
         return "m/s"
     if key.startswith(("distances.", "arms.")):  # a length of the figure at the drawn instant
@@ -406,4 +408,11 @@ def symbol(key: str) -> str:
         return f"h({action}, {last})"
     if head == "driving":
         return {"torque": "M_p", "force": "F_p", "power": "P"}.get(last, last)
+    if head == "travel" and last in TRAVEL:
+        return TRAVEL[last][0]
     return key
+
+
+# the hay tedder's travel (task 1.3) as the book writes it: symbol, unit
+TRAVEL = {"wheel_omega": ("ω_t", "s⁻¹"), "crank_omega": ("ω₂", "s⁻¹"), "cycle_time": ("T", "s"),
+          "step_time": ("Δt", "s"), "step_distance": ("Δs", "m")}

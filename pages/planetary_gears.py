@@ -13,6 +13,7 @@ from methods.scales import nice_scale
 from solvers.gears import TrainError, geometry_notes, solve_train, stages, willis_table
 from ui import practice
 from ui.benchmarks import speed_panel
+from ui.book import differs, train_changes
 from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.editor_tables import typed_table
@@ -120,13 +121,17 @@ def results() -> None:
     """Under the drawing: every ω with the book's, a ratio, the points' speeds, Willis's
     equations stage by stage, and the answer box."""
     rows = []
+    changed = train_changes(train, base) if base.book else []  # the book's ω: the task's own
     for m, w in solution.omega.items():
-        book = train.book.get(f"members.{m}.omega")
+        book = None if changed else train.book.get(f"members.{m}.omega")
         rows.append({t("gears.col_member"): t("fig.member", number=m,
                                               member_label=train.members[m].label).strip(),
                      "ω [s⁻¹]": num(w, 5),
                      t("gears.col_book"): "" if book is None else num(book, 5)})
     show_table(rows, f"{train.id}-omega.csv", "csv")
+    if changed:
+        differs(changed, {k: v for k, v in defaults(base).items() if k.startswith("in")},
+                ("meshes",))
     cols = st.columns(3)
     members = list(train.members)
     a = cols[0].selectbox(t("gears.ratio_from"), members, key="ra")

@@ -16,6 +16,7 @@ from methods.scales import polygon_scale
 from solvers.balancing import Balance, BalanceError, balance, graphical_error, unit
 from ui import practice
 from ui.benchmarks import speed_panel
+from ui.book import differs, rotor_changes
 from ui.chapters import page_title
 from ui.editor_tables import typed_table
 from ui.export import Rows, chart, print_button, show_table
@@ -134,15 +135,16 @@ def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> Non
                  f"{rotor.id}-V.svg", key="vsvg")
 
 
-def results_table(result: Balance) -> Rows:
-    """Each correction, exact beside the book's printed value where the preset has one."""
+def results_table(result: Balance, as_in_book: bool) -> Rows:
+    """Each correction, exact beside the book's printed value where the preset has one and
+    the rotor is the task's own (a changed rotor's book values belong to another task)."""
     rows = []
     for plane, f in result.corrections.items():
         for quantity, label, shown, unit_label in (("mass", "rotor.q_mass", f.mass, "kg"),
                                                    ("radius", "rotor.q_radius", f.radius * MM, "mm"),
                                                    ("angle_deg", "rotor.q_angle",
                                                     math.degrees(f.angle), "°")):
-            book = rotor.book.get(f"corrections.{plane}.{quantity}")
+            book = rotor.book.get(f"corrections.{plane}.{quantity}") if as_in_book else None
             if quantity == "radius" and book is not None:
                 book *= MM
             rows.append({t("rotor.col_plane"): plane, t("rotor.col_quantity"): t(label),
@@ -159,8 +161,11 @@ with main:
         st.stop()  # (app.py still ends the run)
     with st.container(key="later_results"):  # on a phone, after the polygons (ui/layout.py)
         st.header(t("rotor.results"))
-        corrections_table = results_table(result)
+        changed = rotor_changes(rotor, base) if base.book else []
+        corrections_table = results_table(result, not changed)
         show_table(corrections_table, f"{rotor.id}-corrections.csv", "csv")
+        if changed:  # the book's values belong to the task as the book poses it
+            differs(changed, defaults(base), ("masses",))
         cols = st.columns(2)
         cols[0].metric(t("rotor.residual_force"), f"{num(result.residual_force * MM, 2)} kg·mm")
         cols[1].metric(t("rotor.residual_moment"),

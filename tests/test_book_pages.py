@@ -69,3 +69,40 @@ def test_a_change_is_named_and_one_click_brings_the_book_back(lang):
         t("book.changed", lang))]
     assert at.toggle(key="inertia").value is False and at.select_slider(key="steps").value == 72
     assert at.header and t("plans.book_title", lang) in [h.value for h in at.header]
+
+
+def _notice(at, lang: str) -> str:
+    said = [i.value for i in at.info if i.value.startswith(t("book.changed", lang))]
+    return said[0] if said else ""
+
+
+@pytest.mark.parametrize("lang", ["en", "sr"])
+def test_a_changed_rotor_or_gear_task_says_what_differs_and_comes_back(lang, monkeypatch):
+    """Task 7.1 with x_I 450 → 440 once showed 0,36213 kg beside the book's 0,354 kg as the
+    book's slip (−2,2 %); task 6.1 with v₂ 1 → 2 showed ω 4,878 beside the book's 2,44."""
+    monkeypatch.setattr("ui.i18n.current", lambda: lang)  # (AppTest formats choices outside a run)
+    rotor = page("pages/rotor_balancing.py", lang=lang, scene="zbirka-7.1")
+    assert not _notice(rotor, lang)
+    book = "0,354 kg" if lang == "sr" else "0.354 kg"
+    assert any(book in str(d.value.to_numpy()) for d in rotor.dataframe)
+    typed(rotor, "xI", 440.0, lang).run()
+    said = _notice(rotor, lang)
+    assert "x_I: 440 mm" in said and "450 mm" in said
+    assert not any(book in str(d.value.to_numpy()) for d in rotor.dataframe)  # not beside it
+    next(b for b in rotor.button if b.key == "book_restore").click().run()
+    assert not _notice(rotor, lang) and any(book in str(d.value.to_numpy()) for d in rotor.dataframe)
+    gears = page("pages/planetary_gears.py", lang=lang, scene="zbirka-6.1")
+    assert not _notice(gears, lang)
+    typed(gears, "in2", 2.0, lang).run()
+    said = _notice(gears, lang)
+    assert "2 m/s" in said and "1 m/s" in said
+    next(b for b in gears.button if b.key == "book_restore").click().run()
+    assert not _notice(gears, lang)
+
+
+def test_a_changed_speed_is_said_with_its_unit():
+    """Task 2.1's notice said "the speed of member 2: 17 (the book's task: 15)" (here on the
+    kinetostatics page, whose book table is open at once)."""
+    at = page(PAGES[1], lang="en", scene="zbirka-5.1")
+    at.slider(key="omega").set_value(17.0).run()
+    assert "17 s⁻¹" in _notice(at, "en") and "s⁻¹)" in _notice(at, "en")

@@ -8,8 +8,10 @@ from collections.abc import Mapping
 import pandas as pd
 import streamlit as st
 
+from exams.variants import SUBSCRIPT, symbol, unit_of
 from mechanisms.coverage import tasks
 from reports.textbook import PRECISION, BookRow, check
+from ui.editor_tables import forget_table
 from ui.export import show_table
 from ui.i18n import in_language, num, t
 
@@ -23,7 +25,7 @@ ROLES = {"fitted": "check.fitted", "chose": "check.chose", "predicted": "check.p
 def book_table(rows: list[BookRow]) -> pd.DataFrame:
     fitted = any(r.role for r in rows)
     return pd.DataFrame([{
-        t("check.col_quantity"): r.key,
+        t("check.col_quantity"): quantity(r.key),
         **({t("check.col_role"): t(ROLES[r.role])} if fitted else {}),
         t("check.col_book"): num(r.book, 6),
         t("check.col_exact"): "—" if r.exact is None else num(r.exact, 6),
@@ -32,6 +34,13 @@ def book_table(rows: list[BookRow]) -> pd.DataFrame:
         t("check.col_note"): in_language(r.note, r.note_sr) if r.slip is None else
         f"{in_language(r.note, r.note_sr)} {t('check.slip_value', value=num(r.slip, 4))}".strip()}
         for r in rows])
+
+
+def quantity(key: str) -> str:
+    """A printed value's row named as the course writes it, with its unit: v_E [m/s],
+    h(G_5, F) [m], F₄₅ᵗ [N] (not points.E.v, arms.G_5.F, reactions.4-5.tangential)."""
+    unit = unit_of(key)
+    return f"{symbol(key)} [{unit}]" if unit and unit != "–" else symbol(key)
 
 
 def fit_summary(scene, rows: list[BookRow]) -> None:
@@ -62,10 +71,77 @@ def book_section(scene, base, restore: Mapping[str, object]) -> None:
     if scene == base:
         show_table(book_table(check(scene)), f"{scene.id}-book.csv", "csv_book")
         return
-    st.info("\n".join([t("book.changed"), *(f"- {line}" for line in changes(scene, base))]))
+    differs(changes(scene, base), {**restore, RESTORED: True})
+
+
+def differs(lines: list[str], restore: Mapping[str, object], tables: tuple[str, ...] = ()) -> None:
+    """What the student changed of the task, each difference in words with both values and
+    their units, and one button, *As in the book*, that gives the page's widgets
+    ``restore`` and its ``tables`` their task's rows again."""
+    st.info("\n".join([t("book.changed"), *(f"- {line}" for line in lines)]))
+
+    def back() -> None:
+        st.session_state.update(restore)
+        for key in tables:
+            forget_table(key)
+
     st.button(t("book.restore"), help=t("book.restore_help"), icon=":material/menu_book:",
-              on_click=lambda: st.session_state.update(restore, **{RESTORED: True}),
-              key="book_restore")
+              on_click=back, key="book_restore")
+
+
+def _both(what: str, now: str, book: str) -> str:
+    return t("book.diff_value", what=what, now=now, book=book)
+
+
+def rotor_changes(rotor, base) -> list[str]:
+    """What a rotor page's inputs changed of the task (each value with its unit)."""
+    said = []
+    if rotor.mode != base.mode:
+        said.append(t("book.diff_mode"))
+    if len(rotor.masses) != len(base.masses):
+        said.append(_both(t("book.masses"), str(len(rotor.masses)), str(len(base.masses))))
+    fields = (("m", "mass", 1.0, "kg"), ("r", "radius", 1e3, "mm"), ("φ", "angle", None, "°"),
+              ("x", "x", 1e3, "mm"))
+    for n, (now, old) in enumerate(zip(rotor.masses, base.masses), start=1):
+        for symbol_, name, factor, unit in fields:
+            a, b = getattr(now, name), getattr(old, name)
+            if a != b:
+                a, b = (math.degrees(a), math.degrees(b)) if factor is None else (a * factor, b * factor)
+                said.append(_both(f"{t('book.mass_n', n=n)}: {symbol_}", f"{num(a, 6)} {unit}",
+                                  f"{num(b, 6)} {unit}"))
+    for plane, x in rotor.planes.items():
+        if plane in base.planes and x != base.planes[plane]:
+            said.append(_both(f"x_{plane}", f"{num(x * 1e3, 6)} mm", f"{num(base.planes[plane] * 1e3, 6)} mm"))
+    for plane, c in rotor.corrections.items():
+        old = base.corrections.get(plane)
+        if old is not None and c != old:
+            said.append(_both(t("book.correction", plane=plane), _given(c), _given(old)))
+    if rotor.omega != base.omega and base.omega is not None:
+        said.append(_both("ω", f"{num(rotor.omega, 6)} rad/s", f"{num(base.omega, 6)} rad/s"))
+    return said
+
+
+def _given(c) -> str:
+    return f"m = {num(c.mass, 6)} kg" if c.mass is not None else f"r = {num(c.radius * 1e3, 6)} mm"
+
+
+def train_changes(train, base) -> list[str]:
+    """What a gear page's inputs changed of the task (each value with its unit)."""
+    said = []
+    for now, old in zip(train.inputs, base.inputs):
+        if now.velocity is not None and now.velocity != old.velocity:
+            said.append(_both(f"v ({t('book.member', member=now.member)})",
+                              f"{num(now.velocity, 6)} m/s", f"{num(old.velocity, 6)} m/s"))
+        elif now.velocity is None and now.omega != old.omega:
+            said.append(_both(f"ω{str(now.member).translate(SUBSCRIPT)}",
+                              f"{num(now.omega, 6)} s⁻¹", f"{num(old.omega, 6)} s⁻¹"))
+    for now, old in zip(train.meshes, base.meshes):
+        for member, a, b in zip(now.members, now.radii, old.radii):
+            if a != b:
+                said.append(_both(f"R ({t('book.mesh', a=now.members[0], b=now.members[1])}, "
+                                  f"{t('book.member', member=member)})",
+                                  f"{num(a, 6)} m", f"{num(b, 6)} m"))
+    return said
 
 
 def changes(scene, base) -> list[str]:
@@ -79,7 +155,9 @@ def changes(scene, base) -> list[str]:
         else:
             said.append(t("book.diff_position_s", now=scene.driver.at, book=base.driver.at))
     if scene.driver.speed != base.driver.speed:
-        said.append(t("book.diff_speed", now=scene.driver.speed, book=base.driver.speed))
+        unit = "s⁻¹" if scene.driver.kind == "rotating" else "m/s"
+        said.append(t("book.diff_speed", now=f"{num(scene.driver.speed, 6)} {unit}",
+                      book=f"{num(base.driver.speed, 6)} {unit}"))
     if scene.inertia != base.inertia:
         said.append(t("book.diff_inertia_on" if scene.inertia else "book.diff_inertia_off"))
     if scene.gravity != base.gravity:

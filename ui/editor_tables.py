@@ -181,6 +181,14 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     return memo["good"]
 
 
+def forget_table(key: str) -> None:
+    """The table ``key`` back to its scene's own rows at the next run (*As in the book*):
+    what was typed, kept and put in the link, all dropped."""
+    for name in (f"_{key}_typed", f"_{key}_start"):
+        st.session_state.pop(name, None)
+    st.query_params.pop(key, None)
+
+
 MARK = "⚠"  # the column that names a row's refused cells (the builder's tables too)
 REFUSED_CELL = "background-color: #fde8e8; color: #a4000f; font-weight: 600"
 
