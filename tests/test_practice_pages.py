@@ -154,14 +154,18 @@ def test_the_rotors_practice_speaks_the_pages_units():
 
 def test_a_step_whose_exact_part_is_zero_says_so():
     """Task 3.1's a.n1-b (a tangential part that is zero at this instant) is asked with a
-    note, not as an arrow to draw blind; a step with a length has no such note."""
+    note and typed — a length of 0, no direction — not as an arrow whose tip cannot stay on
+    its tail; a step with a length has no such note, and its sheet."""
     at = _open("pages/velocity_plans.py", {"scene": "zbirka-3.1"}, "pr_plans", "en")
     steps = steps_for(load_preset("zbirka-3.1"), "plans")
     zero = next(i for i, s in enumerate(steps) if abs(complex(s.expected)) <= s.tolerance)
     assert not [i for i in at.info if i.value == t("practice.zero_step", "en")]
+    assert charts(at).get("pr_plans_fig")  # a step with a length: its sheet
     for _ in range(zero):
         next(b for b in at.button if b.key == "pr_plans_next").click().run()
     assert steps[zero].id == "a.n1-b"
     assert [i for i in at.info if i.value == t("practice.zero_step", "en")]
-    _type(at, "pr_plans", steps[zero], 0j)  # a length of 0 is right
-    assert at.success
+    assert not charts(at).get("pr_plans_fig")  # no sheet: a tip cannot stay on its tail
+    typed(at, f"pr_plans_len_{steps[zero].id}", 0.0, "en")  # a length of 0, no direction
+    next(b for b in at.button if b.label == t("practice.check", "en")).click().run()
+    assert at.success and not at.error

@@ -91,14 +91,15 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
         st.markdown(t("practice.step", n=index + 1, of=len(steps), part=t(PARTS[step.kind]))
                     + f" ${step.symbol}$ [{shown_unit(step)[0]}]")
         verdict = st.container()  # filled once the typed answer below has been checked
-    if step.kind == "vector" and abs(complex(step.expected)) <= step.tolerance:
-        st.info(t("practice.zero_step"), icon=":material/info:")  # (the tip stays on the tail)
-    if drawable and step.kind != "scalar" and step.sheet:
+    zero = step.kind == "vector" and abs(complex(step.expected)) <= step.tolerance
+    if zero:  # a question to type, not a drag: a tip cannot be left on its tail
+        st.info(t("practice.zero_step"), icon=":material/info:")
+    if drawable and step.kind != "scalar" and step.sheet and not zero:
         _drawing(steps, index, key, state, progress, title)
         unit, factor = shown_unit(step)
         st.caption(t("practice.sheet_scale", scale=num(step.scale * factor, 4), unit=unit))
     st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
-               else t("practice.rule_hidden"))
+               else t("practice.rule_hidden_value" if step.kind == "scalar" else "practice.rule_hidden"))
     _typing(step, key, state)
     with verdict:
         if not classroom.not_saved():
@@ -146,6 +147,8 @@ def _typing(step: Step, key: str, state: dict) -> None:
                   for col, (name, label) in zip(cols, fields.items())]
         if not st.form_submit_button(t("practice.check"), icon=":material/check:"):
             return
+        if step.kind == "vector" and values[0] == 0 and values[1] is None:
+            values[1] = 0.0  # no length: no direction to give
         for (name, label), value in zip(fields.items(), values):
             if value is None and not st.session_state[f"{key}_{name}_{step.id}"].strip():
                 st.error(refusal(label, Refused("empty", "")), icon=":material/error:")
