@@ -6,6 +6,7 @@ from collections import Counter
 from mechanisms import load_preset, preset_ids
 from mechanisms.coverage import tasks
 from reports.textbook import check
+from ui.book import quantity
 from ui.i18n import t
 
 from .test_pages import page
@@ -37,13 +38,13 @@ def test_the_check_page_counts_tasks_presets_and_verdicts_per_chapter():
 
 def test_the_check_page_marks_what_was_fitted_what_chose_the_layout_and_what_is_predicted():
     at = page("pages/textbook_check.py", lang="en")
-    roles = next(d.value for d in at.dataframe
+    roles = next(d.value for d in at.dataframe  # (rows named as the course writes them)
                  if t("check.col_role", "en") in d.value.columns
-                 and "members.3.epsilon" in set(d.value[t("check.col_quantity", "en")])
-                 and "points.F.v" in set(d.value[t("check.col_quantity", "en")]))
+                 and quantity("members.3.epsilon") in set(d.value[t("check.col_quantity", "en")])
+                 and quantity("points.F.v") in set(d.value[t("check.col_quantity", "en")]))
     role = dict(zip(roles[t("check.col_quantity", "en")], roles[t("check.col_role", "en")]))
-    assert role["points.C.v"] == t("check.fitted", "en")
-    assert role["members.6.epsilon"] == t("check.chose", "en")
-    assert role["points.F.v"] == t("check.predicted", "en")
+    assert role[quantity("points.C.v")] == t("check.fitted", "en")
+    assert role[quantity("members.6.epsilon")] == t("check.chose", "en")
+    assert role[quantity("points.F.v")] == t("check.predicted", "en")
     captions = " ".join(c.value for c in at.caption)
     assert t("check.fit_chose", "en", chose=2) in captions
