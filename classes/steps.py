@@ -4,15 +4,13 @@ them, and the command line checks that a student's answers file is for them."""
 
 from __future__ import annotations
 
-from exams.codes import code as variant_code
-from exams.codes import parse
 from exams.variants import from_code
 from mechanisms import load_preset
 from mechanisms.link import PARAMETER, decode
 from methods.practice import Step
 from methods.practice_steps import steps_for
 
-from .store import Class
+from .store import Class, variant_of
 
 
 def scene_of(scene: str):
@@ -20,13 +18,6 @@ def scene_of(scene: str):
     if scene.startswith(f"{PARAMETER}="):
         return decode(scene.removeprefix(f"{PARAMETER}="))
     return load_preset(scene)
-
-
-def variant_of(found: Class, variant: int | None) -> str | None:
-    """A student's variant code in a class of variants (None in a class of one scene)."""
-    if not found.variants or not variant:
-        return None
-    return variant_code(parse(found.variants)[0], variant)
 
 
 def steps_of(found: Class, variant: int | None = None) -> list[Step]:

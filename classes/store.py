@@ -15,7 +15,6 @@ import csv
 import hashlib
 import io
 import json
-import math
 import os
 import secrets
 import threading
@@ -33,6 +32,7 @@ from alembic.config import Config
 from exams.codes import CHECK_LETTERS, parse
 from exams.codes import code as variant_code
 from mechanisms.messages import Text
+from methods.practice import finite
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = Path(os.environ.get("MEHANIZMI_DATA", ROOT / "data"))  # the SQLite file's folder
@@ -119,6 +119,13 @@ class Class:
     at: float | None
     variants: str | None
     expires: datetime
+
+
+def variant_of(found: Class, variant: int | None) -> str | None:
+    """A student's variant code in a class of variants (None in a class of one scene)."""
+    if not found.variants or not variant:
+        return None
+    return variant_code(parse(found.variants)[0], variant)
 
 
 def database_url() -> str:
@@ -274,9 +281,6 @@ def new_check() -> str:
 def answer_text(answer) -> str:
     """An answer as the store keeps it: strict JSON of ``None``, a finite number or a pair
     ``[x, y]`` of them; anything else is refused in words (ClassError), never stored."""
-    def finite(v) -> bool:
-        return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
-
     if not (answer is None or finite(answer)
             or (isinstance(answer, (list, tuple)) and len(answer) == 2 and all(map(finite, answer)))):
         raise ClassError(Text("class.bad_answer", answer=str(answer)[:40]))
@@ -301,8 +305,8 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
     try:
         found = find(code, url)
         who = _student(found, token, url)
-        if variant is None and found.variants and who["variant"]:  # the student's own variant
-            variant = variant_code(parse(found.variants)[0], who["variant"])
+        if variant is None:  # in a class of variants, the student's own
+            variant = variant_of(found, who["variant"])
         made = engine(url)
         while _recent(made, who["student"]) >= PER_SECOND:
             time.sleep(0.2)  # a machine, not a person: slowed

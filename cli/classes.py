@@ -9,7 +9,8 @@ import json
 import sys
 
 from classes import store
-from classes.steps import steps_of, variant_of
+from classes.steps import steps_of
+from classes.store import variant_of
 from mechanisms import SceneError, load_preset
 from mechanisms.link import PARAMETER
 

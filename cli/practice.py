@@ -10,7 +10,7 @@ from pathlib import Path
 
 from figures.plans import plain
 from mechanisms import SceneError
-from mechanisms.messages import KEEP, english, strings
+from mechanisms.messages import KEEP, strings
 from methods.practice import Progress, Step, Verdict, answer_of, hint_keys, ratio_digits
 from methods.practice_steps import steps_for
 
@@ -23,8 +23,8 @@ def hint(step: Step, verdict: Verdict, language: str = "en") -> str:
     values = dict(ratio=ratio.replace(".", ",") if comma else ratio,
                   term=plain(verdict.term) if verdict.term else "",
                   turn=f"{verdict.turn:.0f}" if verdict.turn is not None else "")
-    said = english if language == "en" else (lambda key: KEEP.sub(r"\1", strings(language)[key]))
-    return " ".join(said(key).format(**values) for key in hint_keys(step, verdict))
+    table = strings(language)
+    return " ".join(KEEP.sub(r"\1", table[key]).format(**values) for key in hint_keys(step, verdict))
 
 
 def graded(steps: list[Step], answers: dict) -> dict:

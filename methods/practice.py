@@ -114,7 +114,8 @@ def _out(value, kind: str):
     return [float(value.real), float(value.imag)]
 
 
-def _finite(value) -> bool:
+def finite(value) -> bool:
+    """A real number a float can hold (not a bool, NaN or an infinity)."""
     return (isinstance(value, (int, float)) and not isinstance(value, bool)
             and math.isfinite(value))
 
@@ -125,10 +126,10 @@ def answer_of(value, kind: str) -> complex | float | None:
     if value is None:
         return None
     if kind == "scalar":
-        if not _finite(value):
+        if not finite(value):
             raise ValueError(f"a finite number, got {value!r}")
         return float(value)
-    if not (isinstance(value, (list, tuple)) and len(value) == 2 and all(map(_finite, value))):
+    if not (isinstance(value, (list, tuple)) and len(value) == 2 and all(map(finite, value))):
         raise ValueError(f"a pair [x, y] of finite numbers, got {value!r}")
     return complex(value[0], value[1])
 

@@ -27,7 +27,7 @@ from solvers.structure import StructureError, decompose, degrees_of_freedom, loo
 from ui import builder
 from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
-from ui.editor_tables import MARK, REFUSED_CELL, frame_of, marks, refused, rows_of
+from ui.editor_tables import MARK, frame_of, marked, marks, refused, rows_of
 from ui.export import chart
 from ui.firstpaint import waiting
 from ui.fragments import fragment
@@ -123,12 +123,9 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
             frame, config = frame_of(name, rows[name], language), {c: column(c) for c in COLUMNS[name]}
             for said in refusals(name, rows[name]):
                 st.error(said, icon=":material/error:")
-            data = frame
-            if any(mark := marks(rows[name], language, {c: column_label(c) for c in COLUMNS[name]},
-                                 needs(name))):
-                frame.insert(0, MARK, mark)
-                config[MARK] = st.column_config.TextColumn("⚠", disabled=True)
-                data = frame.style.map(lambda v: REFUSED_CELL if v else "", subset=[MARK])
+            data = marked(frame, marks(rows[name], language,
+                                       {c: column_label(c) for c in COLUMNS[name]}, needs(name)),
+                          config)
             edited = st.data_editor(
                 data, key=f"build_{builder.version()}_{name}", num_rows="dynamic",
                 hide_index=True, placeholder="—", column_config=config)

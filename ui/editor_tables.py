@@ -99,7 +99,7 @@ def refused(rows: list[dict], language: str,
     ``required`` cells left empty: (row, column, why)."""
     found = []
     for i, row in enumerate(rows):
-        if all(_empty(v) or v is False for v in row.values()):
+        if _unfilled(row):
             continue
         for name, value in row.items():
             if is_number_column(name) and isinstance(value, str) and value.strip():
@@ -115,6 +115,11 @@ def refused(rows: list[dict], language: str,
 def _empty(value) -> bool:
     """A cell with nothing in it: blank, or only spaces."""
     return _blank_cell(value) or (isinstance(value, str) and not value.strip())
+
+
+def _unfilled(row: dict) -> bool:
+    """A new row not yet filled: every cell empty (a tick not ticked)."""
+    return all(_empty(v) or v is False for v in row.values())
 
 
 def marks(rows: list[dict], language: str, label: Mapping[str, str],
@@ -153,12 +158,7 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
         memo = {**memo, "language": language, "text": _written(memo["good"], numbers, language),
                 "version": memo["version"] + 1, "marks": []}
     config = {c: st.column_config.TextColumn(c) for c in numbers} | (column_config or {})
-    data = memo["text"]
-    if any(memo["marks"]):
-        data = data.copy()
-        data.insert(0, MARK, memo["marks"])
-        config[MARK] = st.column_config.TextColumn(MARK, disabled=True)
-        data = data.style.map(lambda v: REFUSED_CELL if v else "", subset=[MARK])
+    data = marked(memo["text"].copy(), memo["marks"], config)
     place = st.container()
     edited = st.data_editor(data, key=f"{key}-{scene}-{language}-{memo['version']}",
                             column_config=config, hide_index=True, **editor)
@@ -189,8 +189,18 @@ def forget_table(key: str) -> None:
     st.query_params.pop(key, None)
 
 
-MARK = "⚠"  # the column that names a row's refused cells (the builder's tables too)
+MARK = "⚠"  # the column that names a row's refused cells
 REFUSED_CELL = "background-color: #fde8e8; color: #a4000f; font-weight: 600"
+
+
+def marked(frame: pd.DataFrame, marks_: list[str], config: dict):
+    """The editor's data with a red ⚠ column naming each row's refused cells (``config``
+    gets the column), or ``frame`` itself where nothing is refused."""
+    if not any(marks_):
+        return frame
+    frame.insert(0, MARK, marks_)
+    config[MARK] = st.column_config.TextColumn(MARK, disabled=True)
+    return frame.style.map(lambda v: REFUSED_CELL if v else "", subset=[MARK])
 
 
 def _written(table: pd.DataFrame, numbers: Sequence[str], language: str) -> pd.DataFrame:
@@ -205,7 +215,7 @@ def _written(table: pd.DataFrame, numbers: Sequence[str], language: str) -> pd.D
 def _read(rows: list[dict], numbers: Sequence[str], language: str,
           default: pd.DataFrame) -> pd.DataFrame:
     """The rows of a table that read whole, as numbers; rows left wholly empty left out."""
-    kept = [row for row in rows if not all(_empty(v) for v in row.values())]
+    kept = [row for row in rows if not _unfilled(row)]
     table = pd.DataFrame([{c: _number(v, language) if c in numbers else v for c, v in row.items()}
                           for row in kept], columns=list(default.columns))
     return table.astype(default.dtypes)
