@@ -200,7 +200,7 @@ def create(scene: str, method: str, at: float | None = None, variants: str | Non
     """A new class: (join code, lecturer key). The key is shown once; only its hash stays."""
     if method not in METHODS:
         raise ClassError(Text("class.no_method", method=method, methods=", ".join(METHODS)))
-    key = secrets.token_urlsafe(16)
+    key = secrets.token_hex(16)  # (hex: never a leading '-', which a command line takes for an option)
     with engine(url).begin() as db:
         for _ in range(20):
             code = "".join(secrets.choice(CODE_LETTERS) for _ in range(CODE_LENGTH))
@@ -247,7 +247,7 @@ def nickname_of(text: str) -> str:
 def join(code: str, nickname: str = "", url: str | None = None) -> str:
     """A student joins: their token. In a class of variants each gets the next one."""
     found = find(code, url)
-    token = secrets.token_urlsafe(16)
+    token = secrets.token_hex(16)  # 32 characters, 128 bits; never a leading '-'
     with engine(url).begin() as db:
         count = db.execute(sa.select(sa.func.count()).select_from(students)
                            .where(students.c.class_id == found.id)).scalar()

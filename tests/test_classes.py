@@ -76,7 +76,9 @@ def url(request, tmp_path):
 def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
     code, key = store.create("zbirka-3.1", "plans", url=url)
     assert len(code) == 6 and set(code) <= set(store.CODE_LETTERS) and len(key) >= 22
+    assert not key.startswith("-")  # (`--key -x…` read as an option: one key in 64 once)
     ana, ben = store.join(code.lower(), "Ana", url=url), store.join(f" {code} ", url=url)
+    assert not any(store.join(code, url=url).startswith("-") for _ in range(64))  # --student X
     assert store.record(code, ana, "v.a-b", [0.19, -3.09], "sense", store.new_check(), url=url) == 1
     right = store.new_check()
     assert store.record(code, ana, "v.a-b", [-0.19, 3.09], "ok", right, url=url) == 2
