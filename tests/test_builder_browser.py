@@ -86,25 +86,37 @@ def type_cell(page, header: str, row: int, column: int, text: str, redraws: bool
     grid = page.locator("[data-testid='stDataFrame']").filter(has_text=header)
     grid.wait_for(state="visible")
     wait_idle(page)
+    seen = []  # what each try's focused element held, for the failure's message
     for _ in range(5):
         page.wait_for_timeout(300)  # the tab's content laid out
         box = grid.bounding_box()
         page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * row + 17)
         if not grid.evaluate("g => g.contains(document.activeElement)"):
+            seen.append("click missed the grid")
             continue  # the click missed the grid (still laid out): the keys below would go to
             # the tabs, whose arrow keys switch tabs and take the table away
         page.keyboard.press("Home")  # the row's first column, however the grid is scrolled
         for _ in range(column):
             page.keyboard.press("ArrowRight")
         page.keyboard.press("Enter")
-        page.wait_for_timeout(300)
+        try:  # the cell's editor open and focused (slow to come on a loaded machine)
+            page.wait_for_function("() => ['INPUT', 'TEXTAREA'].includes("
+                                   "document.activeElement && document.activeElement.tagName)",
+                                   timeout=5_000)
+        except PlaywrightTimeout:
+            seen.append("no editor opened")
+            page.keyboard.press("Escape")
+            continue
         page.keyboard.press("Control+a")
         page.keyboard.type(text, delay=100)
-        if page.evaluate("() => document.activeElement && document.activeElement.value") == text:
+        held = page.evaluate("() => [document.activeElement && document.activeElement.tagName, "
+                             "document.activeElement && document.activeElement.value]")
+        if held[1] == text:
             break
+        seen.append(held)
         page.keyboard.press("Escape")
     else:
-        raise AssertionError(f"the cell editor never held {text!r}")
+        raise AssertionError(f"the cell editor never held {text!r}: {seen}")
     before = page.evaluate(SHAPES) if redraws else None  # (a builder's drawing only)
     page.keyboard.press("Enter")
     if redraws:
