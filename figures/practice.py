@@ -38,9 +38,13 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
                    fillcolor="rgba(214, 39, 40, 0.15)")]
     plane_layout(fig, title, look, x_title="x [cm]", y_title="y [cm]")
     # no drag mode: a swipe scrolls the page, the tip is moved by its handle (ui/plot.js);
-    # each step opens at its own view (a zoom of the last one would show an empty sheet)
+    # each step opens at its own view (a zoom of the last one would show an empty sheet);
+    # meta.fine: the browser opens it (and comes back after each drag) around the tip, zoomed
+    # until the step's tolerance is a few screen pixels (ui/plot.js)
     fig.merge_layout(dict(shapes=shapes, dragmode=False, uirevision=f"practice-{step.id}",
-                          editrevision=revision))
+                          editrevision=revision,
+                          meta=dict(fine=dict(tolerance=step.tolerance / (step.scale or 1.0),
+                                              view=revision))))
     return fig
 
 

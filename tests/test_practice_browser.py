@@ -1,5 +1,7 @@
 """Practice in a real browser: on the plans page a student drags the new arrow's tip on the
-sheet — to the right place (ok), then to a wrong one (the diagnosis shown)."""
+sheet — its length and direction fill the boxes under it, and only Check grades them — to
+the right place (ok), then to a wrong one (the diagnosis shown). The sheet opens around
+the tip at a zoom where the tolerance is a few pixels, and its toolbar has no drag modes."""
 
 import pytest
 
@@ -11,20 +13,42 @@ from .test_builder_browser import SHAPES, drag_shape, shapes
 
 pytestmark = pytest.mark.browser
 
+SHEET = "document.querySelector('.mehanizmi-plot')"
+
 
 def drag_tip(page, to: complex) -> None:
     """Drag the sheet's red circle to ``to`` (cm on the paper)."""
     drag_shape(page, "tip", to)
 
 
-def test_dragging_the_tip_on_the_plans_page_is_checked_on_release(app_url, browser, tmp_path):
+def boxes(page, step) -> list[str]:
+    """What the step's length and direction boxes hold."""
+    return [page.locator(f".st-key-pr_plans_{name}_{step.id.replace('.', '-')} input").input_value()
+            for name in ("len", "ang")]
+
+
+def test_a_dragged_tip_fills_the_boxes_and_check_grades_it(app_url, browser, tmp_path):
     page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=zbirka-3.1", (1600, 1100))
     page.get_by_text("Practise", exact=True).click()
     page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
     wait_idle(page)
-    step = steps_for(load_preset("zbirka-3.1"), "plans")[0]
+    steps = steps_for(load_preset("zbirka-3.1"), "plans")
+    step = steps[0]
+    # the sheet opens around the tip, a tolerance at least 3 pixels wide, with no drag modes
+    pixel = page.evaluate(f"() => 1 / Math.abs({SHEET}._fullLayout.xaxis._m)")  # cm a pixel
+    assert step.tolerance / step.scale / pixel >= 3 - 1e-6
+    buttons = page.evaluate(f"() => [...{SHEET}.querySelectorAll('.modebar-btn')]"
+                            ".map((b) => b.dataset.attr || b.dataset.title)")
+    assert "dragmode" not in buttons and buttons.count("zoom") == 3  # +, −, whole sheet; no modes
     tip = (step.tail + complex(step.expected)) / step.scale  # cm on the paper
     drag_tip(page, tip)
+    page.wait_for_function(
+        f"() => document.querySelector('.st-key-pr_plans_len_{step.id.replace('.', '-')} input').value")
+    wait_idle(page)
+    length, angle = (float(v) for v in boxes(page, step))
+    assert abs(length - abs(complex(step.expected))) < step.tolerance  # the drag, as numbers
+    assert page.get_by_text("Right, within what a drawing").count() == 0  # no try yet
+    page.get_by_role("button", name="Check").click()
     page.get_by_text("Right, within what a drawing").wait_for(timeout=30_000)
     shot = tmp_path / "practice-plans-ok-en.png"
     page.screenshot(path=str(shot), full_page=True)
@@ -32,13 +56,16 @@ def test_dragging_the_tip_on_the_plans_page_is_checked_on_release(app_url, brows
 
     page.get_by_role("button", name="Next step").click()
     wait_idle(page)
-    second = steps_for(load_preset("zbirka-3.1"), "plans")[1]
+    second = steps[1]
     start = second.tail / second.scale
     fresh = start + (1.0 + 0.5j)  # the new step's circle, before the student moves it
     page.wait_for_function(f"() => Math.hypot(({SHAPES})()['tip'][0] - {fresh.real}, "
                            f"({SHAPES})()['tip'][1] - {fresh.imag}) < 1e-9", timeout=30_000)
     reversed_tip = start - complex(second.expected) / second.scale
     drag_tip(page, reversed_tip)
+    page.wait_for_function(
+        f"() => document.querySelector('.st-key-pr_plans_len_{second.id.replace('.', '-')} input').value")
+    page.get_by_role("button", name="Check").click()
     page.get_by_text("the arrow points the other way").wait_for(timeout=30_000)
     assert abs(shapes(page)["tip"] - reversed_tip) < 0.05  # where the mouse let go
     assert page.locator("[data-testid='stException']").count() == 0

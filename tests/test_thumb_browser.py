@@ -1,9 +1,11 @@
 """By thumb, in chromium's iPhone 13 profile, in Serbian (touches are CDP touch events).
 
-Practice (task 3.1's plans): two fingers zoom the sheet and a finger drags the tip, grabbed
-off its centre, to the exact place — ok at the paper's tolerance; a swipe beside the tip
-scrolls the page and leaves the sheet's view; after each check the step's prompt, its
-verdict and the sheet are on the screen; each step opens at its own view.
+Practice (task 3.1's plans): each step opens around its tip, the paper's tolerance at least
+3 pixels wide; two fingers zoom the sheet and a finger drags the tip, grabbed off its centre,
+to the exact place, which fills the boxes, and Check grades it — ok at the paper's tolerance;
+a swipe beside the tip scrolls the page and leaves the sheet's view; after each check the
+step's prompt, its verdict and the sheet are on the screen. A typed step's verdict is on the
+screen under its Check button.
 
 The builder: its drawing stays at the top of the screen while the tables scroll under it,
 so a typed length is seen redrawn from where it is typed."""
@@ -95,8 +97,10 @@ def test_a_student_practises_task_3_1_by_finger(app_url, phone, tmp_path):
         assert in_view(page, ".st-key-pr_plans_prompt"), n  # the prompt, brought up
         if n < 3:
             opened = view(page)
-            assert opened[0][1] - opened[0][0] > 10  # a fresh step opens unzoomed
             box = area(page)
+            width = opened[0][1] - opened[0][0]  # cm across the sheet's box
+            assert step.tolerance / step.scale * box["w"] / width >= 3 - 1e-6  # in pixels
+            assert abs(complex(sum(opened[0]), sum(opened[1])) / 2 - tip_now(page)) < 1e-6
             middle = (box["x"] + box["w"] / 2, box["y"] + box["h"] / 2)
             gesture(cdp, page, [[(middle[0] - 20, middle[1]), (middle[0] - 60, middle[1])],
                                 [(middle[0] + 20, middle[1]), (middle[0] + 60, middle[1])]])
@@ -108,6 +112,10 @@ def test_a_student_practises_task_3_1_by_finger(app_url, phone, tmp_path):
             grab = (handle[0] + 14, handle[1] - 8)  # a finger lands beside a 3 px circle
             target = on_screen(page, exact.real, exact.imag)
             gesture(cdp, page, [[grab, (target[0] + 14, target[1] - 8)]])
+            page.wait_for_function("() => document.querySelector("
+                                   "\"[class*='st-key-num_any_pr_plans_len'] input\").value")
+            assert page.locator("[data-testid='stAlertContentSuccess']").count() == 0
+            page.get_by_role("button", name="Proveri").tap()
             page.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=30_000)
             wait_idle(page)
             assert abs(tip_now(page) - exact) < step.tolerance / step.scale
@@ -176,3 +184,27 @@ def test_the_builders_drawing_stays_over_the_tables_being_typed(app_url, phone, 
     shot = tmp_path / "builder-phone-sr-typing.png"
     page.screenshot(path=str(shot))
     keep(shot)
+
+
+def test_a_typed_steps_verdict_is_on_the_screen_after_check(app_url, phone, tmp_path):
+    """Task 6.1's Willis steps are typed (no sheet): the verdict comes under the Check button
+    the thumb just tapped, not above the screen's top."""
+    page = phone.new_page()
+    page.goto(f"{app_url}/planetary_gears?lang=sr&scene=zbirka-6.1")
+    settle(page)
+    page.get_by_text("Vežbaj", exact=True).tap()
+    box = page.locator("[class*='st-key-num_any_pr_willis_value'] input").first
+    box.wait_for(timeout=30_000)
+    wait_idle(page)
+    box.tap()
+    box.fill("1")
+    page.get_by_role("button", name="Proveri").tap()
+    verdict = page.locator("[data-testid='stAlertContentWarning'], [data-testid='stAlertContentSuccess']")
+    verdict.first.wait_for(timeout=30_000)
+    wait_idle(page)
+    page.wait_for_timeout(300)
+    assert in_view(page, "[data-testid='stAlertContentWarning'], [data-testid='stAlertContentSuccess']")
+    shot = tmp_path / "practice-phone-sr-typed-verdict.png"
+    page.screenshot(path=str(shot))
+    keep(shot)
+    assert page.locator("[data-testid='stException']").count() == 0

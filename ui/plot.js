@@ -54,6 +54,12 @@ function toolbar(Plotly, labels) {
 // One object, so that Plotly.react sees the same config every time (see BUTTONS).
 const EDITABLE = { edits: { shapePosition: true } };
 
+// A practice sheet's toolbar: zoom in, zoom out and back to the whole sheet, and no modes. In
+// Plotly's pan (or zoom, or select) mode a swipe on the sheet moved the drawing (or drew a
+// box) instead of scrolling the page, and the tip is moved by its own handle anyway.
+const SHEET_REMOVED = ["toImage", "zoom2d", "pan2d", "select2d", "lasso2d", "autoScale2d"];
+const CHART_REMOVED = ["toImage"];
+
 // Charts waiting to be drawn, one per frame, those on screen first. Drawn one after
 // another without a paint between them, the plans page's three charts (which a rerun
 // brings in two or three React commits) kept its first figure off the screen until the
@@ -240,6 +246,28 @@ function handle(gd, name) {
 
 // What a page asks to have on the screen once this chart is drawn (spec.focus: "selector|n"),
 // once for each n: practice's step prompt after a check or a move.
+// A practice sheet (its layout's meta.fine: the drawing's tolerance in the sheet's units, and
+// a view name) opens each step, and comes back after each drag, centred on the student's own
+// tip (never on the answer) at a zoom where the tolerance is FINE_PX screen pixels or more: a
+// phone drawing the whole sheet gave it 0.83 px, less than a finger can aim at. A sheet
+// already that fine is left whole; zoom out (or reset) to see it all, and the next drag
+// brings the fine view back around the tip.
+const FINE_PX = 3;
+
+function fine(gd, spec) {
+  const want = (gd.layout.meta || {}).fine;
+  if (!want || gd.__fine === want.view) return;
+  gd.__fine = want.view;
+  const size = gd._fullLayout._size;
+  const tip = (gd.layout.shapes || []).find((s) => s.name === spec.handle);
+  if (!tip || !size || pixel(gd) * FINE_PX <= want.tolerance) return;
+  const perPixel = want.tolerance / FINE_PX;
+  const x = (tip.x0 + tip.x1) / 2, y = (tip.y0 + tip.y1) / 2;
+  const half = [size.w * perPixel / 2, size.h * perPixel / 2];
+  gd.__Plotly.relayout(gd, { "xaxis.range": [x - half[0], x + half[0]],
+                             "yaxis.range": [y - half[1], y + half[1]] });
+}
+
 function focus(gd, spec) {
   if (!spec.focus || spec.focus === gd.__focused) return;
   gd.__focused = spec.focus;
@@ -525,7 +553,7 @@ export default function (component) {
     // advance); no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a
     // page's own link shares it, and the app needs no network
     const config = { responsive: true, displaylogo: false, showSendToCloud: false,
-                     modeBarButtonsToRemove: ["toImage"],
+                     modeBarButtonsToRemove: spec.handle ? SHEET_REMOVED : CHART_REMOVED,
                      modeBarButtonsToAdd: toolbar(Plotly, spec.labels),
                      locale: locale(Plotly, spec.locale),
                      ...(spec.editable ? EDITABLE : {}) };
@@ -552,6 +580,7 @@ export default function (component) {
       .then(() => {
         if (spec.editable) listen(gd, gd.__send);
         if (spec.handle) handle(gd, spec.handle);
+        fine(gd, spec);
         focus(gd, spec);
         if (spec.first && gd.__first) reportFirstPaint(gd);  // (not if a whole run's figure came since)
       })

@@ -19,6 +19,7 @@ from ui import classroom
 from ui.export import chart
 from ui.fragments import rerun_here
 from ui.i18n import kept_language, num, t
+from ui.inview import into_view
 from ui.numbers import Refused, number_field, refusal
 from ui.present import look
 
@@ -87,23 +88,29 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
     progress: Progress = state["progress"]
     index = min(state["index"], len(steps) - 1)
     step = steps[index]
+    zero = step.kind == "vector" and abs(complex(step.expected)) <= step.tolerance
+    drawn = drawable and step.kind != "scalar" and bool(step.sheet) and not zero
     with st.container(key=f"{key}_prompt"):  # what a check or a move brings to the screen's top
         st.markdown(t("practice.step", n=index + 1, of=len(steps), part=t(PARTS[step.kind]))
                     + f" ${step.symbol}$ [{shown_unit(step)[0]}]")
-        verdict = st.container()  # filled once the typed answer below has been checked
-    zero = step.kind == "vector" and abs(complex(step.expected)) <= step.tolerance
+        # a sheet's check scrolls the prompt and this verdict to the top; a typed step's
+        # verdict goes under its Check button instead, where the eyes are (put above it, a
+        # phone's browser kept the button in place and the verdict landed above the screen)
+        verdict = st.container() if drawn else None
     if zero:  # a question to type, not a drag: a tip cannot be left on its tail
         st.info(t("practice.zero_step"), icon=":material/info:")
-    if drawable and step.kind != "scalar" and step.sheet and not zero:
+    if drawn:
         _drawing(steps, index, key, state, progress, title)
         unit, factor = shown_unit(step)
         st.caption(t("practice.sheet_scale", scale=num(step.scale * factor, 4), unit=unit))
     st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
                else t("practice.rule_hidden_value" if step.kind == "scalar" else "practice.rule_hidden"))
     _typing(step, key, state)
-    with verdict:
+    with verdict or st.container(key=f"{key}_verdict"):
         if not classroom.not_saved():
             _feedback(step, state["progress"], state["mine"].get(step.id))
+    if verdict is None and state.get("checked"):  # a typed step's verdict, under the thumb
+        into_view(f".st-key-{key}_verdict", state["checked"], f"{key}_in_view")
     _moves(steps, index, key, state)
     if all(progress.done(s) for s in steps):
         score(steps, progress, key)
@@ -111,7 +118,7 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
 
 def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Progress,
              title: str) -> None:
-    """The sheet: drag the red circle to the tip; the check follows on release."""
+    """The sheet: drag the red circle to the tip; its place fills the boxes under it."""
     step = steps[index]
     tip = state["tips"].get(step.id)  # SI: where the student put it, at any scale
     tip = None if tip is None else tip / (step.scale or 1.0)
@@ -125,9 +132,23 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
     if drag and drag.get("point") == "tip":
         at = complex(float(drag["x"]), float(drag["y"])) * step.scale
         state["tips"][step.id] = at
-        classroom.give(state, step, at - step.tail if step.kind == "vector" else at)
+        _fill(step, key, at - step.tail if step.kind == "vector" else at)
         state["revision"] += 1
         rerun_here()
+
+
+def _fill(step: Step, key: str, answer: complex) -> None:
+    """A drag writes its answer into the boxes under the sheet, and only Check grades it:
+    a drag that ended a little off (a finger lifted early, the sheet scrolled) used to cost
+    a try. Five significant digits: finer than the drawing's tolerance, as a ruler reads."""
+    unit, factor = shown_unit(step)
+    if step.kind == "vector":
+        values = {"len": abs(answer) * factor,
+                  "ang": math.degrees(math.atan2(answer.imag, answer.real)) % 360}
+    else:
+        values = {"x": answer.real, "y": answer.imag}
+    for name, value in values.items():
+        st.session_state[f"{key}_{name}_{step.id}"] = float(f"{value:.5g}")
 
 
 def _typing(step: Step, key: str, state: dict) -> None:
@@ -160,6 +181,10 @@ def _typing(step: Step, key: str, state: dict) -> None:
             answer = complex(*values)
         else:
             answer = values[0] / factor
+        if step.kind != "scalar":  # the sheet's tip goes where the typed answer puts it
+            state["tips"][step.id] = step.tail + answer if step.kind == "vector" else answer
+        state["revision"] += 1
+        state["checked"] = f"{step.id}-{state['revision']}"  # (ui.inview: show its verdict)
         classroom.give(state, step, answer)
     rerun_here()  # the verdict, with the step's prompt and sheet brought to the screen
 
