@@ -37,14 +37,20 @@ from xml.sax.saxutils import escape
 
 from exams.sheets import drawing_svg, length_scale
 from exams.variants import Answer, Variant, VariantSet, symbol
+from figures.balancing import end_view_figure, side_view_figure
+from figures.gears import schematic_figure
 from figures.plans import plain
+from figures.svg import figure_svg
+from mechanisms.gears import GearTrain
 from mechanisms.messages import Text
+from mechanisms.rotor import Rotor
 from mechanisms.schema import Scene
 from methods import practice_steps
 from methods.plans import build
 from methods.judge import value_step
 from methods.practice import Step, Term, Verdict, hint_keys, scalar_mistakes
 from methods.scales import plan_scales
+from solvers.balancing import unit
 from solvers.diagnostics import Unsolvable, solve_instant
 from solvers.structure import StructureError
 
@@ -55,12 +61,24 @@ WORDS = {
            "given": "Given", "find": "Find", "code": "Code",
            "decimal": "Write a decimal with a point: 3.8266 (this Moodle's English reads a "
                       "comma as a thousands separator).",
-           "drawing": "The mechanism at the asked instant, drawn at U_L = {u} m/cm"},
+           "drawing": "The mechanism at the asked instant, drawn at U_L = {u} m/cm",
+           "end_view": "The rotor seen along its axis: each mass's radius r at its angle φ "
+                       "from the z axis, counter-clockwise (mm)",
+           "side_view": "The rotor from the side: the masses at their axial positions x and "
+                        "the correction planes I and II (mm; not to one scale across)",
+           "train": "The train in half-section: each gear's pitch radius about its axis, "
+                    "carriers as arms (m)"},
     "sr": {"category": "Varijante zadatka {task} (seme {seed}, ± {spread} %)",
            "variant": "Varijanta", "given": "Dato", "find": "Odrediti", "code": "Kod",
            "decimal": "Decimalni broj pišite zarezom, 3,8266, ako je Moodle na srpskom; ako je "
                       "na engleskom, tačkom, 3.8266 (zarez bi tamo odvajao hiljade).",
-           "drawing": "Mehanizam u traženom položaju, nacrtan u razmeri U_L = {u} m/cm"},
+           "drawing": "Mehanizam u traženom položaju, nacrtan u razmeri U_L = {u} m/cm",
+           "end_view": "Rotor gledan duž ose: poluprečnik r svake mase pod njenim uglom φ od "
+                       "ose z, suprotno kretanju kazaljke na satu (mm)",
+           "side_view": "Rotor sa strane: mase na svojim položajima x duž ose i ravni korekcije "
+                        "I i II (mm; popreko nije u istoj razmeri)",
+           "train": "Prenosnik u polupreseku: podeoni poluprečnik svakog zupčanika oko njegove "
+                    "ose, nosači kao krakovi (m)"},
 }
 
 
@@ -167,12 +185,9 @@ def _question(variant: Variant, title: str, language: str, w: dict,
              for g, value in variant.given]
     text.append("</ul>")
     files = []
-    if variant.drawn:
-        scale = length_scale(variant.scene, variant.drawn)
-        svg = drawing_svg(variant.scene, variant.drawn, scale)
-        name = f"{variant.code}.svg"
-        text.append(f"<p>{_h(w['drawing'].format(u=_number(scale, comma)))}</p>"
-                    f'<p><img src="@@PLUGINFILE@@/{name}" alt="{_h(variant.code)}"></p>')
+    for name, svg, caption in pictures(variant, w, comma, lookup):
+        text.append(f"<p>{_h(caption)}</p>"
+                    f'<p><img src="@@PLUGINFILE@@/{name}" alt="{_h(caption)}"></p>')
         files.append(f'<file name="{name}" path="/" encoding="base64">'
                      f"{base64.b64encode(svg.encode('utf-8')).decode('ascii')}</file>")
     text.append(f"<p><strong>{_h(w['find'])}</strong> <em>{_h(w['decimal'])}</em></p><ul>")
@@ -189,6 +204,31 @@ def _question(variant: Variant, title: str, language: str, w: dict,
             "    <penalty>0.3333333</penalty>", "    <hidden>0</hidden>",
             f"    <idnumber>{escape(variant.code)}</idnumber>",
             "  </question>"]
+
+
+def pictures(variant: Variant, w: dict, comma: bool,
+             lookup: Callable[[str], str]) -> list[tuple[str, str, str]]:
+    """The variant's drawings as (file name, SVG, caption), as its page draws them: a
+    linkage at its instant to U_L; a rotor seen along its axis and from the side (its
+    masses only: the corrections are asked); a gear train in half-section."""
+    def t(key: str, **values) -> str:  # figures' translator, from the file's language
+        return lookup(key).format(**values)
+
+    scene = variant.scene
+    if variant.drawn:
+        scale = length_scale(scene, variant.drawn)
+        return [(f"{variant.code}.svg", drawing_svg(scene, variant.drawn, scale),
+                 w["drawing"].format(u=_number(scale, comma)))]
+    if isinstance(scene, Rotor):
+        masses = [(f"m{i + 1}", m.radius * unit(m.angle), m.x) for i, m in enumerate(scene.masses)]
+        end = end_view_figure([(n, v) for n, v, _ in masses], [], "", t)
+        side = side_view_figure(masses, scene.planes, t)
+        return [(f"{variant.code}-end.svg", figure_svg(end, 9.0, axes=True), w["end_view"]),
+                (f"{variant.code}-side.svg", figure_svg(side, 14.0, height=6.0), w["side_view"])]
+    if isinstance(scene, GearTrain):
+        return [(f"{variant.code}.svg", figure_svg(schematic_figure(scene, "", t), 12.0),
+                 w["train"])]
+    return []
 
 
 def _cloze(parts: list[Choice], lookup: Callable[[str], str], comma: bool) -> str:

@@ -34,6 +34,36 @@ def end_view_figure(masses: list[tuple[str, complex]], corrections: list[tuple[s
     return fig
 
 
+def side_view_figure(masses: list[tuple[str, complex, float]], planes: dict[str, float],
+                     t: Text, look: Look = NORMAL) -> RawFigure:
+    """The rotor seen from the side (looking along z, mm): its axis, the correction planes
+    across it (dashed, named), and each mass's arm as it shows there, r·sin φ tall at its
+    axial position x. ``masses`` are (name, r·e^{iφ}, x). A still drawing's second view
+    (a Moodle question's), where the page turns the rotor in 3D."""
+    fig = RawFigure()
+    xs = [x * 1e3 for *_, x in masses] + [x * 1e3 for x in planes.values()]
+    radius = max(abs(v) for _, v, _ in masses) * 1e3
+    span = max(max(xs) - min(xs), 1.0)
+    traces = [scatter(x=[min(xs) - 0.1 * span, max(xs) + 0.1 * span], y=[0, 0], mode="lines",
+                      line=dict(color="black", width=3 * look.line, dash="dashdot"))]
+    for i, (plane, x) in enumerate(planes.items()):
+        traces.append(scatter(x=[x * 1e3, x * 1e3], y=[-1.1 * radius, 1.1 * radius],
+                              mode="lines+text", text=["", t("rotor.fig_plane", plane=plane)],
+                              textposition="top center",
+                              line=dict(color=path_colour(i + 2), width=2 * look.line, dash="dash"),
+                              textfont=dict(size=look.font, color=path_colour(i + 2))))
+    for name, v, x in masses:
+        tip = v.imag * 1e3
+        traces.append(scatter(x=[x * 1e3, x * 1e3], y=[0, tip], mode="lines+markers+text",
+                              text=["", name], textposition="top right" if tip >= 0 else "bottom right",
+                              line=dict(color=KNOWN, width=2 * look.line),
+                              marker=dict(size=[0, 8 * look.line], color=KNOWN),
+                              textfont=dict(size=look.font + 1, color=KNOWN)))
+    fig.add_raw(traces)
+    plane_layout(fig, "", look, x_title="x [mm]", y_title="y [mm]", equal=False)
+    return fig
+
+
 def rotor_3d_figure(masses: list[tuple[str, float, complex, float]],
                     corrections: list[tuple[str, float, complex, float]], planes: dict[str, float],
                     title: str, t: Text, look: Look = NORMAL) -> RawFigure:

@@ -15,6 +15,8 @@ import pytest
 from exams.codes import Settings
 from exams.moodle import asked_steps, choices, matching, moodle_xml
 from exams.variants import generate
+from mechanisms.gears import GearTrain
+from mechanisms.rotor import Rotor
 from methods.practice import grade
 from ui.i18n import table
 
@@ -73,7 +75,8 @@ def test_the_file_has_what_moodles_importer_reads(task, language):
         for file in question.findall("questiontext/file"):  # the drawing, carried in the file
             assert f'@@PLUGINFILE@@/{file.get("name")}' in text
             assert base64.b64decode(file.text).startswith(b"<svg")
-        assert bool(question.findall("questiontext/file")) == bool(variant.drawn)
+        assert len(question.findall("questiontext/file")) == (
+            1 if variant.drawn or isinstance(variant.scene, GearTrain) else 2 if isinstance(variant.scene, Rotor) else 0)
         for answers in parts_of(text):
             assert answers[0][0] == "100" and answers[-1][1] is None  # key first, catch-all last
             assert all("." in f"{v!r}" or "e" in f"{v!r}" for _, v, _, _ in answers if v)
