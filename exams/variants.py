@@ -245,7 +245,11 @@ def unit_of(key: str) -> str:
         return "m/s"
     if key.startswith(("distances.", "arms.")):  # a length of the figure at the drawn instant
         return "m"
+    if key.startswith("points.") and key.count(".") == 1:  # a gear train's point: its speed
+        return "m/s"
     last = key.rsplit(".", 1)[-1]
+    if key.startswith("points.") and last in COMPONENTS:
+        return COMPONENTS[last]
     return UNITS.get(last.removesuffix("_zhukovsky").removesuffix("_power_balance"), "")
 
 
@@ -375,26 +379,33 @@ def key_rows(found: VariantSet) -> list[dict]:
 
 
 SYMBOLS = {"omega": "ω", "epsilon": "ε", "v": "v", "a": "a", "s": "s"}
+COMPONENTS = {"vx": "m/s", "vy": "m/s", "ax": "m/s²", "ay": "m/s²"}  # a point's, along x or y
 SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def symbol(key: str) -> str:
     """A result key as the course writes the quantity: points.E.v → v_E, members.3.omega →
-    ω₃, reactions.1-2.magnitude → F₁₂, corrections.I.mass → m_I, ratios.2-7 → i₂₇,
+    ω₃, reactions.1-2.magnitude → F₁₂, corrections.I.mass → m_I, ratios.2-7 → i₂₇ (3-10 →
+    i₃,₁₀), points.M.vx → v_Mx, a gear train's points.C (its speed) → v_C,
     distances.B-C → BC, arms.G_5.F → h(G_5, F) (the lever arm of G_5 about F)."""
     parts = key.split(".")
     head, last = parts[0], parts[-1]
+    if head == "points" and len(parts) == 2:  # a gear train's point: its speed
+        return f"v_{parts[1]}"
+    if head == "points" and last in COMPONENTS:  # points.M.vx → v_Mx
+        return f"{last[0]}_{parts[1]}{last[1]}"
     if head == "points":
         return f"{last}_{parts[1]}"
     if head == "members":
-        return SYMBOLS.get(last, last) + parts[1].translate(SUBSCRIPT)
+        return ("φ" if last == "angle_deg" else SYMBOLS.get(last, last)) + parts[1].translate(SUBSCRIPT)
     if head == "sliders":
         return f"{last}_rel({parts[1]})"
     if head == "reactions":
         part = {"normal": "ⁿ", "tangential": "ᵗ"}.get(last, "")
         return "F" + parts[1].replace("-", "").translate(SUBSCRIPT) + part
-    if head == "ratios":
-        return "i" + parts[1].replace("-", "").translate(SUBSCRIPT)
+    if head == "ratios":  # i₂₇, but i₃,₁₀ where a member has two digits
+        members = parts[1].split("-")
+        return "i" + ("" if all(len(m) == 1 for m in members) else ",").join(members).translate(SUBSCRIPT)
     if head == "corrections":
         return ("φ" if last == "angle_deg" else last[0]) + "_" + parts[1]
     if head == "distances":

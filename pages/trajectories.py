@@ -35,6 +35,7 @@ from solvers.paths import (
 from solvers.structure import StructureError
 from ui import practice
 from ui.benchmarks import speed_panel
+from ui.book import book_section
 from ui.cache import BY_REPR, cycle, page_cache
 from ui.chapters import page_title
 from ui.crank import Crank, Ranged, crank_frames, live, slider_control
@@ -402,6 +403,8 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
         with geometry:
             readouts(scene, fine, points)
         with main:
+            if base.book:  # task 1.3's travel: book vs exact, or what the student changed
+                book_section(scene, base, {k: v for k, v in defaults(base).items() if k != "points"})
             resolution_table(base, scene, fine, points, steps, (solve_ms, figure_ms))
 
 

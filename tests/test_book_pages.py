@@ -106,3 +106,45 @@ def test_a_changed_speed_is_said_with_its_unit():
     at = page(PAGES[1], lang="en", scene="zbirka-5.1")
     at.slider(key="omega").set_value(17.0).run()
     assert "17 s⁻¹" in _notice(at, "en") and "s⁻¹)" in _notice(at, "en")
+
+
+@pytest.mark.parametrize("lang", ["en", "sr"])
+def test_the_hay_tedders_travel_is_compared_and_a_change_named(lang, monkeypatch):
+    """Task 1.3 (trajectories): ω_t, ω₂, T, Δt and Δs beside the book's; v_R changed is said
+    with its unit, no book value is shown beside the exact one, and the button brings the
+    task back."""
+    monkeypatch.setattr("ui.i18n.current", lambda: lang)  # (AppTest formats choices outside a run)
+    at = page("pages/trajectories.py", lang=lang, scene="zbirka-1.3")
+    assert not at.exception and compared(at, lang), _notice(at, lang)
+    rows = " ".join(str(d.value.to_numpy()) for d in at.dataframe)
+    assert "ω_t [s⁻¹]" in rows and "Δs [m]" in rows
+    at.slider(key="vR").set_value(4.5).run()
+    said = _notice(at, lang)
+    assert ("v_R: 4,5 m/s" if lang == "sr" else "v_R: 4.5 m/s") in said and "3 m/s" in said
+    assert t("plans.book_title", lang) in [h.value for h in at.header]
+    assert not any("ω_t [s⁻¹]" in str(d.value.to_numpy()) for d in at.dataframe)
+    next(b for b in at.button if b.key == "book_restore").click().run()
+    assert not at.exception and compared(at, lang) and at.slider(key="vR").value == 3.0
+
+
+@pytest.mark.parametrize("lang", ["en", "sr", "sr-cyrl"])
+def test_every_printed_value_is_named_in_words_and_symbols(lang):
+    """Every book row of every preset: its symbol, its unit and its words in the language
+    (no result key such as points.E.v or angle_deg₃ left in sight)."""
+    from ui.book import quantity
+    from ui.i18n import _RUN
+
+    _RUN.language = lang
+    try:
+        for preset in preset_ids():
+            for key in getattr(load_preset(preset), "book", {}):
+                name = quantity(key)
+                assert " — " in name and key not in name and "_deg" not in name, (preset, name)
+    finally:
+        _RUN.language = None
+
+
+def test_the_plans_pages_book_table_speaks_the_pages_language():
+    at = page(PAGES[0], lang="sr", scene="zbirka-3.1", tab=t("plans.tab_accuracy", "sr"))
+    rows = " ".join(str(d.value.to_numpy()) for d in at.dataframe)
+    assert "v_C [m/s] — brzina tačke C" in rows and "ugaona brzina člana" in rows

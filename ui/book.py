@@ -20,6 +20,36 @@ VERDICTS = {"agrees": "check.agrees", "close": "check.close", "differs": "check.
 COUNTED = ("agrees", "close", "slip", "differs", "layout")  # the verdicts the check page counts
 RESTORED = "_book_restored"  # "As in the book" was pressed: the whole page runs again
 ROLES = {"fitted": "check.fitted", "chose": "check.chose", "predicted": "check.predicted"}
+# a result key's kind (its head and last part; "" for any last part) → its words in locales/
+WORDS = {
+    ("points", "v"): "q.points.v", ("points", "a"): "q.points.a",
+    ("points", "x"): "q.points.x", ("points", "y"): "q.points.y",
+    ("points", "vx"): "q.points.vx", ("points", "vy"): "q.points.vy",
+    ("points", "ax"): "q.points.ax", ("points", "ay"): "q.points.ay",
+    ("points", ""): "q.points",  # a gear train's point: its speed
+    ("members", "omega"): "q.members.omega", ("members", "epsilon"): "q.members.epsilon",
+    ("members", "angle_deg"): "q.members.angle_deg",
+    ("reactions", "magnitude"): "q.reactions.magnitude",
+    ("reactions", "normal"): "q.reactions.normal",
+    ("reactions", "tangential"): "q.reactions.tangential",
+    ("sliders", "s"): "q.sliders.s", ("sliders", "v"): "q.sliders.v",
+    ("sliders", "a"): "q.sliders.a",
+    ("ratios", ""): "q.ratios", ("distances", ""): "q.distances",
+    ("arms", ""): "q.arms", ("turned", ""): "q.turned",
+    ("corrections", "mass"): "q.corrections.mass",
+    ("corrections", "radius"): "q.corrections.radius",
+    ("corrections", "angle_deg"): "q.corrections.angle_deg",
+    ("driving", "torque"): "q.driving.torque", ("driving", "force"): "q.driving.force",
+    ("driving", "power"): "q.driving.power",
+    ("travel", "wheel_omega"): "q.travel.wheel_omega",
+    ("travel", "crank_omega"): "q.travel.crank_omega",
+    ("travel", "cycle_time"): "q.travel.cycle_time",
+    ("travel", "step_time"): "q.travel.step_time",
+    ("travel", "step_distance"): "q.travel.step_distance",
+}
+# the travel's givens as task 1.3 writes them (mechanisms.schema.Travel's fields)
+TRAVEL_GIVEN = {"speed": ("v_R", "m/s"), "wheel_radius": ("R_t", "m"),
+                "sprocket_wheel": ("R_a", "m"), "sprocket_crank": ("R_b", "m")}
 
 
 def book_table(rows: list[BookRow]) -> pd.DataFrame:
@@ -37,10 +67,33 @@ def book_table(rows: list[BookRow]) -> pd.DataFrame:
 
 
 def quantity(key: str) -> str:
-    """A printed value's row named as the course writes it, with its unit: v_E [m/s],
-    h(G_5, F) [m], F₄₅ᵗ [N] (not points.E.v, arms.G_5.F, reactions.4-5.tangential)."""
+    """A printed value's row named as the course writes it, with its unit, and in words in
+    the page's language: "v_E [m/s] — velocity of point E", "h(G_5, F) [m] — arm of G_5
+    about point F", "F₄₅ᵗ [N] — action of member 4 on member 5, tangential part" (not
+    points.E.v, arms.G_5.F, reactions.4-5.tangential)."""
     unit = unit_of(key)
-    return f"{symbol(key)} [{unit}]" if unit and unit != "–" else symbol(key)
+    named = f"{symbol(key)} [{unit}]" if unit and unit != "–" else symbol(key)
+    said = words(key)
+    return f"{named} — {said}" if said else named
+
+
+def words(key: str) -> str:
+    """A result key's quantity in words (``WORDS``), or "" for a kind not named."""
+    parts = key.split(".")
+    head, last = parts[0], parts[-1]
+    values: dict[str, str] = {"a": parts[1] if len(parts) > 1 else ""}
+    if head in ("reactions", "sliders", "ratios"):
+        values["p"], values["q"] = parts[1].split("-")
+    if head == "ratios":  # ω₃/ω₁₀
+        values["p"], values["q"] = (values[k].translate(SUBSCRIPT) for k in ("p", "q"))
+    if head == "distances":
+        values["a"] = symbol(key)
+    if head == "arms":  # arms.G_5.F, arms.5-4.C: the force named as its symbol shows it
+        values["a"], values["b"] = symbol(key)[2:-1].rsplit(", ", 1)
+    if head == "turned":
+        values["a"] = symbol(key)[3:-1]
+    found = WORDS.get((head, last), WORDS.get((head, "")))
+    return t(found, **values) if found else ""
 
 
 def fit_summary(scene, rows: list[BookRow]) -> None:
@@ -158,6 +211,11 @@ def changes(scene, base) -> list[str]:
         unit = "s⁻¹" if scene.driver.kind == "rotating" else "m/s"
         said.append(t("book.diff_speed", now=f"{num(scene.driver.speed, 6)} {unit}",
                       book=f"{num(base.driver.speed, 6)} {unit}"))
+    if scene.travel and base.travel:  # the hay tedder's travel (task 1.3)
+        for field, (name, unit) in TRAVEL_GIVEN.items():
+            now, book = getattr(scene.travel, field), getattr(base.travel, field)
+            if now != book:
+                said.append(_both(name, f"{num(now, 6)} {unit}", f"{num(book, 6)} {unit}"))
     if scene.inertia != base.inertia:
         said.append(t("book.diff_inertia_on" if scene.inertia else "book.diff_inertia_off"))
     if scene.gravity != base.gravity:
