@@ -47,7 +47,7 @@ from mechanisms.rotor import Rotor
 from mechanisms.schema import Scene
 from methods import practice_steps
 from methods.plans import build
-from methods.judge import value_step
+from methods.judge import left_out_sizes, value_step
 from methods.practice import Step, Term, Verdict, hint_keys, scalar_mistakes
 from methods.scales import plan_scales
 from solvers.balancing import unit
@@ -118,7 +118,7 @@ def left_out(scene) -> dict[str, tuple[Term, ...]]:
         kind, _, point = step.id.partition(".")
         if step.rule == "sum" and kind in ("v", "a") and point in names:
             out[f"points.{names[point]}.{kind}"] = tuple(
-                Term(plain(t.name), abs(complex(t.value))) for t in step.missing)
+                Term(plain(t.name), t.value) for t in left_out_sizes(step))
     return out
 
 

@@ -33,6 +33,13 @@ def value_step(name: str, exact: float, unit: str, drawing: float | None = None,
                 tolerance(exact, drawing), missing=missing, rule="")
 
 
+def left_out_sizes(step: Step) -> tuple[Term, ...]:
+    """A plan's sum step (a point's v or a) as a value to type: the size the point's speed
+    or acceleration has with each term left out — what a student who forgot that term
+    types. The self-check box and the Moodle bank name those mistakes alike."""
+    return tuple(Term(term.name, abs(complex(term.value))) for term in step.missing)
+
+
 def judge(step: Step, typed: float) -> Verdict:
     """The verdict of ``typed`` (in the step's unit) for the value ``step`` asks."""
     return grade(step, float(typed))

@@ -11,6 +11,7 @@ from figures.raw import RawFigure
 from figures.style import Look
 from mechanisms.schema import Scene
 from methods import practice_steps
+from methods.judge import left_out_sizes
 from methods.analytic import derivation, equations, solved_values
 from methods.contour import contour, free_points, latex as contour_latex
 from methods.plans import Plans, build, describe, readings
@@ -277,8 +278,10 @@ def at_the_instant(driven: Scene, scales: dict[str, float]) -> None:
             accuracy_tab(scene, base, values, scales["precision_cm"])
     if not waiting():
         with answer_slot.container():
-            answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty)
-                        for r in values], key="self")
+            sums = {s.symbol: left_out_sizes(s) for s in practice_steps.plans(plans, scales)
+                    if s.rule == "sum"}  # a point's v or a typed with a term forgotten
+            answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty,
+                                 sums.get(r.symbol, ())) for r in values], key="self")
         with main:
             speed_panel("velocity_plans", scene.id, ("kinematics", "graphical"))
 

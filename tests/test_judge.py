@@ -41,11 +41,11 @@ def test_practice_self_check_command_line_and_moodle_agree(task, capsys):
         for (answer, step), answers in zip(asked_steps(variant), written):
             parts = choices(step)
             assert len(parts) == len(answers)
-            quantity = Quantity(answer.key, answer.value, answer.unit, answer.tolerance)
-            for typed in typed_values(answer.value, step.tolerance):
+            quantity = Quantity(answer.key, answer.value, answer.unit, answer.tolerance, step.missing)
+            for typed in typed_values(answer.value, step.tolerance) + [t.value for t in step.missing]:
                 ours = judge(step, typed).diagnosis
                 assert grade(step, typed).diagnosis == ours
-                assert verdict(typed, quantity)[0].diagnosis == ours or step.missing  # (no terms)
+                assert verdict(typed, quantity)[0].diagnosis == ours
                 assert parts[moodle_says(answers, typed)].diagnosis == ours, (answer.key, typed)
             for typed, right in ((answer.value + 0.99 * step.tolerance, True),
                                  (answer.value + 1.01 * step.tolerance, False)):

@@ -14,3 +14,26 @@ def test_grades():
     assert not verdict(0.36, Quantity("t", 0.354, "s"))[0].ok  # no drawing: 0.5 % only
     assert verdict(-0.354, Quantity("t", 0.354, "s"))[0].diagnosis == "sense"
     assert verdict(3.54, Quantity("t", 0.354, "s"))[0].diagnosis == "scale"
+
+
+def test_the_plans_pages_box_names_a_term_left_out_of_a_points_sum():
+    """Task 3.1: v_E typed as if v_EB were left out of v_E = v_B + v_EB is named as that
+    mistake, as practice, the command line and Moodle name it."""
+    from mechanisms import load_preset
+    from methods import practice_steps
+    from methods.plans import build
+    from methods.scales import plan_scales
+    from solvers.diagnostics import solve_instant
+
+    from .test_pages import page
+
+    scene = load_preset("zbirka-3.1")
+    plans = build(solve_instant(scene, None))
+    (step,) = [s for s in practice_steps.plans(plans, plan_scales(scene, plans)) if s.id == "v.e"]
+    forgot = abs(complex(step.missing[1].value))  # v_B alone
+    at = page("pages/velocity_plans.py", lang="en", scene="zbirka-3.1", self_open=True)
+    box = at.selectbox(key="self_quantity")
+    box.set_value(box.options.index("v_E [m/s]")).run()
+    at.text_input(key="self_value").input(f"{forgot:.6f}").run()
+    said = " ".join(w.value for w in at.warning)
+    assert "v_EB" in said, said

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import streamlit as st
 
 from methods.judge import judge, value_step
-from methods.practice import Step, Verdict
+from methods.practice import Step, Term, Verdict
 from ui.i18n import num, t
 from ui.numbers import number_field
 from ui.practice import hint
@@ -21,11 +21,12 @@ class Quantity:
     exact: float
     unit: str
     drawing: float | None = None  # the error a drawing at the user's scales allows
+    missing: tuple[Term, ...] = ()  # the sizes with one term of its plan's sum left out
 
     def step(self) -> Step:
         """The value as the one judge asks it (methods.judge: the drawing's error where it
-        is read off a drawing, else 0.5 %)."""
-        return value_step(self.label, self.exact, self.unit, self.drawing)
+        is read off a drawing, else 0.5 %; a left-out term named)."""
+        return value_step(self.label, self.exact, self.unit, self.drawing, self.missing)
 
 
 def verdict(typed: float, quantity: Quantity) -> tuple[Verdict, Step]:
