@@ -148,3 +148,13 @@ def test_the_plans_pages_book_table_speaks_the_pages_language():
     at = page(PAGES[0], lang="sr", scene="zbirka-3.1", tab=t("plans.tab_accuracy", "sr"))
     rows = " ".join(str(d.value.to_numpy()) for d in at.dataframe)
     assert "v_C [m/s] — brzina tačke C" in rows and "ugaona brzina člana" in rows
+
+
+def test_the_plans_page_names_a_changed_speed_and_brings_the_book_back():
+    at = page(PAGES[0], lang="sr", scene="zbirka-3.1", tab=t("plans.tab_accuracy", "sr"))
+    assert compared(at, "sr")
+    at.slider(key="omega").set_value(12.0).run()
+    said = _notice(at, "sr")
+    assert "12 s⁻¹" in said and "s⁻¹)" in said
+    next(b for b in at.button if b.key == "book_restore").click().run()
+    assert not at.exception and compared(at, "sr")
