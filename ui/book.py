@@ -53,6 +53,9 @@ TRAVEL_GIVEN = {"speed": ("v_R", "m/s"), "wheel_radius": ("R_t", "m"),
 
 
 def book_table(rows: list[BookRow]) -> pd.DataFrame:
+    """One row per printed value: its symbol and unit first, the verdict in view, and what
+    the quantity is in words last (put first, the words pushed the verdict out of a
+    laptop's view of the table)."""
     fitted = any(r.role for r in rows)
     return pd.DataFrame([{
         t("check.col_quantity"): quantity(r.key),
@@ -62,23 +65,22 @@ def book_table(rows: list[BookRow]) -> pd.DataFrame:
         t("check.col_difference"): "—" if r.difference is None else num(r.difference, 3),
         t("check.col_verdict"): t(VERDICTS[r.verdict]),
         t("check.col_note"): in_language(r.note, r.note_sr) if r.slip is None else
-        f"{in_language(r.note, r.note_sr)} {t('check.slip_value', value=num(r.slip, 4))}".strip()}
+        f"{in_language(r.note, r.note_sr)} {t('check.slip_value', value=num(r.slip, 4))}".strip(),
+        t("check.col_what"): words(r.key)}
         for r in rows])
 
 
 def quantity(key: str) -> str:
-    """A printed value's row named as the course writes it, with its unit, and in words in
-    the page's language: "v_E [m/s] — velocity of point E", "h(G_5, F) [m] — arm of G_5
-    about point F", "F₄₅ᵗ [N] — action of member 4 on member 5, tangential part" (not
-    points.E.v, arms.G_5.F, reactions.4-5.tangential)."""
+    """A printed value's row named as the course writes it, with its unit: v_E [m/s],
+    h(G_5, F) [m], F₄₅ᵗ [N] (not points.E.v, arms.G_5.F, reactions.4-5.tangential)."""
     unit = unit_of(key)
-    named = f"{symbol(key)} [{unit}]" if unit and unit != "–" else symbol(key)
-    said = words(key)
-    return f"{named} — {said}" if said else named
+    return f"{symbol(key)} [{unit}]" if unit and unit != "–" else symbol(key)
 
 
 def words(key: str) -> str:
-    """A result key's quantity in words (``WORDS``), or "" for a kind not named."""
+    """A result key's quantity in words in the page's language (``WORDS``): "velocity of
+    point E", "arm of G_5 about point F", "action of member 4 on member 5, tangential
+    part"; "" for a kind not named."""
     parts = key.split(".")
     head, last = parts[0], parts[-1]
     values: dict[str, str] = {"a": parts[1] if len(parts) > 1 else ""}
