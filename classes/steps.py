@@ -10,7 +10,12 @@ from mechanisms.link import PARAMETER, decode
 from methods.practice import Step
 from methods.practice_steps import steps_for
 
-from .store import Class, variant_of
+from .store import Class, student, variant_of
+
+# where each method is practised: the page's path, and what the page opens with
+PRACTICE_PAGES = {"compass": ("trajectories", {"view": "compass"}), "plans": ("velocity_plans", {}),
+                  "forces": ("kinetostatics", {}), "lever": ("kinetostatics", {}),
+                  "willis": ("planetary_gears", {}), "balance": ("rotor_balancing", {})}
 
 
 def scene_of(scene: str):
@@ -25,3 +30,21 @@ def steps_of(found: Class, variant: int | None = None) -> list[Step]:
     code = variant_of(found, variant)
     scene = from_code(code).scene if code else scene_of(found.scene)
     return steps_for(scene, found.method, found.at)
+
+
+def practice_link(found: Class, token: str, language: str, url: str | None = None) -> tuple[str, dict]:
+    """Where a student of ``found`` practises: the method's page (its path) and the query
+    that opens it on the class's scene — or the student's own variant — with the class and
+    the student named, so that practice is on. The class page's *Join* and an LTI launch
+    send a student there alike."""
+    page, shown = PRACTICE_PAGES[found.method]
+    params = {"class": found.code, "student": token, "lang": language, **shown}
+    if found.variants:
+        params["v"] = variant_of(found, student(found.code, token, url)["variant"])
+    elif found.scene.startswith(f"{PARAMETER}="):
+        params[PARAMETER] = found.scene.removeprefix(f"{PARAMETER}=")
+    else:
+        params["scene"] = found.scene
+    if found.at is not None:
+        params["at"] = f"{found.at:g}"
+    return page, params

@@ -196,11 +196,13 @@ def _aware(moment: datetime) -> datetime:
 
 @_reachable
 def create(scene: str, method: str, at: float | None = None, variants: str | None = None,
-           days: int = LIFETIME_DAYS, url: str | None = None) -> tuple[str, str]:
-    """A new class: (join code, lecturer key). The key is shown once; only its hash stays."""
+           days: int = LIFETIME_DAYS, url: str | None = None,
+           key: str | None = None) -> tuple[str, str]:
+    """A new class: (join code, lecturer key). The key is shown once; only its hash stays.
+    ``key``: one the caller derives again when needed (an LTI link's, lti/keys.py)."""
     if method not in METHODS:
         raise ClassError(Text("class.no_method", method=method, methods=", ".join(METHODS)))
-    key = secrets.token_hex(16)  # (hex: never a leading '-', which a command line takes for an option)
+    key = key or secrets.token_hex(16)  # (hex: never a leading '-', which a command line takes for an option)
     with engine(url).begin() as db:
         for _ in range(20):
             code = "".join(secrets.choice(CODE_LETTERS) for _ in range(CODE_LENGTH))

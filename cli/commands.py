@@ -1,5 +1,5 @@
 """Command line: ``python -m solvers list | solve | plan | structure | forces | practice | link |
-variants | bench``
+variants | class | check | lti | bench``
 (see docs/cli.md).
 
 Exit codes: 0 done; 2 the scene or the command is wrong; 3 the mechanism cannot be in
@@ -34,7 +34,7 @@ from solvers.gears import TrainError, solve_train
 from solvers.kinetostatics import analyse
 from solvers.structure import StructureError, decompose
 
-from . import check, classes, practice
+from . import check, classes, lti, practice
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -102,6 +102,7 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(run=_practice)
     classes.add(sub)
     check.add(sub)
+    lti.add(sub)
     p = sub.add_parser("link", help=f"the share parameter ({PARAMETER}=…) that carries a scene "
                                     "in any page's link")
     p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")

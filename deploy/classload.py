@@ -102,7 +102,7 @@ def consecutive_ports() -> int:
     raise RuntimeError("no two free ports in a row")
 
 
-def start_deploy(processes: int = 2, app: str = "app.py") -> Deploy:
+def start_deploy(processes: int = 2, app: str = "asgi.py") -> Deploy:
     """deploy/start.sh serving ``app`` with its own PostgreSQL in a temporary folder; returns
     when nginx and every process answer."""
     pgdata = Path(tempfile.mkdtemp(prefix="mz-deploy-pg-"))
@@ -362,7 +362,7 @@ FLOOR = "bench/floor_class_app.py"  # a class's pages with nothing but the store
 def class_load(students: int, seconds: float, kind: str | None = None, floor: bool = False) -> dict:
     """The whole run on a deploy of its own (of the floor's pages with ``floor``): the
     figures as one dict (the JSON line)."""
-    deploy = start_deploy(app=FLOOR if floor else "app.py")
+    deploy = start_deploy(app=FLOOR if floor else "asgi.py")
     try:
         report, rows, usage = asyncio.run(_run(deploy, students, seconds, kind))
     finally:

@@ -153,7 +153,7 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def start_server(port: int, script: Path = ROOT / "app.py", log=subprocess.DEVNULL,
+def start_server(port: int, script: Path = ROOT / "asgi.py", log=subprocess.DEVNULL,
                  env: dict[str, str] | None = None) -> subprocess.Popen:
     """The app served on 127.0.0.1:``port`` as scripts/start.sh serves it; its output to
     ``log`` (an open file, or discarded); ``env`` added to this process's environment."""

@@ -17,7 +17,7 @@ PROCESSES=${PROCESSES:-$(nproc)}
 PORT=${PORT:-8080}
 HOST=${HOST:-127.0.0.1}
 FIRST=${FIRST_APP_PORT:-8601}
-APP=${APP:-app.py}  # (bench/floor_class_app.py: the class load test's floor)
+APP=${APP:-asgi.py}  # (bench/floor_class_app.py: the class load test's floor)
 sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
 wanted=""
 command -v nginx >/dev/null || wanted="nginx-light"

@@ -9,7 +9,7 @@ import streamlit as st
 
 from classes import store
 from classes.store import ClassError
-from exams.codes import code as variant_code
+from classes.steps import practice_link
 from exams.codes import parse
 from mechanisms import SceneError
 from mechanisms.link import PARAMETER
@@ -68,18 +68,8 @@ def join(code: str) -> None:
 
 def go(found: store.Class, token: str) -> None:
     """To the method's page, on the class's scene (or this student's variant), practice on."""
-    page, _, shown = METHODS[found.method]
-    params = {"class": found.code, "student": token, "lang": current(), **shown}
-    if found.variants:
-        settings, _ = parse(found.variants)
-        params["v"] = variant_code(settings, store.student(found.code, token)["variant"])
-    elif found.scene.startswith(f"{PARAMETER}="):
-        params[PARAMETER] = found.scene.removeprefix(f"{PARAMETER}=")
-    else:
-        params["scene"] = found.scene
-    if found.at is not None:
-        params["at"] = f"{found.at:g}"
-    st.switch_page(page, query_params=params)  # (practice is on there: ui.practice.toggle)
+    _, params = practice_link(found, token, current())
+    st.switch_page(METHODS[found.method][0], query_params=params)  # (practice is on there)
 
 
 st.title(f"{CLASSROOM.icon} {t(CLASSROOM.title)}")

@@ -17,8 +17,9 @@ ROOT = Path(__file__).resolve().parents[1]
 # Top to bottom; a module may import its own layer and every layer below it.
 LAYERS = [
     ("cli",),  # the command line, on top of everything that computes
-    ("app", "pages"),
+    ("app", "asgi", "pages"),  # app.py's pages; asgi.py serves them with the LTI routes
     ("ui",),
+    ("lti",),  # the app as an LTI 1.3 tool: platforms, launches, grades back (Starlette routes)
     ("classes",),
     ("exams",),
     ("figures",),
@@ -29,7 +30,7 @@ LAYERS = [
 ]
 # ``python -m solvers`` as documented: the one module nothing imports, handing over to cli.
 ENTRY_POINTS = {"solvers/__main__.py"}
-NO_BROWSER = {"mechanisms", "solvers", "methods", "reports", "exams", "classes", "cli"}  # no Streamlit
+NO_BROWSER = {"mechanisms", "solvers", "methods", "reports", "exams", "classes", "lti", "cli"}  # no Streamlit
 NO_DRAWING = NO_BROWSER - {"cli"}  # no Plotly either
 LONGEST = 120  # lines of one function or class
 
@@ -40,7 +41,7 @@ def _level(package: str) -> int:
 
 def _modules() -> dict[str, Path]:
     """Module name → file, for every module of the layered packages."""
-    out = {"app": ROOT / "app.py"}
+    out = {"app": ROOT / "app.py", "asgi": ROOT / "asgi.py"}
     for names in LAYERS:
         for package in names:
             folder = ROOT / package

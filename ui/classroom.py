@@ -14,12 +14,12 @@ from ui.boundary import boundary
 from ui.i18n import message, t
 
 # the practice of each method: its page, its switch's key, the page's state that shows it
-METHODS = {"compass": ("pages/trajectories.py", "pr_compass", {"view": "compass"}),
-           "plans": ("pages/velocity_plans.py", "pr_plans", {}),
-           "forces": ("pages/kinetostatics.py", "pr_forces", {}),
-           "lever": ("pages/kinetostatics.py", "pr_lever", {}),
-           "willis": ("pages/planetary_gears.py", "pr_willis", {}),
-           "balance": ("pages/rotor_balancing.py", "pr_balance", {})}
+METHODS = {"compass": ("pages/trajectories.py", "pr_compass"),  # (classes.steps: its link)
+           "plans": ("pages/velocity_plans.py", "pr_plans"),
+           "forces": ("pages/kinetostatics.py", "pr_forces"),
+           "lever": ("pages/kinetostatics.py", "pr_lever"),
+           "willis": ("pages/planetary_gears.py", "pr_willis"),
+           "balance": ("pages/rotor_balancing.py", "pr_balance")}
 PAGE = "pages/class.py"
 NOT_SAVED = "_class_not_saved"
 

@@ -1,0 +1,140 @@
+"""Grades back to the platform (LTI Assignment and Grade Services): a learner whose launch
+carried a line item gets a score after every stored check — from a page or from
+``practice --class … --student …`` alike, as both only store checks.
+
+The queue is the store itself: a learner is due while the newest check stored for them is
+newer than the one last sent (``lti_learners.scored``). ``send_due`` sends each due score
+and marks it sent only once the platform took it; a platform that is down is tried again
+later, less often each time (never more than five minutes apart), and nothing is lost or
+waited on by a student's page. ``worker`` runs it every few seconds beside the app
+(``asgi.py``).
+
+A score: ``scoreGiven`` the steps done right (not shown by "Show it"), ``scoreMaximum`` the
+steps, ``activityProgress`` and ``gradingProgress`` as AGS names them. The access token is
+got with ``client_credentials`` and a client assertion the tool signs (RFC 7523), and kept
+until it expires.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import threading
+import time
+import urllib.parse
+import urllib.request
+from datetime import UTC, datetime, timedelta
+
+import sqlalchemy as sa
+
+from classes import store as classes
+from classes.steps import steps_of
+from classes.store import ClassError, engine
+
+from . import keys
+from .store import Platform, learners, links, platform_by_id
+
+SCOPE = "https://purl.imsglobal.org/spec/lti-ags/scope/score"
+SCORE_TYPE = "application/vnd.ims.lis.v1.score+json"
+EVERY = 5.0  # s between two looks for due scores (a score reaches the platform within 30 s)
+LONGEST = 300  # s: the longest wait before a down platform is tried again
+TIMEOUT = 10  # s a platform may take to answer
+_LOG = logging.getLogger(__name__)
+_TOKENS: dict[tuple[int, str], tuple[str, float]] = {}  # (platform, scope) → token, expiry
+_LOCK = threading.Lock()
+
+
+def token(found: Platform) -> str:
+    """An access token for the score scope: asked for with a signed client assertion, kept
+    until a minute before it expires."""
+    with _LOCK:
+        kept = _TOKENS.get((found.id, SCOPE))
+        if kept and kept[1] > time.time() + 60:
+            return kept[0]
+    assertion = keys.sign({"iss": found.client_id, "sub": found.client_id,
+                           "aud": found.token_url})
+    body = urllib.parse.urlencode({
+        "grant_type": "client_credentials", "scope": SCOPE,
+        "client_assertion_type": "urn:ietf:params:oauth:client-assertion-type:jwt-bearer",
+        "client_assertion": assertion}).encode()
+    request = urllib.request.Request(found.token_url, body, method="POST",
+                                     headers={"Content-Type": "application/x-www-form-urlencoded",
+                                              "Accept": "application/json"})
+    with urllib.request.urlopen(request, timeout=TIMEOUT) as answer:
+        given = json.load(answer)
+    with _LOCK:
+        _TOKENS[(found.id, SCOPE)] = (given["access_token"],
+                                      time.time() + float(given.get("expires_in", 3600)))
+    return given["access_token"]
+
+
+def score(code: str, student: str, sub: str, url: str | None = None) -> dict:
+    """The learner's score as the store has it now."""
+    found = classes.find(code, url)
+    steps = steps_of(found, classes.student(code, student, url)["variant"])
+    settled: dict[str, bool] = {}  # step → right (False: shown by "Show it")
+    for check in classes.tries(code, student, url):
+        if check["step"] not in settled and check["diagnosis"] in ("ok", classes.REVEALED):
+            settled[check["step"]] = check["diagnosis"] == "ok"
+    right, done = sum(settled.values()), len(settled)
+    return {"userId": sub, "scoreGiven": right, "scoreMaximum": len(steps),
+            "activityProgress": "Completed" if done >= len(steps) else "InProgress",
+            "gradingProgress": "FullyGraded",
+            "timestamp": datetime.now(UTC).isoformat(timespec="milliseconds")}
+
+
+def post(found: Platform, lineitem: str, body: dict) -> None:
+    """One score to ``lineitem``'s scores endpoint (an error if the platform refuses it)."""
+    path, _, query = lineitem.partition("?")
+    target = path.rstrip("/") + "/scores" + (f"?{query}" if query else "")
+    request = urllib.request.Request(target, json.dumps(body).encode(), method="POST", headers={
+        "Content-Type": SCORE_TYPE, "Authorization": f"Bearer {token(found)}"})
+    with urllib.request.urlopen(request, timeout=TIMEOUT):
+        pass
+
+
+def due(url: str | None = None) -> list:
+    """Learners with a check stored since their last score (and not waiting after a failure)."""
+    newest = (sa.select(sa.func.max(classes.checks.c.id))
+              .where(classes.checks.c.student == learners.c.student).scalar_subquery())
+    now = datetime.now(UTC)
+    query = (sa.select(learners, links.c.platform_id, links.c.class_code, newest.label("newest"))
+             .join(links, links.c.id == learners.c.link_id)
+             .where(learners.c.lineitem.is_not(None), newest > learners.c.scored,
+                    sa.or_(learners.c.due.is_(None), learners.c.due <= now)))
+    with engine(url).connect() as db:
+        return db.execute(query).all()
+
+
+def send_due(url: str | None = None) -> int:
+    """Send every due score; how many the platforms took."""
+    sent = 0
+    for row in due(url):
+        try:
+            body = score(row.class_code, row.student, row.sub, url)
+            post(platform_by_id(row.platform_id, url), row.lineitem, body)
+        except ClassError:  # the class went: nothing more to send for it
+            _mark(row.id, {"scored": row.newest}, url)
+        except Exception as exc:  # the platform down or refusing: later, less often
+            wait = min(LONGEST, EVERY * 2 ** min(row.failures, 8))
+            _LOG.warning("score for learner %s not taken (%s); again in %.0f s", row.id, exc, wait)
+            _mark(row.id, {"failures": row.failures + 1,
+                           "due": datetime.now(UTC) + timedelta(seconds=wait)}, url)
+        else:
+            _mark(row.id, {"scored": row.newest, "failures": 0, "due": None}, url)
+            sent += 1
+    return sent
+
+
+def _mark(learner: int, values: dict, url: str | None) -> None:
+    with engine(url).begin() as db:
+        db.execute(learners.update().where(learners.c.id == learner).values(**values))
+
+
+def worker(stop: threading.Event, url: str | None = None, every: float = EVERY) -> None:
+    """Send due scores every ``every`` seconds until ``stop`` is set (a thread of the server)."""
+    while not stop.wait(every):
+        try:
+            send_due(url)
+        except Exception:  # the store down: the scores wait in it
+            _LOG.exception("sending scores")

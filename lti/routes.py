@@ -1,0 +1,207 @@
+"""The tool's routes, mounted beside the app on its own server (``asgi.py``):
+
+- ``GET /lti/jwks``: the tool's public key (lti/keys.py);
+- ``GET|POST /lti/login``: OIDC third-party initiated login — a one-use state and nonce,
+  then to the platform's authorisation URL;
+- ``POST /lti/launch``: the ``id_token`` checked (lti/launch.py); a learner goes (303) to
+  the method's page, practice on in the link's class; an instructor to the class's live
+  view; a deep-linking request to a form where the task and method are picked;
+- ``POST /lti/deeplink``: the picked link, signed by the tool, posted back to the platform.
+
+A refusal is a short page in words (Serbian and English: no language is known before a
+launch is checked), with a 4xx status; nothing is stored for it.
+"""
+
+from __future__ import annotations
+
+import html
+import os
+import secrets
+import urllib.parse
+
+import jwt
+from starlette.requests import Request
+from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
+from starlette.routing import Route
+
+from classes.steps import practice_link
+from classes.store import StoreDown, find
+from mechanisms import SceneError, load_preset, preset_ids
+from mechanisms.messages import KEEP, Text, strings
+from methods.practice_steps import steps_for
+
+from . import keys, store
+from .launch import CLAIM, DEEP, DEEP_LINKING, Launch, checked
+from .store import LtiError
+
+METHODS = ("plans", "compass", "forces", "lever", "willis", "balance")
+
+
+def base_url(request: Request) -> str:
+    """The tool's address as users reach it (``MEHANIZMI_BASE_URL`` behind a proxy)."""
+    return os.environ.get("MEHANIZMI_BASE_URL", str(request.base_url)).rstrip("/")
+
+
+def refused(said: Text | str, status: int = 400) -> HTMLResponse:
+    """A refusal in words, in Serbian and in English."""
+    def said_in(language: str) -> str:
+        if isinstance(said, str):
+            return said
+        return said.render(lambda key: KEEP.sub(r"\1", strings(language)[key]),
+                           comma=language == "sr")
+    body = "".join(f"<p>{html.escape(said_in(language))}</p>" for language in ("sr", "en"))
+    return HTMLResponse(f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>Mehanizmi</title>"
+                        f"</head><body>{body}</body></html>", status_code=status)
+
+
+async def jwks(request: Request) -> Response:
+    return JSONResponse(keys.jwks(), headers={"Cache-Control": "public, max-age=3600"})
+
+
+async def login(request: Request) -> Response:
+    given = dict(request.query_params)
+    if request.method == "POST":
+        given.update(dict(await request.form()))
+    issuer, hint = given.get("iss", ""), given.get("login_hint", "")
+    if not issuer or not hint:
+        return refused(Text("lti.login_missing"))
+    try:
+        found = store.platform(issuer, given.get("client_id"))
+        state, nonce = store.new_state(found)
+    except LtiError as exc:
+        return refused(exc.args[0])
+    except StoreDown as exc:
+        return refused(exc.args[0], 503)
+    query = {"scope": "openid", "response_type": "id_token", "response_mode": "form_post",
+             "prompt": "none", "client_id": found.client_id,
+             "redirect_uri": f"{base_url(request)}/lti/launch", "login_hint": hint,
+             "state": state, "nonce": nonce}
+    if given.get("lti_message_hint"):
+        query["lti_message_hint"] = given["lti_message_hint"]
+    joiner = "&" if "?" in found.auth_url else "?"
+    return RedirectResponse(f"{found.auth_url}{joiner}{urllib.parse.urlencode(query)}", 302)
+
+
+async def launch(request: Request) -> Response:
+    form = await request.form()
+    id_token, state = str(form.get("id_token", "")), str(form.get("state", ""))
+    if not id_token or not state:
+        return refused(Text("lti.launch_missing"))
+    try:
+        said = checked(id_token, state)
+        if said.kind == DEEP_LINKING:
+            return picker(request, said)
+        return go(request, said)
+    except LtiError as exc:
+        return refused(exc.args[0], 401 if exc.args[0].key in ("lti.token", "lti.state") else 400)
+    except StoreDown as exc:
+        return refused(exc.args[0], 503)
+
+
+def go(request: Request, said: Launch) -> Response:
+    """A resource link's launch: its class (made at its first launch), then a learner to
+    practise, an instructor to the class's live view."""
+    task, method = said.custom.get("task", ""), said.custom.get("method", "")
+    problem = unusable(task, method)
+    if problem is not None:
+        return refused(problem)
+    link = store.link_class(said.platform, said.context, said.resource_link, task, method)
+    base = base_url(request)
+    if said.instructor:
+        query = urllib.parse.urlencode({"class": link.class_code, "key": link.key,
+                                        "lang": said.locale})
+        return RedirectResponse(f"{base}/class?{query}", 303)
+    token = store.learner(link, said.sub, said.lineitem)
+    page, params = practice_link(find(link.class_code), token, said.locale)
+    return RedirectResponse(f"{base}/{page}?{urllib.parse.urlencode(params)}", 303)
+
+
+def unusable(task: str, method: str) -> Text | None:
+    """Why a link's task and method cannot be practised, or None."""
+    if method not in METHODS:
+        return Text("lti.no_method", method=method or "—", methods=", ".join(METHODS))
+    try:
+        steps = steps_for(load_preset(task), method)
+    except (SceneError, ValueError, KeyError) as exc:
+        return Text("lti.no_task", task=task or "—", why=str(exc))
+    return None if steps else Text("lti.no_task", task=task, why="no steps")
+
+
+def picker(request: Request, said: Launch) -> Response:
+    """Deep linking: the instructor picks a task and a method; the platform's return URL,
+    deployment and data travel signed by the tool (a changed field is refused)."""
+    if not said.instructor or not said.deep_return:
+        return refused(Text("lti.deep_not_allowed"), 403)
+    context = keys.sign({"platform": said.platform.id, "deployment": said.deployment,
+                         "return": said.deep_return, "data": said.deep_data,
+                         "locale": said.locale}, lifetime=3600)
+    sr = said.locale == "sr"
+    titles = {p: title(p, sr) for p in preset_ids()}
+    tasks = "".join(f"<option value='{html.escape(p)}'>{html.escape(titles[p])}</option>"
+                    for p in sorted(titles))
+    methods = "".join(f"<option value='{m}'>{html.escape(method_name(m, sr))}</option>"
+                      for m in METHODS)
+    words = strings("sr" if sr else "en")
+    return HTMLResponse(
+        "<!DOCTYPE html><html><head><meta charset='utf-8'><title>Mehanizmi</title></head><body>"
+        f"<h1>{html.escape(words['lti.pick_title'])}</h1>"
+        f"<form method='post' action='{base_url(request)}/lti/deeplink'>"
+        f"<input type='hidden' name='context' value='{context}'>"
+        f"<p><label>{html.escape(words['lti.pick_task'])} <select name='task'>{tasks}</select></label></p>"
+        f"<p><label>{html.escape(words['lti.pick_method'])} <select name='method'>{methods}</select></label></p>"
+        f"<p><button type='submit'>{html.escape(words['lti.pick_add'])}</button></p>"
+        "</form></body></html>")
+
+
+def title(preset: str, serbian: bool) -> str:
+    scene = load_preset(preset)
+    return f"{preset} — {(scene.title_sr if serbian and getattr(scene, 'title_sr', '') else scene.title)}"
+
+
+def method_name(method: str, serbian: bool) -> str:
+    return KEEP.sub(r"\1", strings("sr" if serbian else "en")[f"class.method_{method}"])
+
+
+async def deeplink(request: Request) -> Response:
+    """The picked task and method, back to the platform as a signed deep-linking response:
+    one ``ltiResourceLink`` with them as custom parameters, and a line item for its grade."""
+    form = await request.form()
+    try:
+        context = jwt.decode(str(form.get("context", "")), keys.private_key().public_key(),
+                             algorithms=[keys.ALGORITHM])
+        found = store.platform_by_id(int(context["platform"]))
+    except (jwt.PyJWTError, KeyError, ValueError):
+        return refused(Text("lti.deep_context"), 400)
+    except LtiError as exc:
+        return refused(exc.args[0])
+    task, method = str(form.get("task", "")), str(form.get("method", ""))
+    problem = unusable(task, method)
+    if problem is not None:
+        return refused(problem)
+    serbian = context.get("locale") == "sr"
+    name = f"{method_name(method, serbian)}: {title(task, serbian)}"
+    steps = len(steps_for(load_preset(task), method))
+    claims = {"iss": found.client_id, "aud": found.issuer, "azp": found.client_id,
+              "nonce": secrets.token_urlsafe(16),
+              CLAIM + "message_type": "LtiDeepLinkingResponse", CLAIM + "version": "1.3.0",
+              CLAIM + "deployment_id": context["deployment"],
+              DEEP + "content_items": [{
+                  "type": "ltiResourceLink", "title": name,
+                  "url": f"{base_url(request)}/lti/launch",
+                  "custom": {"task": task, "method": method},
+                  "lineItem": {"scoreMaximum": steps, "label": name}}]}
+    if context.get("data"):
+        claims[DEEP + "data"] = context["data"]
+    response = keys.sign(claims)
+    return HTMLResponse(
+        "<!DOCTYPE html><html><head><meta charset='utf-8'><title>Mehanizmi</title></head>"
+        "<body onload='document.forms[0].submit()'>"
+        f"<form method='post' action='{html.escape(context['return'])}'>"
+        f"<input type='hidden' name='JWT' value='{response}'>"
+        "<noscript><button type='submit'>OK</button></noscript></form></body></html>")
+
+
+ROUTES = [Route("/lti/jwks", jwks, methods=["GET"]),
+          Route("/lti/login", login, methods=["GET", "POST"]),
+          Route("/lti/launch", launch, methods=["POST"]),
+          Route("/lti/deeplink", deeplink, methods=["POST"])]

@@ -1,0 +1,222 @@
+"""What the tool keeps (migration 0004, in the class store): the platforms registered and
+their deployments, the one-use states of logins under way, the resource links — each a
+class — and their learners, a platform's pseudonymous ``sub`` each, with what was last sent
+to the platform's gradebook. No name or e-mail: a launch's other claims are not stored.
+"""
+
+from __future__ import annotations
+
+import secrets
+from dataclasses import dataclass
+from datetime import UTC, datetime, timedelta
+
+import sqlalchemy as sa
+
+from classes import store
+from classes.store import ClassError, engine
+from mechanisms.messages import Text
+
+from . import keys
+
+STATE_LIFETIME = timedelta(minutes=10)  # a login's state and nonce, until the launch uses them
+LINK_DAYS = 400  # a class a link made lives a course's year (the store's default is 30 days)
+
+meta = sa.MetaData()
+platforms = sa.Table(
+    "lti_platforms", meta,
+    sa.Column("id", sa.Integer, primary_key=True), sa.Column("issuer", sa.Text),
+    sa.Column("client_id", sa.Text), sa.Column("auth_url", sa.Text),
+    sa.Column("token_url", sa.Text), sa.Column("jwks_url", sa.Text),
+    sa.Column("created", sa.DateTime(timezone=True)))
+deployments = sa.Table(
+    "lti_deployments", meta,
+    sa.Column("platform_id", sa.Integer), sa.Column("deployment_id", sa.Text))
+states = sa.Table(
+    "lti_states", meta,
+    sa.Column("state", sa.String(64)), sa.Column("nonce", sa.String(64)),
+    sa.Column("platform_id", sa.Integer), sa.Column("expires", sa.DateTime(timezone=True)))
+links = sa.Table(
+    "lti_links", meta,
+    sa.Column("id", sa.Integer, primary_key=True), sa.Column("platform_id", sa.Integer),
+    sa.Column("context_id", sa.Text), sa.Column("resource_link_id", sa.Text),
+    sa.Column("class_code", sa.String(6)), sa.Column("task", sa.Text),
+    sa.Column("method", sa.String(16)))
+learners = sa.Table(
+    "lti_learners", meta,
+    sa.Column("id", sa.Integer, primary_key=True), sa.Column("link_id", sa.Integer),
+    sa.Column("sub", sa.Text), sa.Column("student", sa.String(32)),
+    sa.Column("lineitem", sa.Text), sa.Column("scored", sa.Integer),
+    sa.Column("due", sa.DateTime(timezone=True)), sa.Column("failures", sa.Integer))
+
+
+class LtiError(ClassError):
+    """A request the tool refuses, said in words (the routes answer 4xx with it)."""
+
+
+@dataclass(frozen=True)
+class Platform:
+    id: int
+    issuer: str
+    client_id: str
+    auth_url: str
+    token_url: str
+    jwks_url: str
+    deployments: tuple[str, ...]
+
+
+def _now() -> datetime:
+    return datetime.now(UTC)
+
+
+def _aware(moment: datetime) -> datetime:
+    return moment if moment.tzinfo else moment.replace(tzinfo=UTC)  # SQLite keeps no zone
+
+
+def add_platform(issuer: str, client_id: str, deployment: str, auth_url: str, token_url: str,
+                 jwks_url: str, url: str | None = None) -> Platform:
+    """Register a platform (or add a deployment to one registered): once per Moodle site."""
+    with engine(url).begin() as db:
+        found = db.execute(sa.select(platforms.c.id).where(
+            platforms.c.issuer == issuer, platforms.c.client_id == client_id)).scalar()
+        if found is None:
+            found = db.execute(platforms.insert().values(
+                issuer=issuer, client_id=client_id, auth_url=auth_url, token_url=token_url,
+                jwks_url=jwks_url, created=_now()).returning(platforms.c.id)).scalar()
+        else:
+            db.execute(platforms.update().where(platforms.c.id == found).values(
+                auth_url=auth_url, token_url=token_url, jwks_url=jwks_url))
+        if db.execute(sa.select(deployments).where(deployments.c.platform_id == found,
+                                                   deployments.c.deployment_id == deployment)).first() is None:
+            db.execute(deployments.insert().values(platform_id=found, deployment_id=deployment))
+    return platform(issuer, client_id, url)
+
+
+def all_platforms(url: str | None = None) -> list[Platform]:
+    with engine(url).connect() as db:
+        rows = db.execute(sa.select(platforms).order_by(platforms.c.id)).all()
+    return [_platform(row, url) for row in rows]
+
+
+def _platform(row, url: str | None) -> Platform:
+    with engine(url).connect() as db:
+        ids = db.execute(sa.select(deployments.c.deployment_id)
+                         .where(deployments.c.platform_id == row.id)
+                         .order_by(deployments.c.deployment_id)).scalars().all()
+    return Platform(row.id, row.issuer, row.client_id, row.auth_url, row.token_url,
+                    row.jwks_url, tuple(ids))
+
+
+def platform(issuer: str, client_id: str | None = None, url: str | None = None) -> Platform:
+    """The platform registered for ``issuer`` (and ``client_id``, when the request names
+    one); LtiError in words if none is."""
+    query = sa.select(platforms).where(platforms.c.issuer == issuer)
+    if client_id:
+        query = query.where(platforms.c.client_id == client_id)
+    with engine(url).connect() as db:
+        rows = db.execute(query).all()
+    if len(rows) != 1:
+        raise LtiError(Text("lti.unknown_platform", issuer=issuer, client=client_id or "—"))
+    return _platform(rows[0], url)
+
+
+def platform_by_id(platform_id: int, url: str | None = None) -> Platform:
+    with engine(url).connect() as db:
+        row = db.execute(sa.select(platforms).where(platforms.c.id == platform_id)).first()
+    if row is None:
+        raise LtiError(Text("lti.unknown_platform", issuer="—", client="—"))
+    return _platform(row, url)
+
+
+def remove_platform(issuer: str, client_id: str, url: str | None = None) -> bool:
+    """Forget a platform, its deployments and its links (their classes stay, to expire)."""
+    with engine(url).begin() as db:
+        found = db.execute(sa.select(platforms.c.id).where(
+            platforms.c.issuer == issuer, platforms.c.client_id == client_id)).scalar()
+        if found is None:
+            return False
+        link_ids = sa.select(links.c.id).where(links.c.platform_id == found)
+        db.execute(learners.delete().where(learners.c.link_id.in_(link_ids)))
+        for table in (links, deployments, states):
+            db.execute(table.delete().where(table.c.platform_id == found))
+        db.execute(platforms.delete().where(platforms.c.id == found))
+    return True
+
+
+def new_state(found: Platform, url: str | None = None) -> tuple[str, str]:
+    """A login's one-use ``state`` and ``nonce``, kept until its launch (or ten minutes)."""
+    state, nonce = secrets.token_urlsafe(32), secrets.token_urlsafe(32)
+    with engine(url).begin() as db:
+        db.execute(states.delete().where(states.c.expires < _now()))
+        db.execute(states.insert().values(state=state, nonce=nonce, platform_id=found.id,
+                                          expires=_now() + STATE_LIFETIME))
+    return state, nonce
+
+
+def take_state(state: str, url: str | None = None) -> tuple[int, str]:
+    """The platform and nonce of a login's ``state``, which is used up here: a second launch
+    with it (a replay) is refused, as is one after ten minutes."""
+    with engine(url).begin() as db:
+        row = db.execute(sa.select(states).where(states.c.state == state)).first()
+        taken = db.execute(states.delete().where(states.c.state == state)).rowcount
+    if row is None or taken != 1 or _aware(row.expires) < _now():
+        raise LtiError(Text("lti.state"))
+    return row.platform_id, row.nonce
+
+
+@dataclass(frozen=True)
+class Link:
+    id: int
+    class_code: str
+    key: str  # the class's lecturer key (keys.lecturer_key: derived, not stored)
+
+
+def link_class(found: Platform, context: str, resource: str, task: str, method: str,
+               url: str | None = None) -> Link:
+    """The class of a resource link: made at its first launch, and made again if it expired
+    or was deleted (a course outlives a class's days)."""
+    key = keys.lecturer_key(f"{found.id}|{context}|{resource}")
+    with engine(url).connect() as db:
+        row = db.execute(sa.select(links).where(
+            links.c.platform_id == found.id, links.c.context_id == context,
+            links.c.resource_link_id == resource)).first()
+    if row is not None:
+        try:
+            store.opened(row.class_code, key, url)
+            return Link(row.id, row.class_code, key)
+        except ClassError:
+            pass  # gone: a new class for the same link
+    code, _ = store.create(task, method, days=LINK_DAYS, url=url, key=key)
+    if row is not None:
+        with engine(url).begin() as db:
+            db.execute(links.update().where(links.c.id == row.id).values(class_code=code))
+            db.execute(learners.delete().where(learners.c.link_id == row.id))  # their tokens went
+        return Link(row.id, code, key)
+    try:
+        with engine(url).begin() as db:
+            made = db.execute(links.insert().values(
+                platform_id=found.id, context_id=context, resource_link_id=resource,
+                class_code=code, task=task, method=method).returning(links.c.id)).scalar()
+    except sa.exc.IntegrityError:  # a second first launch at once: the first one's class stands
+        return link_class(found, context, resource, task, method, url)
+    return Link(made, code, key)
+
+
+def learner(link: Link, sub: str, lineitem: str | None, url: str | None = None) -> str:
+    """The student token of a platform's user in the link's class: joined at their first
+    launch (a pseudonymous nickname), the same at every later one."""
+    with engine(url).connect() as db:
+        row = db.execute(sa.select(learners).where(learners.c.link_id == link.id,
+                                                   learners.c.sub == sub)).first()
+    if row is not None:
+        if lineitem and lineitem != row.lineitem:
+            with engine(url).begin() as db:
+                db.execute(learners.update().where(learners.c.id == row.id).values(lineitem=lineitem))
+        return row.student
+    token = store.join(link.class_code, "", url)
+    try:
+        with engine(url).begin() as db:
+            db.execute(learners.insert().values(link_id=link.id, sub=sub, student=token,
+                                                lineitem=lineitem, scored=0, failures=0))
+    except sa.exc.IntegrityError:  # the same user's two first launches at once: one token
+        return learner(link, sub, lineitem, url)
+    return token

@@ -1,0 +1,298 @@
+"""The app as an LTI 1.3 tool (issue 63), driven by a platform made here: its own RSA key,
+JWKS, token and line-item endpoints on loopback. Login, launch (a learner to practice, an
+instructor to the live view), a replay, a forged, an expired token, an unknown deployment,
+deep linking, and a score posted after a stored check (and later, when the platform was
+down) — on SQLite and PostgreSQL."""
+
+from __future__ import annotations
+
+import json
+import threading
+import time
+import urllib.parse
+import urllib.request
+import uuid
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+
+import jwt
+import pytest
+import sqlalchemy as sa
+from cryptography.hazmat.primitives.asymmetric import rsa
+from jwt.algorithms import RSAAlgorithm
+from starlette.applications import Starlette
+from starlette.testclient import TestClient
+
+from classes import store
+from classes.steps import steps_of
+from lti import grades, keys
+from lti import store as lti
+from lti.launch import AGS, CLAIM, DEEP
+from lti.routes import ROUTES
+
+from .test_classes import postgres, url  # noqa: F401  (fixtures: both databases)
+
+LEARNER = "http://purl.imsglobal.org/vocab/lis/v2/membership#Learner"
+INSTRUCTOR = "http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor"
+
+
+class Platform:
+    """A Moodle's LTI side, as far as a tool sees it: it signs launches with its key, serves
+    its JWKS, gives access tokens for a valid client assertion and takes scores."""
+
+    def __init__(self):
+        self.key = rsa.generate_private_key(public_exponent=65537, key_size=2048)
+        self.issuer = f"https://moodle-{uuid.uuid4().hex[:8]}.example"
+        self.client_id = uuid.uuid4().hex
+        self.scores: list[tuple[str, dict, str]] = []  # (path, body, authorization)
+        self.assertions: list[dict] = []
+        self.down = False
+        self.tool_jwks: str | None = None  # the tool's public keyset URL (else its key here)
+        platform = self
+
+        class Handler(BaseHTTPRequestHandler):
+            def log_message(self, *args) -> None:
+                pass
+
+            def _send(self, status: int, body: bytes, kind: str = "application/json") -> None:
+                self.send_response(status)
+                self.send_header("Content-Type", kind)
+                self.send_header("Content-Length", str(len(body)))
+                self.end_headers()
+                self.wfile.write(body)
+
+            def do_GET(self) -> None:
+                if self.path.startswith("/auth"):  # as Moodle's auth.php: the launch, posted back
+                    asked = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(self.path).query))
+                    form = (f"<form method='post' action='{asked['redirect_uri']}'>"
+                            f"<input type='hidden' name='id_token' value='{platform.token(asked['nonce'])}'>"
+                            f"<input type='hidden' name='state' value='{asked['state']}'></form>"
+                            "<script>document.forms[0].submit()</script>")
+                    return self._send(200, form.encode(), "text/html")
+                key = json.loads(RSAAlgorithm.to_jwk(platform.key.public_key()))
+                self._send(200, json.dumps({"keys": [{**key, "kid": "p1", "alg": "RS256"}]}).encode())
+
+            def do_POST(self) -> None:
+                body = self.rfile.read(int(self.headers["Content-Length"]))
+                if platform.down:
+                    return self._send(503, b"{}")
+                if self.path == "/token":
+                    form = dict(urllib.parse.parse_qsl(body.decode()))
+                    tool_key = (jwt.PyJWKClient(platform.tool_jwks).get_signing_key_from_jwt(
+                        form["client_assertion"]).key if platform.tool_jwks
+                        else keys.private_key().public_key())  # as registered in Moodle
+                    claims = jwt.decode(form["client_assertion"], tool_key,
+                                        algorithms=["RS256"], audience=platform.url("/token"))
+                    platform.assertions.append({**claims, "scope": form["scope"],
+                                                "grant_type": form["grant_type"]})
+                    return self._send(200, json.dumps({"access_token": "t-" + uuid.uuid4().hex,
+                                                       "expires_in": 3600}).encode())
+                platform.scores.append((self.path, json.loads(body), self.headers["Authorization"],
+                                        self.headers["Content-Type"]))
+                self._send(200, b"{}")
+
+        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        threading.Thread(target=self.server.serve_forever, daemon=True).start()
+
+    def url(self, path: str) -> str:
+        return f"http://127.0.0.1:{self.server.server_port}{path}"
+
+    def register(self, db: str, deployment: str = "d1") -> None:
+        lti.add_platform(self.issuer, self.client_id, deployment, self.url("/auth"),
+                         self.url("/token"), self.url("/jwks"), db)
+
+    def token(self, nonce: str, key=None, exp: float | None = None, **claims) -> str:
+        now = int(time.time())
+        body = {"iss": self.issuer, "aud": self.client_id, "sub": "learner-1", "nonce": nonce,
+                "iat": now, "exp": exp if exp is not None else now + 300,
+                CLAIM + "deployment_id": "d1", CLAIM + "version": "1.3.0",
+                CLAIM + "message_type": "LtiResourceLinkRequest", CLAIM + "roles": [LEARNER],
+                CLAIM + "context": {"id": "course-7"}, CLAIM + "resource_link": {"id": "rl-1"},
+                CLAIM + "custom": {"task": "zbirka-3.1", "method": "plans"},
+                AGS: {"lineitem": self.url("/lineitems/5/lineitem?type_id=3"),
+                      "scope": [grades.SCOPE]}, "locale": "sr"}
+        body.update(claims)
+        return jwt.encode(body, key or self.key, algorithm="RS256", headers={"kid": "p1"})
+
+    def close(self) -> None:
+        self.server.shutdown()
+
+
+@pytest.fixture
+def tool(url, tmp_path, monkeypatch):
+    """The tool's routes on the store ``url``, with a key of its own, and a platform."""
+    monkeypatch.setenv("MEHANIZMI_DATABASE_URL", url)
+    monkeypatch.setenv("MEHANIZMI_LTI_KEY", str(tmp_path / "lti" / "tool-key.pem"))
+    platform = Platform()
+    platform.register(url)
+    client = TestClient(Starlette(routes=ROUTES), base_url="https://tool.example")
+    yield client, platform, url
+    platform.close()
+
+
+def login(client: TestClient, platform: Platform) -> dict:
+    """The platform's login initiation: the tool's redirect, as query parameters."""
+    answer = client.get("/lti/login", params={"iss": platform.issuer, "login_hint": "u-1",
+                                              "client_id": platform.client_id,
+                                              "lti_message_hint": "m-9"}, follow_redirects=False)
+    assert answer.status_code == 302, answer.text
+    target = urllib.parse.urlsplit(answer.headers["location"])
+    assert target.geturl().startswith(platform.url("/auth"))
+    return dict(urllib.parse.parse_qsl(target.query))
+
+
+def launch(client: TestClient, platform: Platform, **claims):
+    asked = login(client, platform)
+    return client.post("/lti/launch", data={"id_token": platform.token(asked["nonce"], **claims),
+                                             "state": asked["state"]}, follow_redirects=False)
+
+
+def counts(db: str) -> tuple[int, int]:
+    with store.engine(db).connect() as connection:
+        return (connection.execute(sa.select(sa.func.count()).select_from(store.classes)).scalar(),
+                connection.execute(sa.select(sa.func.count()).select_from(store.students)).scalar())
+
+
+def test_the_login_redirects_to_the_platform_with_what_lti_asks(tool):
+    client, platform, _ = tool
+    asked = login(client, platform)
+    assert {k: asked[k] for k in ("scope", "response_type", "response_mode", "prompt",
+                                  "client_id", "redirect_uri", "login_hint", "lti_message_hint")} == {
+        "scope": "openid", "response_type": "id_token", "response_mode": "form_post",
+        "prompt": "none", "client_id": platform.client_id,
+        "redirect_uri": "https://tool.example/lti/launch", "login_hint": "u-1",
+        "lti_message_hint": "m-9"}
+    assert len(asked["state"]) >= 32 and len(asked["nonce"]) >= 32 and asked["state"] != asked["nonce"]
+    unknown = client.get("/lti/login", params={"iss": "https://other.example", "login_hint": "x"})
+    assert unknown.status_code == 400 and "No platform is registered" in unknown.text
+
+
+def test_a_learner_lands_in_practice_and_an_instructor_on_the_live_view(tool):
+    client, platform, db = tool
+    answer = launch(client, platform)
+    assert answer.status_code == 303, answer.text
+    where = urllib.parse.urlsplit(answer.headers["location"])
+    query = dict(urllib.parse.parse_qsl(where.query))
+    assert where.path == "/velocity_plans" and query["scene"] == "zbirka-3.1"
+    assert query["lang"] == "sr"  # the platform's locale
+    found = store.find(query["class"], db)
+    assert (found.scene, found.method) == ("zbirka-3.1", "plans")
+    assert store.student(found.code, query["student"], db)["nickname"] != "learner-1"  # no names
+    again = urllib.parse.parse_qs(urllib.parse.urlsplit(launch(client, platform).headers["location"]).query)
+    assert again["class"] == [found.code] and again["student"] == [query["student"]]  # the same seat
+    teacher = launch(client, platform, sub="teacher-1", **{CLAIM + "roles": [INSTRUCTOR]})
+    assert teacher.status_code == 303
+    lecturer = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(teacher.headers["location"]).query))
+    assert urllib.parse.urlsplit(teacher.headers["location"]).path == "/class"
+    assert store.opened(lecturer["class"], lecturer["key"], db).code == found.code  # the platform vouched
+
+
+@pytest.mark.parametrize("why, claims, status, said", [
+    ("forged", {"key": rsa.generate_private_key(public_exponent=65537, key_size=2048)}, 401,
+     "Signature verification failed"),
+    ("expired", {"exp": time.time() - 3600}, 401, "expired"),
+    ("unknown deployment", {CLAIM + "deployment_id": "d-other"}, 400, "d-other"),
+    ("another audience", {"aud": "someone-else"}, 401, "Audience"),
+    ("LTI 1.1", {CLAIM + "version": "1.1"}, 401, "1.3.0"),
+])
+def test_a_launch_that_cannot_be_trusted_is_refused_in_words_and_stores_nothing(tool, why, claims,
+                                                                                 status, said):
+    client, platform, db = tool
+    before = counts(db)
+    answer = launch(client, platform, **claims)
+    assert answer.status_code == status, (why, answer.text)
+    assert said in answer.text and "<p>" in answer.text, why  # in words, both languages
+    assert counts(db) == before
+
+
+def test_a_replayed_launch_is_refused(tool):
+    client, platform, db = tool
+    asked = login(client, platform)
+    form = {"id_token": platform.token(asked["nonce"]), "state": asked["state"]}
+    assert client.post("/lti/launch", data=form, follow_redirects=False).status_code == 303
+    before = counts(db)
+    replay = client.post("/lti/launch", data=form, follow_redirects=False)
+    assert replay.status_code == 401 and "used already" in replay.text
+    assert counts(db) == before
+    other = login(client, platform)  # a fresh state with another login's nonce
+    mixed = client.post("/lti/launch", data={"id_token": platform.token(asked["nonce"]),
+                                             "state": other["state"]}, follow_redirects=False)
+    assert mixed.status_code == 401 and "nonce" in mixed.text
+
+
+def test_a_stored_check_is_scored_at_the_platform_and_a_platform_down_gets_it_later(tool, monkeypatch):
+    client, platform, db = tool
+    query = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(
+        launch(client, platform).headers["location"]).query))
+    code, token = query["class"], query["student"]
+    steps = steps_of(store.find(code, db))
+    assert grades.send_due(db) == 0  # nothing checked yet: nothing to send
+    store.record(code, token, steps[0].id, 0.0, "wrong", store.new_check(), url=db)
+    store.record(code, token, steps[0].id, 1.0, "ok", store.new_check(), url=db)
+    assert grades.send_due(db) == 1
+    path, body, authorization, kind = platform.scores[-1]
+    assert path == "/lineitems/5/lineitem/scores?type_id=3" and kind == grades.SCORE_TYPE
+    assert authorization.startswith("Bearer t-")
+    assert {k: body[k] for k in ("userId", "scoreGiven", "scoreMaximum", "activityProgress",
+                                 "gradingProgress")} == {
+        "userId": "learner-1", "scoreGiven": 1, "scoreMaximum": len(steps),
+        "activityProgress": "InProgress", "gradingProgress": "FullyGraded"}
+    (assertion,) = platform.assertions  # one token, kept for the next score
+    assert assertion["iss"] == assertion["sub"] == platform.client_id
+    assert assertion["jti"] and assertion["grant_type"] == "client_credentials"
+    assert grades.send_due(db) == 0  # sent once
+    platform.down = True
+    monkeypatch.setattr(grades, "EVERY", 0.0)  # (tried again at once here)
+    store.record(code, token, steps[1].id, None, store.REVEALED, store.new_check(), url=db)
+    assert grades.send_due(db) == 0 and len(platform.scores) == 1  # down: kept in the store
+    platform.down = False
+    assert grades.send_due(db) == 1
+    assert platform.scores[-1][1]["scoreGiven"] == 1  # a step shown is not a step right
+    assert len(platform.assertions) == 1
+
+
+def test_deep_linking_returns_a_signed_resource_link_with_a_line_item(tool):
+    client, platform, _ = tool
+    answer = launch(client, platform, sub="teacher-1", **{
+        CLAIM + "message_type": "LtiDeepLinkingRequest", CLAIM + "roles": [INSTRUCTOR],
+        DEEP + "deep_linking_settings": {"deep_link_return_url": platform.url("/deep-return"),
+                                         "data": "opaque-7"}})
+    assert answer.status_code == 200 and "zbirka-3.1" in answer.text
+    context = answer.text.split("name='context' value='")[1].split("'")[0]
+    picked = client.post("/lti/deeplink", data={"context": context, "task": "zbirka-3.1",
+                                                "method": "plans"})
+    assert picked.status_code == 200 and platform.url("/deep-return") in picked.text
+    said = picked.text.split("name='JWT' value='")[1].split("'")[0]
+    claims = jwt.decode(said, keys.private_key().public_key(), algorithms=["RS256"],
+                        audience=platform.issuer)
+    assert claims["iss"] == platform.client_id and claims[CLAIM + "deployment_id"] == "d1"
+    assert claims[CLAIM + "message_type"] == "LtiDeepLinkingResponse"
+    assert claims[DEEP + "data"] == "opaque-7"
+    (item,) = claims[DEEP + "content_items"]
+    assert item["type"] == "ltiResourceLink" and item["custom"] == {"task": "zbirka-3.1", "method": "plans"}
+    assert item["url"] == "https://tool.example/lti/launch" and item["lineItem"]["scoreMaximum"] > 0
+    tampered = context[:-4] + ("AAAA" if not context.endswith("AAAA") else "BBBB")
+    assert client.post("/lti/deeplink", data={"context": tampered, "task": "zbirka-3.1",
+                                              "method": "plans"}).status_code == 400
+    learner = launch(client, platform, **{CLAIM + "message_type": "LtiDeepLinkingRequest"})
+    assert learner.status_code == 403
+
+
+def test_a_link_without_a_usable_task_is_refused_in_words(tool):
+    client, platform, db = tool
+    before = counts(db)
+    answer = launch(client, platform, **{CLAIM + "custom": {"task": "zbirka-9.9", "method": "plans"}})
+    assert answer.status_code == 400 and "zbirka-9.9" in answer.text
+    answer = launch(client, platform, **{CLAIM + "custom": {"task": "zbirka-3.1", "method": "walk"}})
+    assert answer.status_code == 400 and "walk" in answer.text
+    assert counts(db) == before
+
+
+def test_the_served_app_publishes_its_key_and_refuses_an_unknown_platform(app_url):
+    """Through the README's start command (scripts/serve.py asgi.py: st.App with the routes)."""
+    with urllib.request.urlopen(f"{app_url}/lti/jwks", timeout=10) as answer:
+        (key,) = json.load(answer)["keys"]
+    assert key["kty"] == "RSA" and key["alg"] == "RS256" and key["kid"] and "d" not in key
+    with pytest.raises(urllib.error.HTTPError) as refused:
+        urllib.request.urlopen(f"{app_url}/lti/login?iss=https://nobody.example&login_hint=x",
+                               timeout=10)
+    assert refused.value.code == 400 and "No platform is registered" in refused.value.read().decode()
