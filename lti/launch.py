@@ -94,5 +94,11 @@ def _launch(found: Platform, claims: dict, nonce: str) -> Launch:
                   any(role in INSTRUCTOR for role in roles), str(context), str(link),
                   dict(claims.get(CLAIM + "custom") or {}), ags.get("lineitem"),
                   deep.get("deep_link_return_url"), deep.get("data"),
-                  "sr" if str(claims.get("locale", "")).lower().startswith(("sr", "bs", "hr", "me"))
-                  else "en")
+                  "sr" if _locale(claims).startswith(("sr", "bs", "hr", "me")) else "en")
+
+
+def _locale(claims: dict) -> str:
+    """The user's language: the launch presentation's locale (where Moodle puts it), or
+    OpenID's ``locale``."""
+    shown = (claims.get(CLAIM + "launch_presentation") or {}).get("locale")
+    return str(shown or claims.get("locale") or "").lower()

@@ -35,6 +35,11 @@ from .launch import CLAIM, DEEP, DEEP_LINKING, Launch, checked
 from .store import LtiError
 
 METHODS = ("plans", "compass", "forces", "lever", "willis", "balance")
+PICKER_STYLE = ("body{font-family:'Source Sans Pro',system-ui,sans-serif;max-width:44rem;"
+                "margin:2rem auto;padding:0 1rem;color:#262730}h1{font-size:1.5rem}"
+                "label{display:block;font-weight:600}select{display:block;width:100%;"
+                "margin-top:.3rem;padding:.4rem;font:inherit;font-weight:400}button{background:#ff4b4b;"
+                "color:#fff;border:0;border-radius:.5rem;padding:.5rem 1.2rem;font:inherit}")
 
 
 def base_url(request: Request) -> str:
@@ -143,7 +148,8 @@ def picker(request: Request, said: Launch) -> Response:
                       for m in METHODS)
     words = strings("sr" if sr else "en")
     return HTMLResponse(
-        "<!DOCTYPE html><html><head><meta charset='utf-8'><title>Mehanizmi</title></head><body>"
+        "<!DOCTYPE html><html><head><meta charset='utf-8'><title>Mehanizmi</title>"
+        f"<meta name='viewport' content='width=device-width'><style>{PICKER_STYLE}</style></head><body>"
         f"<h1>{html.escape(words['lti.pick_title'])}</h1>"
         f"<form method='post' action='{base_url(request)}/lti/deeplink'>"
         f"<input type='hidden' name='context' value='{context}'>"

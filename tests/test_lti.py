@@ -109,7 +109,8 @@ class Platform:
                 CLAIM + "context": {"id": "course-7"}, CLAIM + "resource_link": {"id": "rl-1"},
                 CLAIM + "custom": {"task": "zbirka-3.1", "method": "plans"},
                 AGS: {"lineitem": self.url("/lineitems/5/lineitem?type_id=3"),
-                      "scope": [grades.SCOPE]}, "locale": "sr"}
+                      "scope": [grades.SCOPE]},
+                CLAIM + "launch_presentation": {"locale": "sr", "document_target": "window"}}
         body.update(claims)
         return jwt.encode(body, key or self.key, algorithm="RS256", headers={"kid": "p1"})
 

@@ -1,0 +1,11 @@
+<?php
+// The student's grade of the activity, as Moodle's gradebook holds it (bench/moodle_lti.py).
+// Usage: php grade.php COURSE INSTANCE USERID
+define('CLI_SCRIPT', true);
+require(__DIR__ . '/config.php');
+require_once($CFG->libdir . '/gradelib.php');
+[$script, $course, $instance, $user] = $argv;
+$grades = grade_get_grades($course, 'mod', 'lti', $instance, $user);
+$item = reset($grades->items);
+$grade = $item ? $item->grades[$user] : null;
+echo json_encode(['grade' => $grade ? $grade->grade : null, 'max' => $item ? $item->grademax : null]), "\n";
