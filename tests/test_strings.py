@@ -12,7 +12,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *ROOT.glob("figures/*.py"),
            ROOT / "methods" / "practice.py",  # (practice's hints, shared with the command line)
            *ROOT.glob("mechanisms/*.py"), *ROOT.glob("solvers/*.py"), *ROOT.glob("exams/*.py"),
-           *ROOT.glob("classes/*.py"),
+           *ROOT.glob("classes/*.py"), *ROOT.glob("lti/*.py"),
            ROOT / "methods" / "plans.py", ROOT / "reports" / "fitting.py"]  # (their messages)
 
 
