@@ -35,15 +35,24 @@ def key_path() -> Path:
 
 @cache
 def _private(path: Path):
-    """The key at ``path``, made there the first time (folder 700, file 600)."""
+    """The key at ``path``, made there the first time (folder 700, file 600). Written aside
+    and linked into place: the app processes of a deployment start together, and the first
+    one's key is everyone's (a link fails if the name is taken; no half-written key is read)."""
     if not path.exists():
         path.parent.mkdir(parents=True, exist_ok=True, mode=0o700)
         made = rsa.generate_private_key(public_exponent=65537, key_size=2048)
         pem = made.private_bytes(serialization.Encoding.PEM, serialization.PrivateFormat.PKCS8,
                                  serialization.NoEncryption())
-        descriptor = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+        aside = path.with_name(f".{path.name}.{os.getpid()}")
+        descriptor = os.open(aside, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
         with os.fdopen(descriptor, "wb") as file:
             file.write(pem)
+        try:
+            os.link(aside, path)
+        except FileExistsError:
+            pass  # another process made it first: theirs is the key
+        finally:
+            aside.unlink()
     return serialization.load_pem_private_key(path.read_bytes(), password=None)
 
 

@@ -9,6 +9,7 @@ process was down (nginx then logs the request's line and referrer)."""
 
 from __future__ import annotations
 
+import json
 import os
 import secrets
 import shutil
@@ -17,6 +18,7 @@ import stat
 import subprocess
 import tempfile
 import time
+import urllib.error
 import urllib.request
 from pathlib import Path
 
@@ -151,6 +153,20 @@ def _logs_kept_private_and_without_secrets(deployed, key: str, tokens: list[str]
             text = path.read_bytes()
             for secret in secrets_:
                 assert secret.encode() not in text, (path, secret[:12])
+
+
+def test_the_lti_routes_are_served_through_nginx(deployed):
+    """deploy/start.sh serves asgi.py: the tool's keyset and a refused login reach a
+    platform through the proxy, from every process alike (one tool key)."""
+    keys = set()
+    for base in [deployed.proxy] + [f"http://127.0.0.1:{port}" for port in deployed.ports]:
+        with urllib.request.urlopen(f"{base}/lti/jwks", timeout=10) as answer:
+            keys.add(json.load(answer)["keys"][0]["kid"])
+    assert len(keys) == 1
+    with pytest.raises(urllib.error.HTTPError) as refused:
+        urllib.request.urlopen(f"{deployed.proxy}/lti/login?iss=https://nobody.example&login_hint=x",
+                               timeout=10)
+    assert refused.value.code == 400
 
 
 def test_a_class_load_with_the_database_stopped_loses_nothing():

@@ -297,3 +297,44 @@ def test_the_served_app_publishes_its_key_and_refuses_an_unknown_platform(app_ur
         urllib.request.urlopen(f"{app_url}/lti/login?iss=https://nobody.example&login_hint=x",
                                timeout=10)
     assert refused.value.code == 400 and "No platform is registered" in refused.value.read().decode()
+
+
+def test_processes_starting_together_make_one_tool_key(tmp_path):
+    """deploy/start.sh's processes ask for the key at once: one key, whole, mode 600."""
+    import multiprocessing
+
+    path = tmp_path / "lti" / "tool-key.pem"
+    with multiprocessing.get_context("spawn").Pool(4) as pool:
+        made = pool.map(_key_of, [str(path)] * 8)
+    assert len(set(made)) == 1
+    assert oct(path.stat().st_mode & 0o777) == "0o600"
+    assert oct(path.parent.stat().st_mode & 0o777) == "0o700"
+    assert not [p for p in path.parent.iterdir() if p != path]  # nothing left aside
+
+
+def _key_of(path: str) -> str:
+    from pathlib import Path
+
+    from lti.keys import _private
+
+    key = _private(Path(path))
+    return str(key.private_numbers().d)
+
+
+def test_a_hand_in_from_the_command_line_is_scored_too(tool, tmp_path):
+    """``practice … --class … --student …`` stores checks as a page does: the learner's score
+    follows them to the platform."""
+    from cli import main
+
+    client, platform, db = tool
+    query = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(
+        launch(client, platform).headers["location"]).query))
+    steps = steps_of(store.find(query["class"], db))
+    answers = tmp_path / "answers.json"
+    z = [complex(s.expected) for s in steps[:2]]
+    answers.write_text(json.dumps({"answers": {steps[0].id: [z[0].real, z[0].imag],
+                                               steps[1].id: [-z[1].real, -z[1].imag]}}))
+    assert main(["practice", "--method", "plans", "--answers", str(answers),
+                 "--class", query["class"], "--student", query["student"]]) == 0
+    assert grades.send_due(db) == 1
+    assert platform.scores[-1][1]["scoreGiven"] == 1  # the first right, the second reversed
