@@ -13,6 +13,7 @@ so a typed length is seen redrawn from where it is typed."""
 from __future__ import annotations
 
 import pytest
+from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 from cli.practice import steps_for
 from mechanisms import load_preset
@@ -165,10 +166,12 @@ def test_the_builders_drawing_stays_over_the_tables_being_typed(app_url, phone, 
         for _ in range(arrows):  # (arrows, not Home: a Home the grid does not take scrolls
             page.keyboard.press("ArrowRight")  # the page)
         page.keyboard.press("Enter")
-        page.wait_for_timeout(300)
-        if page.evaluate("() => document.activeElement && document.activeElement.value") == "0,4":
+        try:  # the cell's editor open and focused (slow to come on a loaded machine)
+            page.wait_for_function("() => document.activeElement && document.activeElement.value === '0,4'",
+                                   timeout=5_000)
             break
-        page.keyboard.press("Escape")
+        except PlaywrightTimeout:
+            page.keyboard.press("Escape")
     page.keyboard.press("Control+a")
     page.keyboard.type("0,35", delay=60)  # the coupler's length, typed the Serbian way
     page.keyboard.press("Enter")
