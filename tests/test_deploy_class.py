@@ -48,6 +48,21 @@ def deployed():
     running.stop()
 
 
+def test_the_lti_routes_are_served_through_nginx(deployed):
+    """deploy/start.sh serves asgi.py: the tool's keyset and a refused login reach a
+    platform through the proxy, from every process alike (one tool key). (Before the test
+    below, which ends by stopping the deployment.)"""
+    keys = set()
+    for base in [deployed.proxy] + [f"http://127.0.0.1:{port}" for port in deployed.ports]:
+        with urllib.request.urlopen(f"{base}/lti/jwks", timeout=10) as answer:
+            keys.add(json.load(answer)["keys"][0]["kid"])
+    assert len(keys) == 1
+    with pytest.raises(urllib.error.HTTPError) as refused:
+        urllib.request.urlopen(f"{deployed.proxy}/lti/login?iss=https://nobody.example&login_hint=x",
+                               timeout=10)
+    assert refused.value.code == 400
+
+
 def test_a_student_behind_nginx_resumes_on_either_process_from_postgresql(deployed):
     from playwright.sync_api import sync_playwright
 
@@ -153,20 +168,6 @@ def _logs_kept_private_and_without_secrets(deployed, key: str, tokens: list[str]
             text = path.read_bytes()
             for secret in secrets_:
                 assert secret.encode() not in text, (path, secret[:12])
-
-
-def test_the_lti_routes_are_served_through_nginx(deployed):
-    """deploy/start.sh serves asgi.py: the tool's keyset and a refused login reach a
-    platform through the proxy, from every process alike (one tool key)."""
-    keys = set()
-    for base in [deployed.proxy] + [f"http://127.0.0.1:{port}" for port in deployed.ports]:
-        with urllib.request.urlopen(f"{base}/lti/jwks", timeout=10) as answer:
-            keys.add(json.load(answer)["keys"][0]["kid"])
-    assert len(keys) == 1
-    with pytest.raises(urllib.error.HTTPError) as refused:
-        urllib.request.urlopen(f"{deployed.proxy}/lti/login?iss=https://nobody.example&login_hint=x",
-                               timeout=10)
-    assert refused.value.code == 400
 
 
 def test_a_class_load_with_the_database_stopped_loses_nothing():
