@@ -190,7 +190,8 @@ def _hash(key: str) -> str:
     return hashlib.sha256(key.encode()).hexdigest()
 
 
-def _aware(moment: datetime) -> datetime:
+def aware(moment: datetime) -> datetime:
+    """A time read back from the store, with its zone (SQLite keeps none)."""
     return moment if moment.tzinfo else moment.replace(tzinfo=UTC)  # SQLite keeps no zone
 
 
@@ -223,9 +224,9 @@ def find(code: str, url: str | None = None) -> Class:
         row = db.execute(sa.select(classes).where(classes.c.code == code)).first()
     if row is None:
         raise ClassError(Text("class.no_code", code=code))
-    if _aware(row.expires) < _now():
+    if aware(row.expires) < _now():
         raise ClassError(Text("class.expired", code=code))
-    return Class(row.id, row.code, row.scene, row.method, row.at, row.variants, _aware(row.expires))
+    return Class(row.id, row.code, row.scene, row.method, row.at, row.variants, aware(row.expires))
 
 
 @_reachable
@@ -403,7 +404,7 @@ def as_jsonl(rows: list[dict]) -> str:
 def _row(r, nickname: str) -> dict:
     return {"student": r.student, "nickname": nickname, "step": r.step,
             "answer": json.loads(r.answer), "diagnosis": r.diagnosis, "term": r.term or "",
-            "try": r._mapping["try"], "time": _aware(r.time).isoformat(), "variant": r.variant,
+            "try": r._mapping["try"], "time": aware(r.time).isoformat(), "variant": r.variant,
             "check": r.check_id}
 
 

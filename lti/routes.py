@@ -25,7 +25,7 @@ from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Re
 from starlette.routing import Route
 
 from classes.steps import practice_link
-from classes.store import StoreDown, find
+from classes.store import METHODS, StoreDown, find
 from mechanisms import SceneError, load_preset, preset_ids
 from mechanisms.messages import KEEP, Text, strings
 from methods.practice_steps import steps_for
@@ -34,7 +34,7 @@ from . import keys, store
 from .launch import CLAIM, DEEP, DEEP_LINKING, Launch, checked
 from .store import LtiError
 
-METHODS = ("plans", "compass", "forces", "lever", "willis", "balance")
+PICKED = "plans"  # the picker's method until the lecturer chooses another
 PICKER_STYLE = ("body{font-family:'Source Sans Pro',system-ui,sans-serif;max-width:44rem;"
                 "margin:2rem auto;padding:0 1rem;color:#262730}h1{font-size:1.5rem}"
                 "label{display:block;font-weight:600}select{display:block;width:100%;"
@@ -107,9 +107,7 @@ def go(request: Request, said: Launch) -> Response:
     """A resource link's launch: its class (made at its first launch), then a learner to
     practise, an instructor to the class's live view."""
     task, method = said.custom.get("task", ""), said.custom.get("method", "")
-    problem = unusable(task, method)
-    if problem is not None:
-        return refused(problem)
+    practised(task, method)
     link = store.link_class(said.platform, said.context, said.resource_link, task, method)
     base = base_url(request)
     if said.instructor:
@@ -121,15 +119,19 @@ def go(request: Request, said: Launch) -> Response:
     return RedirectResponse(f"{base}/{page}?{urllib.parse.urlencode(params)}", 303)
 
 
-def unusable(task: str, method: str) -> Text | None:
-    """Why a link's task and method cannot be practised, or None."""
+def practised(task: str, method: str) -> tuple[object, list]:
+    """A link's task (its scene) and the steps its method has there; LtiError in words
+    when they cannot be practised."""
     if method not in METHODS:
-        return Text("lti.no_method", method=method or "—", methods=", ".join(METHODS))
+        raise LtiError(Text("lti.no_method", method=method or "—", methods=", ".join(METHODS)))
     try:
-        steps = steps_for(load_preset(task), method)
+        scene = load_preset(task)
+        steps = steps_for(scene, method)
     except (SceneError, ValueError, KeyError) as exc:
-        return Text("lti.no_task", task=task or "—", why=str(exc))
-    return None if steps else Text("lti.no_task", task=task, why="no steps")
+        raise LtiError(Text("lti.no_task", task=task or "—", why=str(exc))) from None
+    if not steps:
+        raise LtiError(Text("lti.no_task", task=task, why="no steps"))
+    return scene, steps
 
 
 def picker(request: Request, said: Launch) -> Response:
@@ -141,11 +143,11 @@ def picker(request: Request, said: Launch) -> Response:
                          "return": said.deep_return, "data": said.deep_data,
                          "locale": said.locale}, lifetime=3600)
     sr = said.locale == "sr"
-    titles = {p: title(p, sr) for p in preset_ids()}
+    titles = {p: title(load_preset(p), sr) for p in preset_ids()}
     tasks = "".join(f"<option value='{html.escape(p)}'>{html.escape(titles[p])}</option>"
                     for p in sorted(titles))
-    methods = "".join(f"<option value='{m}'>{html.escape(method_name(m, sr))}</option>"
-                      for m in METHODS)
+    methods = "".join(f"<option value='{m}'{' selected' if m == PICKED else ''}>"
+                      f"{html.escape(method_name(m, sr))}</option>" for m in METHODS)
     words = strings("sr" if sr else "en")
     return HTMLResponse(
         "<!DOCTYPE html><html><head><meta charset='utf-8'><title>Mehanizmi</title>"
@@ -159,9 +161,9 @@ def picker(request: Request, said: Launch) -> Response:
         "</form></body></html>")
 
 
-def title(preset: str, serbian: bool) -> str:
-    scene = load_preset(preset)
-    return f"{preset} — {(scene.title_sr if serbian and getattr(scene, 'title_sr', '') else scene.title)}"
+def title(scene, serbian: bool) -> str:
+    """"id — title" of a preset, in Serbian where it has a Serbian title."""
+    return f"{scene.id} — {(scene.title_sr if serbian and getattr(scene, 'title_sr', '') else scene.title)}"
 
 
 def method_name(method: str, serbian: bool) -> str:
@@ -181,12 +183,12 @@ async def deeplink(request: Request) -> Response:
     except LtiError as exc:
         return refused(exc.args[0])
     task, method = str(form.get("task", "")), str(form.get("method", ""))
-    problem = unusable(task, method)
-    if problem is not None:
-        return refused(problem)
+    try:
+        scene, steps = practised(task, method)
+    except LtiError as exc:
+        return refused(exc.args[0])
     serbian = context.get("locale") == "sr"
-    name = f"{method_name(method, serbian)}: {title(task, serbian)}"
-    steps = len(steps_for(load_preset(task), method))
+    name = f"{method_name(method, serbian)}: {title(scene, serbian)}"
     claims = {"iss": found.client_id, "aud": found.issuer, "azp": found.client_id,
               "nonce": secrets.token_urlsafe(16),
               CLAIM + "message_type": "LtiDeepLinkingResponse", CLAIM + "version": "1.3.0",
@@ -195,7 +197,7 @@ async def deeplink(request: Request) -> Response:
                   "type": "ltiResourceLink", "title": name,
                   "url": f"{base_url(request)}/lti/launch",
                   "custom": {"task": task, "method": method},
-                  "lineItem": {"scoreMaximum": steps, "label": name}}]}
+                  "lineItem": {"scoreMaximum": len(steps), "label": name}}]}
     if context.get("data"):
         claims[DEEP + "data"] = context["data"]
     response = keys.sign(claims)

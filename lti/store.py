@@ -13,7 +13,7 @@ from datetime import UTC, datetime, timedelta
 import sqlalchemy as sa
 
 from classes import store
-from classes.store import ClassError, engine
+from classes.store import ClassError, aware, engine
 from mechanisms.messages import Text
 
 from . import keys
@@ -64,14 +64,6 @@ class Platform:
     deployments: tuple[str, ...]
 
 
-def _now() -> datetime:
-    return datetime.now(UTC)
-
-
-def _aware(moment: datetime) -> datetime:
-    return moment if moment.tzinfo else moment.replace(tzinfo=UTC)  # SQLite keeps no zone
-
-
 def add_platform(issuer: str, client_id: str, deployment: str, auth_url: str, token_url: str,
                  jwks_url: str, url: str | None = None) -> Platform:
     """Register a platform (or add a deployment to one registered): once per Moodle site."""
@@ -81,7 +73,7 @@ def add_platform(issuer: str, client_id: str, deployment: str, auth_url: str, to
         if found is None:
             found = db.execute(platforms.insert().values(
                 issuer=issuer, client_id=client_id, auth_url=auth_url, token_url=token_url,
-                jwks_url=jwks_url, created=_now()).returning(platforms.c.id)).scalar()
+                jwks_url=jwks_url, created=datetime.now(UTC)).returning(platforms.c.id)).scalar()
         else:
             db.execute(platforms.update().where(platforms.c.id == found).values(
                 auth_url=auth_url, token_url=token_url, jwks_url=jwks_url))
@@ -146,9 +138,9 @@ def new_state(found: Platform, url: str | None = None) -> tuple[str, str]:
     """A login's one-use ``state`` and ``nonce``, kept until its launch (or ten minutes)."""
     state, nonce = secrets.token_urlsafe(32), secrets.token_urlsafe(32)
     with engine(url).begin() as db:
-        db.execute(states.delete().where(states.c.expires < _now()))
+        db.execute(states.delete().where(states.c.expires < datetime.now(UTC)))
         db.execute(states.insert().values(state=state, nonce=nonce, platform_id=found.id,
-                                          expires=_now() + STATE_LIFETIME))
+                                          expires=datetime.now(UTC) + STATE_LIFETIME))
     return state, nonce
 
 
@@ -158,7 +150,7 @@ def take_state(state: str, url: str | None = None) -> tuple[int, str]:
     with engine(url).begin() as db:
         row = db.execute(sa.select(states).where(states.c.state == state)).first()
         taken = db.execute(states.delete().where(states.c.state == state)).rowcount
-    if row is None or taken != 1 or _aware(row.expires) < _now():
+    if row is None or taken != 1 or aware(row.expires) < datetime.now(UTC):
         raise LtiError(Text("lti.state"))
     return row.platform_id, row.nonce
 

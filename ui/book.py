@@ -148,6 +148,11 @@ def _both(what: str, now: str, book: str) -> str:
     return t("book.diff_value", what=what, now=now, book=book)
 
 
+def _changed(what: str, now: float, book: float, unit: str) -> str:
+    """A number the student changed, both values with their unit."""
+    return _both(what, f"{num(now, 6)} {unit}", f"{num(book, 6)} {unit}")
+
+
 def rotor_changes(rotor, base) -> list[str]:
     """What a rotor page's inputs changed of the task (each value with its unit)."""
     said = []
@@ -162,17 +167,16 @@ def rotor_changes(rotor, base) -> list[str]:
             a, b = getattr(now, name), getattr(old, name)
             if a != b:
                 a, b = (math.degrees(a), math.degrees(b)) if factor is None else (a * factor, b * factor)
-                said.append(_both(f"{t('book.mass_n', n=n)}: {symbol_}", f"{num(a, 6)} {unit}",
-                                  f"{num(b, 6)} {unit}"))
+                said.append(_changed(f"{t('book.mass_n', n=n)}: {symbol_}", a, b, unit))
     for plane, x in rotor.planes.items():
         if plane in base.planes and x != base.planes[plane]:
-            said.append(_both(f"x_{plane}", f"{num(x * 1e3, 6)} mm", f"{num(base.planes[plane] * 1e3, 6)} mm"))
+            said.append(_changed(f"x_{plane}", x * 1e3, base.planes[plane] * 1e3, "mm"))
     for plane, c in rotor.corrections.items():
         old = base.corrections.get(plane)
         if old is not None and c != old:
             said.append(_both(t("book.correction", plane=plane), _given(c), _given(old)))
     if rotor.omega != base.omega and base.omega is not None:
-        said.append(_both("ω", f"{num(rotor.omega, 6)} rad/s", f"{num(base.omega, 6)} rad/s"))
+        said.append(_changed("ω", rotor.omega, base.omega, "rad/s"))
     return said
 
 
@@ -185,17 +189,16 @@ def train_changes(train, base) -> list[str]:
     said = []
     for now, old in zip(train.inputs, base.inputs):
         if now.velocity is not None and now.velocity != old.velocity:
-            said.append(_both(f"v ({t('book.member', member=now.member)})",
-                              f"{num(now.velocity, 6)} m/s", f"{num(old.velocity, 6)} m/s"))
+            said.append(_changed(f"v ({t('book.member', member=now.member)})", now.velocity,
+                                 old.velocity, "m/s"))
         elif now.velocity is None and now.omega != old.omega:
-            said.append(_both(f"ω{str(now.member).translate(SUBSCRIPT)}",
-                              f"{num(now.omega, 6)} s⁻¹", f"{num(old.omega, 6)} s⁻¹"))
+            said.append(_changed(f"ω{str(now.member).translate(SUBSCRIPT)}", now.omega, old.omega,
+                                 "s⁻¹"))
     for now, old in zip(train.meshes, base.meshes):
         for member, a, b in zip(now.members, now.radii, old.radii):
             if a != b:
-                said.append(_both(f"R ({t('book.mesh', a=now.members[0], b=now.members[1])}, "
-                                  f"{t('book.member', member=member)})",
-                                  f"{num(a, 6)} m", f"{num(b, 6)} m"))
+                said.append(_changed(f"R ({t('book.mesh', a=now.members[0], b=now.members[1])}, "
+                                     f"{t('book.member', member=member)})", a, b, "m"))
     return said
 
 
@@ -217,7 +220,7 @@ def changes(scene, base) -> list[str]:
         for field, (name, unit) in TRAVEL_GIVEN.items():
             now, book = getattr(scene.travel, field), getattr(base.travel, field)
             if now != book:
-                said.append(_both(name, f"{num(now, 6)} {unit}", f"{num(book, 6)} {unit}"))
+                said.append(_changed(name, now, book, unit))
     if scene.inertia != base.inertia:
         said.append(t("book.diff_inertia_on" if scene.inertia else "book.diff_inertia_off"))
     if scene.gravity != base.gravity:

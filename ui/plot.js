@@ -244,8 +244,6 @@ function handle(gd, name) {
   };
 }
 
-// What a page asks to have on the screen once this chart is drawn (spec.focus: "selector|n"),
-// once for each n: practice's step prompt after a check or a move.
 // A practice sheet (its layout's meta.fine: the drawing's tolerance in the sheet's units, and
 // a view name) opens each step, and comes back after each drag, centred on the student's own
 // tip (never on the answer) at a zoom where the tolerance is FINE_PX screen pixels or more: a
@@ -268,6 +266,8 @@ function fine(gd, spec) {
                              "yaxis.range": [y - half[1], y + half[1]] });
 }
 
+// What a page asks to have on the screen once this chart is drawn (spec.focus: "selector|n"),
+// once for each n: practice's step prompt after a check or a move.
 function focus(gd, spec) {
   if (!spec.focus || spec.focus === gd.__focused) return;
   gd.__focused = spec.focus;
