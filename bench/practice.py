@@ -15,7 +15,7 @@ sys.path.insert(0, str(ROOT))
 
 from cli.practice import steps_for  # noqa: E402
 from mechanisms import load_preset  # noqa: E402
-from methods.practice import Progress  # noqa: E402
+from methods.progress import Progress  # noqa: E402
 
 RUNS = (("plans", "zbirka-3.1"), ("compass", "zbirka-1.1"), ("forces", "zbirka-5.1"),
         ("lever", "zbirka-5.1"), ("willis", "zbirka-6.4"), ("balance", "zbirka-7.1"))

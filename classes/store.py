@@ -33,6 +33,7 @@ from exams.codes import CHECK_LETTERS, parse
 from exams.codes import code as variant_code
 from mechanisms.messages import Text
 from methods.practice import finite
+from methods.progress import PRACTICE, REVEALED, TEST, Rules  # (REVEALED: a "Show it" check's diagnosis)
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = Path(os.environ.get("MEHANIZMI_DATA", ROOT / "data"))  # the SQLite file's folder
@@ -45,7 +46,6 @@ PER_SECOND = 5  # checks a student may send in a second; more are slowed, not re
 METHODS = ("compass", "plans", "forces", "lever", "willis", "balance")
 FIELDS = ("student", "nickname", "step", "answer", "diagnosis", "term", "try", "time",
           "variant", "check")  # of every try exported, in this order
-REVEALED = "revealed"  # a check's diagnosis when the student asked to be shown the step
 
 metadata = sa.MetaData()
 classes = sa.Table(
@@ -58,7 +58,10 @@ classes = sa.Table(
     sa.Column("at", sa.Float),  # φ₂ in degrees (or s in m); None: the scene's own
     sa.Column("variants", sa.String(64)),  # a variant set's code (exams.codes), or None
     sa.Column("created", sa.DateTime(timezone=True), nullable=False),
-    sa.Column("expires", sa.DateTime(timezone=True), nullable=False, index=True))
+    sa.Column("expires", sa.DateTime(timezone=True), nullable=False, index=True),
+    sa.Column("test", sa.Boolean, nullable=False, server_default=sa.false()),  # (0005)
+    sa.Column("closed", sa.DateTime(timezone=True)),  # a test's verdicts shown from then (0005)
+    sa.Column("deleted", sa.DateTime(timezone=True)))  # by its lecturer: said so (0005)
 students = sa.Table(
     "students", metadata,
     sa.Column("id", sa.String(32), primary_key=True),  # the token in the student's link
@@ -87,6 +90,10 @@ checks = sa.Table(
 
 class ClassError(ValueError):
     """A wrong, expired or mistyped code or key, an unknown student: ``args[0]`` is a Text."""
+
+
+class OneTry(ClassError):
+    """A second try of a step in a test: refused in words, not stored."""
 
 
 class NotSaved(RuntimeError):
@@ -119,6 +126,19 @@ class Class:
     at: float | None
     variants: str | None
     expires: datetime
+    test: bool = False  # one try a step, no hints; verdicts shown once ``closed``
+    closed: datetime | None = None
+
+    @property
+    def rules(self) -> Rules:
+        """How the class's steps are settled (methods.progress)."""
+        return TEST if self.test else PRACTICE
+
+    @property
+    def verdicts_shown(self) -> bool:
+        """Whether a student sees the verdicts of their checks: always in practice, once
+        the lecturer closed it in a test."""
+        return not self.test or self.closed is not None
 
 
 def variant_of(found: Class, variant: int | None) -> str | None:
@@ -198,9 +218,10 @@ def aware(moment: datetime) -> datetime:
 @_reachable
 def create(scene: str, method: str, at: float | None = None, variants: str | None = None,
            days: int = LIFETIME_DAYS, url: str | None = None,
-           key: str | None = None) -> tuple[str, str]:
+           key: str | None = None, test: bool = False) -> tuple[str, str]:
     """A new class: (join code, lecturer key). The key is shown once; only its hash stays.
-    ``key``: one the caller derives again when needed (an LTI link's, lti/keys.py)."""
+    ``key``: one the caller derives again when needed (an LTI link's, lti/keys.py);
+    ``test``: one try a step, no hints, verdicts shown once the lecturer closes it."""
     if method not in METHODS:
         raise ClassError(Text("class.no_method", method=method, methods=", ".join(METHODS)))
     key = key or secrets.token_hex(16)  # (hex: never a leading '-', which a command line takes for an option)
@@ -211,7 +232,7 @@ def create(scene: str, method: str, at: float | None = None, variants: str | Non
                 break
         db.execute(classes.insert().values(
             code=code, key_hash=_hash(key), scene=scene, method=method, at=at,
-            variants=variants, created=_now(), expires=_now() + timedelta(days=days)))
+            variants=variants, created=_now(), expires=_now() + timedelta(days=days), test=test))
     return code, key
 
 
@@ -224,9 +245,12 @@ def find(code: str, url: str | None = None) -> Class:
         row = db.execute(sa.select(classes).where(classes.c.code == code)).first()
     if row is None:
         raise ClassError(Text("class.no_code", code=code))
+    if row.deleted is not None:
+        raise ClassError(Text("class.deleted", code=code))
     if aware(row.expires) < _now():
         raise ClassError(Text("class.expired", code=code))
-    return Class(row.id, row.code, row.scene, row.method, row.at, row.variants, aware(row.expires))
+    return Class(row.id, row.code, row.scene, row.method, row.at, row.variants, aware(row.expires),
+                 bool(row.test), aware(row.closed) if row.closed else None)
 
 
 @_reachable
@@ -275,6 +299,16 @@ def _student(found: Class, token: str, url: str | None) -> dict:
     return {"student": row.id, "nickname": row.nickname, "variant": row.variant}
 
 
+@_reachable
+def roster(found: Class, url: str | None = None) -> dict[str, str]:
+    """Every student of the class (``found`` from ``opened``): token → nickname, in the
+    order they joined."""
+    with engine(url).connect() as db:
+        rows = db.execute(sa.select(students.c.id, students.c.nickname)
+                          .where(students.c.class_id == found.id).order_by(students.c.joined)).all()
+    return {r.id: r.nickname for r in rows}
+
+
 def new_check() -> str:
     """A check's id, made where the check is made (the page, the command line) and kept
     until the store has it: the same id sent again is the same check."""
@@ -307,6 +341,8 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
         raise ClassError(Text("class.too_long"))
     try:
         found = find(code, url)
+        if found.test and diagnosis == REVEALED:
+            raise OneTry(Text("class.one_try", step=step))
         who = _student(found, token, url)
         if variant is None:  # in a class of variants, the student's own
             variant = variant_of(found, who["variant"])
@@ -319,11 +355,13 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
         for _ in range(RACES):
             try:
                 with made.begin() as db:
-                    return db.execute(_numbered(values)).scalar_one()
+                    return db.execute(_numbered(values, first=found.test)).scalar_one()
             except sa.exc.IntegrityError:  # this check sent again, or a number taken meanwhile
                 stored = _stored_try(made, check)
                 if stored is not None:
                     return stored  # the same check, stored by an earlier sending
+                if found.test:  # a test's step has one try, and it is taken
+                    raise OneTry(Text("class.one_try", step=step)) from None
         raise NotSaved("too many checks of this step at once")
     except StoreDown as exc:
         raise NotSaved(exc.args[-1]) from None
@@ -334,11 +372,13 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
 RACES = 8  # tries at numbering a check when others of the same step are stored at once
 
 
-def _numbered(values: dict):
+def _numbered(values: dict, first: bool = False):
     """The INSERT of one check whose try number is the next of its student's step, counted
     in the same statement (two checks at once collide on the unique number, and one of
-    them numbers again)."""
-    after = (sa.select(sa.func.coalesce(sa.func.max(checks.c["try"]), 0) + 1)
+    them numbers again). ``first``: only a first try (a test's), which collides with any
+    earlier one."""
+    after = (sa.literal(1) if first else
+             sa.select(sa.func.coalesce(sa.func.max(checks.c["try"]), 0) + 1)
              .where(checks.c.student == values["student"], checks.c.step == values["step"])
              .scalar_subquery())
     columns = [*values, "try"]
@@ -409,11 +449,25 @@ def _row(r, nickname: str) -> dict:
 
 
 @_reachable
+def close(code: str, key: str, url: str | None = None) -> Class:
+    """A test closed by its lecturer: its students see their verdicts from now on (a
+    class that is not a test, or closed already, is left as it is)."""
+    found = opened(code, key, url)
+    if found.test and found.closed is None:
+        with engine(url).begin() as db:
+            db.execute(classes.update().where(classes.c.id == found.id).values(closed=_now()))
+    return find(code, url)
+
+
+@_reachable
 def delete(code: str, key: str, url: str | None = None) -> None:
-    """The class and everything stored of it, at once (its lecturer's key)."""
+    """Everything stored of the class, at once (its lecturer's key). Its code is kept,
+    marked deleted until it would have expired, so that a student's link says so."""
     found = opened(code, key, url)
     with engine(url).begin() as db:
-        _remove(db, sa.select(classes.c.id).where(classes.c.id == found.id))
+        db.execute(checks.delete().where(checks.c.class_id == found.id))
+        db.execute(students.delete().where(students.c.class_id == found.id))
+        db.execute(classes.update().where(classes.c.id == found.id).values(deleted=_now()))
 
 
 @_reachable

@@ -11,9 +11,11 @@ from __future__ import annotations
 from collections import Counter, defaultdict
 from dataclasses import dataclass, field
 
-from methods.practice import DIAGNOSES, TRIES
+from methods.practice import DIAGNOSES
+from methods.progress import PRACTICE, REVEALED, Progress, Rules, Try
 
-from .store import REVEALED
+from .steps import steps_of
+from .store import Class
 
 
 @dataclass
@@ -23,6 +25,7 @@ class StepCount:
     first: int = 0  # right at their first try
     later: int = 0  # right after hints
     revealed: int = 0  # shown it: asked, or three tries none right
+    wrong: int = 0  # in a test: its one try not right
     first_tries: Counter = field(default_factory=Counter)  # diagnosis → students ("none": shown untried)
     mistakes: Counter = field(default_factory=Counter)  # (diagnosis, term) → students who made it
 
@@ -38,71 +41,98 @@ class StepCount:
         return most, sorted(tied, key=lambda m: (DIAGNOSES.index(m[0]), m[1]))
 
 
-def by_student(rows: list[dict]) -> dict[tuple[str, str], list[dict]]:
-    """(step, student) → that student's tries of the step, in the order they were made."""
-    out: dict[tuple[str, str], list[dict]] = defaultdict(list)
-    for row in sorted(rows, key=lambda r: (r["try"], r.get("id", 0))):
-        out[(row["step"], row["student"])].append(row)
-    return out
+def tried(rows: list[dict]) -> list[Try]:
+    """Stored checks as tries, in the order the store numbered them (by try within a step,
+    then by check number): the order every fold of them takes."""
+    return [Try(r["step"], r["diagnosis"], r["answer"], r.get("term") or "", r.get("check", ""))
+            for r in sorted(rows, key=lambda r: (r["try"], r.get("id", 0)))]
 
 
-def outcome(tries: list[dict]) -> str:
-    """A student's tries of one step, as the practice panel scores them: "first" (right at
-    the first try), "later" (after hints), "revealed" (shown: asked, or three tries none
-    right) or "open"."""
-    graded = [r for r in tries if r["diagnosis"] != REVEALED]
-    if graded and graded[0]["diagnosis"] == "ok":
-        return "first"
-    if any(r["diagnosis"] == "ok" for r in graded):
-        return "later"
-    return "revealed" if len(graded) >= TRIES or len(graded) < len(tries) else "open"
+def progress(rows: list[dict], rules: Rules = PRACTICE) -> dict[str, Progress]:
+    """Each student's progress (methods.progress's fold) from their stored checks: what their
+    page, this view, ``class summary`` and the gradebook all say."""
+    mine: dict[str, list[dict]] = defaultdict(list)
+    for row in rows:
+        mine[row["student"]].append(row)
+    return {student: Progress.of(tried(own), rules) for student, own in mine.items()}
 
 
-def counts(rows: list[dict], steps: list[str]) -> list[StepCount]:
-    """One StepCount per step id of ``steps``, in that order (a step nobody tried: zeros)."""
+def counts(rows: list[dict], steps: list[str], rules: Rules = PRACTICE) -> list[StepCount]:
+    """One StepCount per step id of ``steps``, in that order (a step nobody tried: zeros).
+    Only the tries that counted are counted: one made after the step was settled (a stale
+    phone's) is no mistake and no first try."""
     out = {step: StepCount(step) for step in steps}
-    for (step, _), tries in by_student(rows).items():
-        if step not in out:
-            continue  # a step of another variant's list, or of an older version of the method
-        count = out[step]
-        count.reached += 1
-        graded = [r for r in tries if r["diagnosis"] != REVEALED]
-        count.first_tries[graded[0]["diagnosis"] if graded else "none"] += 1
-        done = outcome(tries)
-        if done != "open":
-            setattr(count, done, getattr(count, done) + 1)
-        for made in {(r["diagnosis"], r.get("term", "")) for r in graded
-                     if r["diagnosis"] not in ("ok", "none")}:
-            count.mistakes[made] += 1
+    for student in progress(rows, rules).values():
+        for step, record in student.records.items():
+            if step not in out or not record.counted:
+                continue  # a step of another variant's list, or of an older version of the method
+            count = out[step]
+            count.reached += 1
+            count.first_tries[record.counted[0].diagnosis if record.counted[0].diagnosis != REVEALED
+                              else "none"] += 1
+            if record.done:
+                setattr(count, record.outcome, getattr(count, record.outcome) + 1)
+            for made in {(r.diagnosis, r.term) for r in record.graded if not r.ok}:
+                count.mistakes[made] += 1
     return [out[step] for step in steps]
 
 
-def latest(rows: list[dict], step: str) -> dict[str, dict]:
-    """Each student's latest answer to ``step`` (a try, not a "Show it"): what the class view
-    draws as the cloud."""
+def latest(rows: list[dict], step: str, rules: Rules = PRACTICE) -> dict[str, dict]:
+    """Each student's latest answer to ``step`` that counted (a try, not a "Show it"): what
+    the class view draws as the cloud."""
+    by_check = {r.get("check", ""): r for r in rows}
     out = {}
-    for (name, student), tries in by_student(rows).items():
-        graded = [r for r in tries if r["diagnosis"] != REVEALED and r["answer"] is not None]
-        if name == step and graded:
-            out[student] = graded[-1]
+    for student, own in progress([r for r in rows if r["step"] == step], rules).items():
+        graded = [t for t in own.record(step).graded if t.answer is not None]
+        if graded:
+            out[student] = by_check[graded[-1].check]
     return out
 
 
-def students(rows: list[dict], steps: list[str]) -> list[dict]:
-    """Each student: nickname, steps done (right or shown) and first-try score, in the order
-    they first checked."""
-    table: dict[str, dict] = {}
-    for (step, student), tries in by_student(rows).items():
-        if step not in steps:
-            continue
-        row = table.setdefault(student, {"nickname": tries[0]["nickname"], "done": 0, "first": 0,
-                                         "since": min(r.get("id", 0) for r in tries)})
-        row["since"] = min(row["since"], min(r.get("id", 0) for r in tries))
-        done = outcome(tries)
-        row["done"] += done != "open"
-        row["first"] += done == "first"
-    ordered = sorted(table.values(), key=lambda r: r["since"])
-    return [{k: v for k, v in r.items() if k != "since"} for r in ordered]
+def students(rows: list[dict], steps: list[str], rules: Rules = PRACTICE) -> list[dict]:
+    """Each student: nickname, steps done (settled any way) and right at the first try, in
+    the order they first checked."""
+    first_seen: dict[str, tuple[int, str]] = {}
+    for row in rows:
+        if row["step"] in steps:
+            seen = first_seen.get(row["student"])
+            if seen is None or row.get("id", 0) < seen[0]:
+                first_seen[row["student"]] = (row.get("id", 0), row["nickname"])
+    folded = progress(rows, rules)
+    out = []
+    for student, (_, nickname) in sorted(first_seen.items(), key=lambda kv: kv[1][0]):
+        said = folded[student].score(steps)
+        out.append({"nickname": nickname, "done": said["of"] - said["open"], "first": said["first"]})
+    return out
+
+
+def report(rows: list[dict], steps: list[str], rules: Rules = PRACTICE,
+           everyone: dict[str, str] | None = None) -> list[dict]:
+    """Per student (``everyone``: token → nickname, those who joined and never checked
+    too): each step's outcome and the score a gradebook gets — ``class summary``'s rows,
+    and what lti.grades sends."""
+    folded = progress(rows, rules)
+    names = dict(everyone or {})
+    for row in rows:
+        names.setdefault(row["student"], row["nickname"])
+    out = []
+    for student, nickname in names.items():
+        own = folded.get(student, Progress(rules))
+        said = own.score(steps)
+        out.append({"student": student, "nickname": nickname,
+                    "steps": {step: own.outcome(step) for step in steps},
+                    "score": {"right": said["right"], "done": said["of"] - said["open"],
+                              "of": said["of"]}})
+    return out
+
+
+def of_class(found: Class, rows: list[dict], everyone: dict[str, str]) -> dict:
+    """A class's summary as ``class summary --json`` prints it and the live view's download
+    gives it: the steps, and per student each step's outcome and the score (``report``)."""
+    steps = [s.id for s in steps_of(found, 1 if found.variants else None)]
+    return {"code": found.code, "method": found.method, "scene": found.scene, "at": found.at,
+            "test": found.test, "closed": found.closed.isoformat() if found.closed else None,
+            "steps": steps, "students": report(rows, steps, found.rules, everyone)}
 
 
 def bands(values: dict[str, float], count: int = 3) -> dict[str, tuple[float, float]]:

@@ -8,9 +8,12 @@ from __future__ import annotations
 import json
 import sys
 
-from classes import store
+from classes import store, summary
 from classes.steps import steps_of
 from classes.store import variant_of
+from lti.grades import rescore
+from mechanisms.messages import Text, strings
+from methods.progress import Progress, score
 from mechanisms import SceneError, load_preset
 from mechanisms.link import PARAMETER
 
@@ -26,6 +29,9 @@ def add(sub) -> None:
     v.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres")
     v.add_argument("--variants", metavar="SET", help="a variant set's code (3.1-S42): each "
                                                      "student who joins gets the next variant")
+    v.add_argument("--test", action="store_true",
+                   help="a test: one try a step, no hints or 'Show it'; the verdicts shown "
+                        "to the students when you close it (class close)")
     v.add_argument("--json", action="store_true")
     v.set_defaults(run=_create)
     v = verbs.add_parser("join", help="join a class by its code: the student's id")
@@ -38,6 +44,17 @@ def add(sub) -> None:
     v.add_argument("--key", required=True)
     v.add_argument("--format", choices=("csv", "jsonl"), default="jsonl")
     v.set_defaults(run=_export)
+    v = verbs.add_parser("summary", help="per student, per step the outcome (right at the first "
+                                         "try, after hints, shown, wrong, open) and the score "
+                                         "a gradebook gets")
+    v.add_argument("code")
+    v.add_argument("--key", required=True)
+    v.add_argument("--json", action="store_true")
+    v.set_defaults(run=_summary)
+    v = verbs.add_parser("close", help="close a test: its students see their verdicts")
+    v.add_argument("code")
+    v.add_argument("--key", required=True)
+    v.set_defaults(run=_close)
     v = verbs.add_parser("delete", help="the class and all it stored, at once")
     v.add_argument("code")
     v.add_argument("--key", required=True)
@@ -52,7 +69,7 @@ def add(sub) -> None:
 def _create(args) -> int:
     if not args.scene.startswith(f"{PARAMETER}="):
         load_preset(args.scene)  # an unknown preset: SceneError, exit code 2
-    code, key = store.create(args.scene, args.method, args.at, args.variants)
+    code, key = store.create(args.scene, args.method, args.at, args.variants, test=args.test)
     join = f"/class?join={code}"
     if args.json:
         print(json.dumps({"code": code, "key": key, "join": join}))
@@ -70,6 +87,31 @@ def _join(args) -> int:
 def _export(args) -> int:
     rows = store.export(args.code, args.key)
     sys.stdout.write(store.as_jsonl(rows) if args.format == "jsonl" else store.as_csv(rows))
+    return 0
+
+
+def _summary(args) -> int:
+    found = store.opened(args.code, args.key)
+    said = summary.of_class(found, store.export(args.code, args.key), store.roster(found))
+    if args.json:
+        print(json.dumps(said, ensure_ascii=False, allow_nan=False))
+        return 0
+    print(f"class {found.code}: {found.method} on {found.scene[:60]}"
+          + (" (a test, closed)" if found.test and found.closed else " (a test, open)" if found.test else ""))
+    for row in said["students"]:
+        score = row["score"]
+        print(f"{row['nickname']} ({row['student'][:8]}…): {score['right']} of {score['of']} right, "
+              f"{score['done']} done — " + ", ".join(f"{step} {outcome}" for step, outcome in row["steps"].items()))
+    return 0
+
+
+def _close(args) -> int:
+    found = store.close(args.code, args.key)
+    if not found.test:
+        print(f"{found.code} is not a test: its students see their verdicts already")
+        return 0
+    rescore(found.code)  # a Moodle activity's scores go now
+    print(f"closed {found.code}: its students now see their verdicts")
     return 0
 
 
@@ -92,13 +134,35 @@ def _migrate(args) -> int:
 def stored(data: dict, code: str, token: str, answers: dict) -> dict[str, int]:
     """A graded answers file's checks, stored as the student's: each answered step one
     more try, numbered by the store (a second hand-in is the steps' next tries, never
-    dropped). Step id → the try it was stored as."""
-    out = {}
+    dropped). Step id → the try it was stored as. Then each result says what the class's
+    fold made of it: a try of a step settled before (on a page, by an earlier hand-in)
+    counts for nothing and is said so, and in a test not yet closed no verdict is given.
+    In a test a step already tried is refused whole, before anything is stored (OneTry)."""
+    found = store.find(code)
+    answered = [r["id"] for r in data["results"] if r["id"] in answers]
+    if found.test:
+        again = sorted({r["step"] for r in store.tries(code, token)} & set(answered))
+        if again:
+            raise store.OneTry(Text("class.one_try", step=", ".join(again)))
+    out, checks = {}, {}
     for result in data["results"]:
         if result["id"] in answers:
+            checks[result["id"]] = store.new_check()
             out[result["id"]] = store.record(code, token, result["id"], answers[result["id"]],
-                                             result["diagnosis"], store.new_check(),
+                                             result["diagnosis"], checks[result["id"]],
                                              term=result["term"])
+    folded = Progress.of(summary.tried(store.tries(code, token)), found.rules)
+    for result in data["results"]:
+        result["outcome"] = folded.outcome(result["id"])
+        if not found.verdicts_shown:
+            result.update(diagnosis="stored" if result["id"] in checks else "none", term="",
+                          hint=strings("en")["practice.test_stored"] if result["id"] in checks else "")
+        elif result["id"] in checks and folded.late(checks[result["id"]]):
+            words = strings("en")
+            result["hint"] = words["practice.settled"].format(outcome=words[f"practice.{result['outcome']}"])
+    said = score(folded.records, [r["id"] for r in data["results"]])
+    data["score"] = ({"ok": said["right"], "of": said["of"]} if found.verdicts_shown
+                     else {"done": said["of"] - said["open"], "of": said["of"]})
     return out
 
 

@@ -209,7 +209,10 @@ def _practice(args) -> int:
     for result in data["results"]:
         kept = f" (stored as try {stored[result['id']]})" if result["id"] in stored else ""
         print(f"{result['id']:24s} {result['diagnosis']:12s} {result['hint']}{kept}")
-    print(f"score: {data['score']['ok']} of {data['score']['of']}")
+    if "ok" in data["score"]:
+        print(f"score: {data['score']['ok']} of {data['score']['of']}")
+    else:  # a test not yet closed: no verdicts
+        print(f"stored: {data['score']['done']} of {data['score']['of']} steps answered")
     return 0
 
 

@@ -11,7 +11,8 @@ from pathlib import Path
 from figures.plans import plain
 from mechanisms import SceneError
 from mechanisms.messages import KEEP, strings
-from methods.practice import Progress, Step, Verdict, answer_of, hint_keys, ratio_digits
+from methods.practice import Step, Verdict, answer_of, hint_keys, ratio_digits
+from methods.progress import Progress
 from methods.practice_steps import steps_for
 
 

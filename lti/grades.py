@@ -28,6 +28,7 @@ from datetime import UTC, datetime, timedelta
 import sqlalchemy as sa
 
 from classes import store as classes
+from classes import summary
 from classes.steps import steps_of
 from classes.store import ClassError, engine
 
@@ -68,17 +69,21 @@ def token(found: Platform) -> str:
     return given["access_token"]
 
 
-def score(code: str, student: str, sub: str, url: str | None = None) -> dict:
-    """The learner's score as the store has it now."""
+def score(code: str, student: str, sub: str, url: str | None = None) -> dict | None:
+    """The learner's score as the store has it now: the steps right (first or after hints,
+    not shown) as the one fold says (classes.summary.report, which ``class summary`` prints).
+    None while the class is a test not yet closed: a gradebook shows students their grade,
+    which would be the verdicts the test keeps until then (``rescore`` sends them after)."""
     found = classes.find(code, url)
-    steps = steps_of(found, classes.student(code, student, url)["variant"])
-    settled: dict[str, bool] = {}  # step → right (False: shown by "Show it")
-    for check in classes.tries(code, student, url):
-        if check["step"] not in settled and check["diagnosis"] in ("ok", classes.REVEALED):
-            settled[check["step"]] = check["diagnosis"] == "ok"
-    right, done = sum(settled.values()), len(settled)
-    return {"userId": sub, "scoreGiven": right, "scoreMaximum": len(steps),
-            "activityProgress": "Completed" if done >= len(steps) else "InProgress",
+    if not found.verdicts_shown:
+        return None
+    who = classes.student(code, student, url)
+    steps = [s.id for s in steps_of(found, who["variant"])]
+    (said,) = summary.report(classes.tries(code, student, url), steps, found.rules,
+                             {student: who["nickname"]})
+    done = said["score"]["done"] >= len(steps)
+    return {"userId": sub, "scoreGiven": said["score"]["right"], "scoreMaximum": len(steps),
+            "activityProgress": "Completed" if done else "InProgress",
             "gradingProgress": "FullyGraded",
             "timestamp": datetime.now(UTC).isoformat(timespec="milliseconds")}
 
@@ -112,7 +117,8 @@ def send_due(url: str | None = None) -> int:
     for row in due(url):
         try:
             body = score(row.class_code, row.student, row.sub, url)
-            post(platform_by_id(row.platform_id, url), row.lineitem, body)
+            if body is not None:  # (None: a test not closed; its close sends them all)
+                post(platform_by_id(row.platform_id, url), row.lineitem, body)
         except ClassError:  # the class went: nothing more to send for it
             _mark(row.id, {"scored": row.newest}, url)
         except Exception as exc:  # the platform down or refusing: later, less often
@@ -122,8 +128,15 @@ def send_due(url: str | None = None) -> int:
                            "due": datetime.now(UTC) + timedelta(seconds=wait)}, url)
         else:
             _mark(row.id, {"scored": row.newest, "failures": 0, "due": None}, url)
-            sent += 1
+            sent += body is not None
     return sent
+
+
+def rescore(code: str, url: str | None = None) -> None:
+    """Every learner of the class ``code`` due again (a test just closed: its scores go)."""
+    ids = sa.select(links.c.id).where(links.c.class_code == code).scalar_subquery()
+    with engine(url).begin() as db:
+        db.execute(learners.update().where(learners.c.link_id.in_(ids)).values(scored=0, due=None))
 
 
 def _mark(learner: int, values: dict, url: str | None) -> None:

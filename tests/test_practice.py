@@ -12,7 +12,8 @@ import pytest
 from cli import main
 from cli.practice import steps_for
 from mechanisms import load_preset
-from methods.practice import Progress, Step, Term, grade, hint_keys, polar
+from methods.practice import Step, Term, grade, hint_keys, polar
+from methods.progress import Progress
 
 CASES = [("compass", "zbirka-1.1"), ("plans", "zbirka-3.1"), ("plans", "analitika-2.1"),
          ("plans", "triad-full-turn"), ("forces", "zbirka-5.1"), ("forces", "predavanja-kinetostatika"),

@@ -287,7 +287,7 @@ def test_the_reader_finds_english_words_and_decimal_points():
 def test_the_toolbar_and_the_practice_csv_speak_serbian(language, monkeypatch):
     from cli.practice import steps_for
     from mechanisms import load_preset
-    from methods.practice import Progress
+    from methods.progress import Progress
     from ui import i18n
     from ui.plot import plotly_locales
     from ui.practice import answers_table

@@ -8,8 +8,10 @@ from __future__ import annotations
 import streamlit as st
 
 from classes import store
-from classes.store import ClassError, NotSaved, StoreDown
-from methods.practice import Progress, Step, answer_of, grade
+from classes.store import ClassError, NotSaved, OneTry, StoreDown
+from classes.summary import tried
+from methods.practice import Step, grade
+from methods.progress import Progress
 from ui.boundary import boundary
 from ui.i18n import message, t
 
@@ -84,24 +86,17 @@ def wait_for_store(said: str) -> None:
 
 def resumed(seated: tuple[str, str], steps: list[Step]) -> Progress:
     """The student's progress as the store has it: every try from every tab, phone or hand-in,
-    graded again in the order stored. A store that cannot be reached stops the page with the
-    reason (nothing is started afresh that would hide what the store holds) until it answers."""
-    progress = Progress.start()
-    by_id = {s.id: s for s in steps}
+    folded in the order stored by the one rule (methods.progress) the live view and the
+    gradebook fold them by. A store that cannot be reached stops the page with the reason
+    (nothing is started afresh that would hide what the store holds) until it answers."""
+    known = {s.id for s in steps}
     try:
         checks = store.tries(*seated)
+        rules = store.find(seated[0]).rules
     except StoreDown:
         wait_for_store(t("class.store_down"))
         st.stop()
-    for check in checks:
-        step = by_id.get(check["step"])
-        if step is None:
-            continue
-        if check["diagnosis"] == store.REVEALED:
-            progress.reveal(step)
-        else:
-            progress.give(step, answer_of(check["answer"], step.kind))
-    return progress
+    return Progress.of(tried([c for c in checks if c["step"] in known]), rules)
 
 
 def first_open(steps: list[Step], progress: Progress) -> int:
@@ -113,33 +108,58 @@ def first_open(steps: list[Step], progress: Progress) -> int:
 def give(state: dict, step: Step, answer) -> None:
     """A check: graded, stored (in a class) and only then counted and shown. In a class the
     progress is then the store's — every tab's and phone's tries in the order stored — and
-    this device shows the verdict stored for its own check. (``state``: the page's practice
-    run, ui.practice, with its ``steps``.)"""
-    seated = state["seat"]
-    if seated is None or state["progress"].done(step):
-        state["mine"][step.id] = state["progress"].give(step, answer)
+    this device is told its own check's verdict, or, when another device had settled the
+    step before it reached the store, that it was already done there (stored, but counting
+    for nothing: never "right" for a wrong value)."""
+    progress: Progress = state["progress"]
+    if progress.done(step):  # this device knows the step is settled: nothing to grade
+        state["mine"][step.id] = DONE_HERE
         return
     verdict = grade(step, answer)
     if verdict.diagnosis == "none":
         return
-    if _stored(state, step, _plain(answer), verdict.diagnosis, verdict.term):
-        state["progress"] = resumed(seated, state["steps"])
+    if state["seat"] is None:
+        progress.give(step, answer)
         state["mine"][step.id] = verdict
+        return
+    check = _stored(state, step, _plain(answer), verdict.diagnosis, verdict.term)
+    if check:
+        state["progress"] = resumed(state["seat"], state["steps"])
+        state["mine"][step.id] = SETTLED if state["progress"].late(check) else verdict
+
+
+SETTLED = "settled"  # a device's check of a step settled before it (on another device)
+DONE_HERE = "done"  # a check of a step this device already knew settled (not graded)
 
 
 def reveal(state: dict, step: Step) -> None:
     """"Show it": stored as the student's last try of the step (the class view counts it,
     and a reload keeps it shown), then shown."""
-    if state["seat"] is None or state["progress"].done(step):
+    if state["progress"].done(step):
+        return
+    if state["seat"] is None:
         state["progress"].reveal(step)
     elif _stored(state, step, None, store.REVEALED, ""):
         state["progress"] = resumed(state["seat"], state["steps"])
+        state["mine"].pop(step.id, None)
 
 
-def _stored(state: dict, step: Step, answer, diagnosis: str, term: str) -> bool:
-    """One check in the store (False, and why said, when it was not taken). The check's id
-    is made here and kept until the store has it: the same answer checked again after "not
-    saved" is that check, stored once; any other is a new try."""
+def verdicts_shown(state: dict) -> bool:
+    """Whether this run's student sees verdicts: always, but in a test only once its
+    lecturer closed it (asked of the store each run until then)."""
+    if state["progress"].rules.hints or state["seat"] is None or state.get("closed"):
+        return True
+    try:
+        state["closed"] = store.find(state["seat"][0]).verdicts_shown
+    except ClassError:  # (down or gone: not yet)
+        return False
+    return state["closed"]
+
+
+def _stored(state: dict, step: Step, answer, diagnosis: str, term: str) -> str:
+    """One check in the store: its id ("" and why said, when it was not taken). The check's
+    id is made here and kept until the store has it: the same answer checked again after
+    "not saved" is that check, stored once; any other is a new try."""
     pending = state.setdefault("pending", {})
     which = (step.id, repr(answer), diagnosis)
     check = pending.setdefault(which, store.new_check())
@@ -147,13 +167,16 @@ def _stored(state: dict, step: Step, answer, diagnosis: str, term: str) -> bool:
         store.record(*state["seat"], step.id, answer, diagnosis, check, term=term)
     except NotSaved:
         st.session_state[NOT_SAVED] = t("class.not_saved")
-        return False
+        return ""
+    except OneTry as exc:  # a test's step tried already (on another device)
+        st.session_state[NOT_SAVED] = message(exc.args[0])
+        return ""
     except ClassError as exc:  # the class deleted or expired meanwhile: practice goes on, unstored
         st.session_state[NOT_SAVED] = t("class.gone", why=message(exc.args[0]))
         state["seat"] = None
-        return False
+        return ""
     del pending[which]
-    return True
+    return check
 
 
 def _plain(answer):

@@ -14,7 +14,8 @@ import streamlit as st
 
 from figures.plans import plain
 from figures.practice import practice_figure
-from methods.practice import RULES, TRIES, Progress, Step, Verdict, hint_keys, polar, ratio_digits
+from methods.practice import RULES, Step, Verdict, hint_keys, polar, ratio_digits
+from methods.progress import Progress, verdict_of
 from ui import classroom
 from ui.export import chart
 from ui.fragments import rerun_here
@@ -28,7 +29,7 @@ PARTS = {"vector": "practice.part_vector", "point": "practice.part_point",
 # a step's SI unit as its page writes it: the rotor page draws U in kg·mm and V in kg·mm²
 SHOWN_UNITS = {"kg·m": ("kg·mm", 1e3), "kg·m²": ("kg·mm²", 1e6)}
 OUTCOMES = {"first": "practice.first", "later": "practice.later",
-            "revealed": "practice.revealed", "open": "practice.open"}
+            "revealed": "practice.revealed", "wrong": "practice.wrong", "open": "practice.open"}
 
 
 def shown_unit(step: Step) -> tuple[str, float]:
@@ -60,7 +61,7 @@ def _state(key: str, steps: list[Step], seated: tuple[str, str] | None) -> dict:
     signature = (tuple((s.id, str(s.expected)) for s in steps), seated)
     state = st.session_state.get(f"{key}_state")
     if state is None or state["signature"] != signature:
-        restarted = state is not None and bool(state["progress"].answers)
+        restarted = state is not None and bool(state["progress"].records)
         progress = classroom.resumed(seated, steps) if seated else Progress.start()
         state = {"signature": signature, "progress": progress, "seat": seated, "tips": {},
                  "index": classroom.first_open(steps, progress) if seated else 0,
@@ -108,11 +109,11 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
     _typing(step, key, state)
     with verdict or st.container(key=f"{key}_verdict"):
         if not classroom.not_saved():
-            _feedback(step, state["progress"], state["mine"].get(step.id))
+            _feedback(step, state)
     if verdict is None and state.get("checked"):  # a typed step's verdict, under the thumb
         into_view(f".st-key-{key}_verdict", state["checked"], f"{key}_in_view")
     _moves(steps, index, key, state)
-    if all(progress.done(s) for s in steps):
+    if all(progress.done(s) for s in steps) and classroom.verdicts_shown(state):
         score(steps, progress, key)
 
 
@@ -123,7 +124,8 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
     tip = state["tips"].get(step.id)  # SI: where the student put it, at any scale
     tip = None if tip is None else tip / (step.scale or 1.0)
     revision = f"{step.id}-{state['revision']}-{step.scale}"
-    seen = len(progress.verdicts.get(step.id, []))  # a check, a drag or a move: a new focus
+    record = progress.record(step)
+    seen = len(record.counted) + len(record.late)  # a check, a drag or a move: a new focus
     result = chart(practice_figure(steps, index, tip, title, t, look(), revision),
                    f"practice-{key}", key=f"{key}_fig", handle="tip",
                    focus=f".st-key-{key}_prompt|{index}-{seen}-{state['revision']}")
@@ -189,16 +191,27 @@ def _typing(step: Step, key: str, state: dict) -> None:
     rerun_here()  # the verdict, with the step's prompt and sheet brought to the screen
 
 
-def _feedback(step: Step, progress: Progress, mine: Verdict | None) -> None:
+def _feedback(step: Step, state: dict) -> None:
     """The verdict of the last check of ``step`` (in a class: this device's own, as stored;
-    the tries of another tab count in ``progress``), then the exact answer once done."""
-    verdicts = progress.verdicts.get(step.id, [])
-    last = mine or (verdicts[-1] if verdicts else None)
-    if last is not None:
-        (st.success if last.ok else st.warning)(hint(step, last))
-    if progress.done(step) and not any(v.ok for v in verdicts):
-        st.info(t("practice.shown", tries=len(verdicts), limit=TRIES))
-    if progress.done(step):
+    the tries of another tab count in the progress), then the exact answer once done. A
+    check that came after the step was settled is said to count for nothing; in a test not
+    yet closed, only that the try is stored."""
+    progress: Progress = state["progress"]
+    record, mine = progress.record(step), state["mine"].get(step.id)
+    if not classroom.verdicts_shown(state):
+        if record.counted:
+            st.info(t("practice.test_stored"), icon=":material/lock:")
+        return
+    if mine in (classroom.SETTLED, classroom.DONE_HERE):
+        st.info(t("practice.settled" if mine == classroom.SETTLED else "practice.settled_here",
+                  outcome=t(OUTCOMES[record.outcome])), icon=":material/devices:")
+    else:
+        last = mine or (verdict_of(step, record.graded[-1]) if record.graded else None)
+        if last is not None:
+            (st.success if last.ok else st.warning)(hint(step, last))
+    if record.outcome == "revealed":
+        st.info(t("practice.shown", tries=len(record.graded), limit=progress.rules.tries))
+    if record.done:
         st.markdown(t("practice.exact") + " " + exact_text(step))
 
 
@@ -223,22 +236,24 @@ def _moves(steps: list[Step], index: int, key: str, state: dict) -> None:
 
     cols[0].button(t("practice.previous"), key=f"{key}_prev", on_click=go, args=(index - 1,),
                    disabled=index == 0, icon=":material/arrow_back:", width="stretch")
-    cols[1].button(t("practice.reveal"), key=f"{key}_reveal",
-                   on_click=lambda: classroom.reveal(state, steps[index]),
-                   disabled=progress.done(steps[index]), icon=":material/visibility:",
-                   width="stretch")
+    if progress.rules.hints:  # (a test gives no "Show it")
+        cols[1].button(t("practice.reveal"), key=f"{key}_reveal",
+                       on_click=lambda: classroom.reveal(state, steps[index]),
+                       disabled=progress.done(steps[index]), icon=":material/visibility:",
+                       width="stretch")
     cols[2].button(t("practice.next"), key=f"{key}_next", on_click=go, args=(index + 1,),
                    disabled=index == len(steps) - 1, icon=":material/arrow_forward:",
                    width="stretch")
 
 
 def score(steps: list[Step], progress: Progress, key: str) -> None:
-    """The score (first try, after hints, revealed) and every step's answers as CSV (a
-    decimal point, for spreadsheets)."""
+    """The score (first try, after hints, revealed — or in a test, right and wrong) and
+    every step's answers as CSV (a decimal point, for spreadsheets)."""
     counts = progress.score(steps)
     st.header(t("practice.score"))
-    cols = st.columns(3)
-    for col, outcome in zip(cols, ("first", "later", "revealed")):
+    shown = ("first", "later", "revealed") if progress.rules.hints else ("first", "wrong")
+    cols = st.columns(len(shown))
+    for col, outcome in zip(cols, shown):
         col.metric(t(OUTCOMES[outcome]), f"{counts[outcome]} / {len(steps)}")
     st.download_button(t("practice.csv"), kept_language(lambda: answers_table(steps, progress).to_csv(
         index=False).encode("utf-8")), f"practice-{key}.csv", mime="text/csv",
@@ -262,6 +277,8 @@ def answers_table(steps: list[Step], progress: Progress) -> pd.DataFrame:
     def value(v) -> str:
         if v is None:
             return ""
+        if isinstance(v, (list, tuple)):  # (as the store keeps a pair)
+            v = complex(*v)
         if isinstance(v, complex):
             return f"{v.real:.6g}; {v.imag:.6g}"
         return f"{float(v):.6g}"
@@ -269,7 +286,7 @@ def answers_table(steps: list[Step], progress: Progress) -> pd.DataFrame:
     rows = [{
         "step": s.id, "symbol": plain(s.symbol), "unit": s.unit, "exact": value(s.expected),
         "tolerance": f"{s.tolerance:.3g}",
-        "answers": " | ".join(value(a) for a in progress.answers.get(s.id, [])),
-        "diagnoses": " | ".join(t(DIAGNOSES[v.diagnosis]) for v in progress.verdicts.get(s.id, [])),
+        "answers": " | ".join(value(a.answer) for a in progress.record(s).graded),
+        "diagnoses": " | ".join(t(DIAGNOSES[a.diagnosis]) for a in progress.record(s).graded),
         "outcome": t(OUTCOMES[progress.outcome(s)])} for s in steps]
     return pd.DataFrame(rows).rename(columns={k: t(v) for k, v in CSV_COLUMNS.items()})
