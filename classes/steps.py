@@ -27,9 +27,14 @@ def scene_of(scene: str):
 
 def steps_of(found: Class, variant: int | None = None) -> list[Step]:
     """The steps a student of ``found`` practises: the class's, or their variant's."""
-    code = variant_of(found, variant)
-    scene = from_code(code).scene if code else scene_of(found.scene)
-    return steps_for(scene, found.method, found.at)
+    return steps_at(found.scene, found.method, found.at, variant_of(found, variant))
+
+
+def steps_at(scene: str, method: str, at: float | None, variant: str | None) -> list[Step]:
+    """The steps of ``method`` on a class's stored scene (or the variant ``variant`` of its
+    set) at ``at``: what a seated student's page grades by, whatever its link says (a
+    cache keys them by these plain values)."""
+    return steps_for(from_code(variant).scene if variant else scene_of(scene), method, at)
 
 
 def practice_link(found: Class, token: str, language: str, url: str | None = None) -> tuple[str, dict]:

@@ -41,6 +41,7 @@ from ui.selfcheck import Quantity, answer_box
 from ui.url import seed, url_toggle
 
 page_title("pages/kinetostatics.py")
+practice.class_only("pr_forces", "pr_lever")  # a seated student: the class's practice alone
 RESOLUTIONS = (12, 72, 360, 3600)
 
 

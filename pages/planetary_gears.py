@@ -29,6 +29,7 @@ from ui.selfcheck import Quantity, answer_box
 from ui.url import seed
 
 page_title("pages/planetary_gears.py")
+practice.class_only("pr_willis")  # a seated student: the class's practice alone
 
 # the caption under each step of methods.gear_steps: (kind, on fixed axes) → locale key
 STEP_WORDS = {("input", True): "gears.kind_input", ("fixed", True): "gears.kind_fixed",

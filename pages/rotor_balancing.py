@@ -39,6 +39,7 @@ MM = 1e3  # the course writes radii and distances in mm, U in kg·mm and V in kg
 COLUMNS = ("m [kg]", "r [mm]", "φ [°]", "x [mm]")
 
 page_title("pages/rotor_balancing.py")
+practice.class_only("pr_balance")  # a seated student: the class's practice alone
 controls, main = page_columns()
 
 

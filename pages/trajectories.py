@@ -63,6 +63,7 @@ TRAVEL = {"vR": ("traj.v_R", "speed", 0.5, 8.0, 0.1, " m/s"),
           "Rb": ("traj.R_b", "sprocket_crank", 0.02, 0.2, 0.005, " m")}
 
 page_title("pages/trajectories.py")
+practice.class_only("pr_compass")  # a seated student: the class's practice alone
 
 
 @page_cache(st.cache_data(max_entries=16, show_spinner=False, hash_funcs=BY_REPR))

@@ -40,6 +40,7 @@ from ui.url import seed
 SVG_CAPTIONS = {"v": "plans.svg_caption_v", "a": "plans.svg_caption_a"}
 
 page_title("pages/velocity_plans.py")
+practice.class_only("pr_plans")  # a seated student: the class's practice alone
 
 
 def root_words() -> dict[str, str]:

@@ -165,7 +165,7 @@ def test_a_class_deleted_while_a_student_practises_is_said_and_practice_goes_on(
     store.delete(code, key)
     _check(at, first, first.expected)
     assert not at.exception
-    assert any(f"No class has the code {code}" in e.value for e in at.error)
+    assert any(f"The class {code} was deleted" in e.value for e in at.error)
     _check(at, first, first.expected)  # unstored now, graded and said as before
     assert any(t("practice.hint_ok", "en") in s.value for s in at.success)
     assert any(t("class.gone_note", "en") in w.value for w in at.warning)

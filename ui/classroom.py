@@ -9,6 +9,7 @@ import streamlit as st
 
 from classes import store
 from classes.store import ClassError, NotSaved, OneTry, StoreDown
+from classes.steps import practice_link, steps_at
 from classes.summary import tried
 from methods.practice import Step, grade
 from methods.progress import Progress
@@ -34,6 +35,13 @@ def seat(key: str) -> tuple[str, str] | None:
     and the link names a student of that class; None otherwise (practice is not stored)."""
     memo = _seat()
     return (memo[0], memo[1]) if memo and not memo[3] and memo[2] == key else None
+
+
+def waiting_for_store() -> bool:
+    """Whether the link's class could not be looked up because the store is down (the page
+    then shows only the waiting notice of ``seat_refused``)."""
+    memo = _seat()
+    return bool(memo and memo[3] == DOWN)
 
 
 def seat_refused() -> None:
@@ -97,6 +105,48 @@ def resumed(seated: tuple[str, str], steps: list[Step]) -> Progress:
         wait_for_store(t("class.store_down"))
         st.stop()
     return Progress.of(tried([c for c in checks if c["step"] in known]), rules)
+
+
+@st.cache_resource(max_entries=64, show_spinner=False)
+def _steps_at(scene: str, method: str, at: float | None, variant: str | None) -> list[Step]:
+    return steps_at(scene, method, at, variant)
+
+
+def class_steps(seated: tuple[str, str]) -> tuple[store.Class, list[Step]] | None:
+    """The class of a seated student and the steps it practises — the class's scene (or the
+    student's variant), method and instant, never the link's or the sliders': every check
+    is graded and stored at the class's instant. Looked up once per session and seat (a
+    class deleted meanwhile keeps its steps: practice goes on, unstored); None, said, for
+    a class gone before; the store down stops the page until it answers."""
+    memo = st.session_state.setdefault("_class_steps", {})
+    if seated not in memo:
+        try:
+            found = store.find(seated[0])
+            variant = store.variant_of(found, store.student(*seated)["variant"])
+        except StoreDown:
+            wait_for_store(t("class.store_down"))
+            st.stop()
+        except ClassError as exc:
+            st.error(message(exc.args[0]), icon=":material/error:")
+            return None
+        memo[seated] = (found, _steps_at(found.scene, found.method, found.at, variant))
+    return memo[seated]
+
+
+def fixed_link(found: store.Class, token: str) -> list[str]:
+    """The link's values that would practise something else than the class (``at``, a
+    slider's, ``s=``, ``scene``): the names of those given, and the page's link set to the
+    class's own, so that a reload or a shared link practises the class."""
+    try:
+        _, own = practice_link(found, token, st.query_params.get("lang", ""))
+    except StoreDown:  # (the note waits for the next run)
+        return []
+    given = {k: st.query_params.get_all(k) for k in st.query_params}
+    ignored = sorted(k for k, v in given.items()
+                     if k not in ("lang", "class", "student") and v != [own.get(k)])
+    if ignored:
+        st.query_params.from_dict({k: v for k, v in own.items() if v})
+    return ignored
 
 
 def first_open(steps: list[Step], progress: Progress) -> int:

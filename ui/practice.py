@@ -47,6 +47,44 @@ def toggle(key: str) -> bool:
     return st.toggle(t("practice.mode"), key=f"{key}_on", help=t("practice.mode_help"))
 
 
+# what a seated student's page shows for each method: its practice key, its sheet's title,
+# whether the steps are drawn
+SEATED = {"compass": ("pr_compass", "practice.sheet_compass", True),
+          "plans": ("pr_plans", "practice.sheet_plans", True),
+          "forces": ("pr_forces", "practice.sheet_forces", True),
+          "lever": ("pr_lever", "", False), "willis": ("pr_willis", "", False),
+          "balance": ("pr_balance", "practice.sheet_rotor", True)}
+
+
+def class_only(*keys: str) -> None:
+    """A student seated in a class that practises on this page (one of its practice
+    ``keys``) gets the class's practice and nothing else: no readings, tables, book values,
+    self-check box, other tabs or figures that would show what the steps ask, whatever the
+    link or the sliders say — the class's scene, instant and method, a note naming the
+    link's values left out. Then the page stops. A link to a class while its store cannot
+    be reached waits for it (practice never starts unstored). Anyone else: nothing here."""
+    if not st.query_params.get("class") or not st.query_params.get("student"):
+        return
+    seated = next((s for s in map(classroom.seat, keys) if s), None)
+    if classroom.waiting_for_store():
+        classroom.seat_refused()  # (the waiting notice, which reruns the page when it answers)
+        st.stop()
+    if seated is None:
+        return  # not this page's class, or no such student: said above, the page as it is
+    known = classroom.class_steps(seated)
+    if known is None:
+        return
+    found, steps = known
+    key, sheet, drawable = SEATED[found.method]
+    st.caption(t("class.seated", code=found.code)
+               + (" · " + t("class.seated_test") if found.test else ""))
+    ignored = classroom.fixed_link(found, seated[1])
+    if ignored:
+        st.info(t("class.fixed", names=", ".join(ignored)), icon=":material/lock:")
+    panel(steps, key, t(sheet) if sheet else "", drawable)
+    st.stop()
+
+
 def hint(step: Step, verdict: Verdict) -> str:
     """The diagnosis in words, and the book's rule for the step where it helps."""
     values = dict(ratio=num(verdict.ratio, ratio_digits(verdict.ratio)) if verdict.ratio is not None else "",
@@ -199,7 +237,9 @@ def _feedback(step: Step, state: dict) -> None:
     progress: Progress = state["progress"]
     record, mine = progress.record(step), state["mine"].get(step.id)
     if not classroom.verdicts_shown(state):
-        if record.counted:
+        if mine in (classroom.SETTLED, classroom.DONE_HERE):
+            st.info(t("class.one_try", step=plain(step.symbol)), icon=":material/lock:")
+        elif record.counted:
             st.info(t("practice.test_stored"), icon=":material/lock:")
         return
     if mine in (classroom.SETTLED, classroom.DONE_HERE):
