@@ -108,7 +108,8 @@ def go(request: Request, said: Launch) -> Response:
     practise, an instructor to the class's live view."""
     task, method = said.custom.get("task", ""), said.custom.get("method", "")
     practised(task, method)
-    link = store.link_class(said.platform, said.context, said.resource_link, task, method)
+    test = str(said.custom.get("test", "")).lower() in ("1", "true", "yes")
+    link = store.link_class(said.platform, said.context, said.resource_link, task, method, test=test)
     base = base_url(request)
     if said.instructor:
         query = urllib.parse.urlencode({"class": link.class_code, "key": link.key,
@@ -157,6 +158,7 @@ def picker(request: Request, said: Launch) -> Response:
         f"<input type='hidden' name='context' value='{context}'>"
         f"<p><label>{html.escape(words['lti.pick_task'])} <select name='task'>{tasks}</select></label></p>"
         f"<p><label>{html.escape(words['lti.pick_method'])} <select name='method'>{methods}</select></label></p>"
+        f"<p><label><input type='checkbox' name='test' value='1'> {html.escape(words['lti.pick_test'])}</label></p>"
         f"<p><button type='submit'>{html.escape(words['lti.pick_add'])}</button></p>"
         "</form></body></html>")
 
@@ -183,6 +185,7 @@ async def deeplink(request: Request) -> Response:
     except LtiError as exc:
         return refused(exc.args[0])
     task, method = str(form.get("task", "")), str(form.get("method", ""))
+    test = form.get("test") == "1"
     try:
         scene, steps = practised(task, method)
     except LtiError as exc:
@@ -196,7 +199,7 @@ async def deeplink(request: Request) -> Response:
               DEEP + "content_items": [{
                   "type": "ltiResourceLink", "title": name,
                   "url": f"{base_url(request)}/lti/launch",
-                  "custom": {"task": task, "method": method},
+                  "custom": {"task": task, "method": method, **({"test": "1"} if test else {})},
                   "lineItem": {"scoreMaximum": len(steps), "label": name}}]}
     if context.get("data"):
         claims[DEEP + "data"] = context["data"]

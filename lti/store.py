@@ -163,9 +163,10 @@ class Link:
 
 
 def link_class(found: Platform, context: str, resource: str, task: str, method: str,
-               url: str | None = None) -> Link:
+               url: str | None = None, test: bool = False) -> Link:
     """The class of a resource link: made at its first launch, and made again if it expired
-    or was deleted (a course outlives a class's days)."""
+    or was deleted (a course outlives a class's days); ``test``: the activity is a test
+    (custom ``test=1``: one try a step, grades sent when its teacher closes it)."""
     key = keys.lecturer_key(f"{found.id}|{context}|{resource}")
     with engine(url).connect() as db:
         row = db.execute(sa.select(links).where(
@@ -177,7 +178,7 @@ def link_class(found: Platform, context: str, resource: str, task: str, method: 
             return Link(row.id, row.class_code, key)
         except ClassError:
             pass  # gone: a new class for the same link
-    code, _ = store.create(task, method, days=LINK_DAYS, url=url, key=key)
+    code, _ = store.create(task, method, days=LINK_DAYS, url=url, key=key, test=test)
     if row is not None:
         with engine(url).begin() as db:
             db.execute(links.update().where(links.c.id == row.id).values(class_code=code))
@@ -189,7 +190,7 @@ def link_class(found: Platform, context: str, resource: str, task: str, method: 
                 platform_id=found.id, context_id=context, resource_link_id=resource,
                 class_code=code, task=task, method=method).returning(links.c.id)).scalar()
     except sa.exc.IntegrityError:  # a second first launch at once: the first one's class stands
-        return link_class(found, context, resource, task, method, url)
+        return link_class(found, context, resource, task, method, url, test)
     return Link(made, code, key)
 
 

@@ -36,13 +36,14 @@ def start() -> None:
     link = st.text_input(t("class.link"), key="class_link", placeholder=f"{PARAMETER}=…")
     variants = st.text_input(t("class.variants"), key="class_variants", placeholder="3.1-S42-01K")
     at = number_field(t("class.at"), "class_at", optional=True)
+    test = st.checkbox(t("class.test"), key="class_test")
     if st.button(t("class.start"), type="primary", icon=":material/groups:"):
         try:
             if variants.strip():
                 settings, _ = parse(variants.strip())
                 scene = settings.task
             chosen = link.strip() if link.strip().startswith(f"{PARAMETER}=") else scene
-            code, key = store.create(chosen, method, at, variants.strip().upper() or None)
+            code, key = store.create(chosen, method, at, variants.strip().upper() or None, test=test)
         except (ClassError, SceneError) as exc:
             st.error(message(exc.args[0] if isinstance(exc, ClassError) else exc))
             return

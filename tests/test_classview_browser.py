@@ -87,3 +87,31 @@ def test_the_lecturer_sees_each_check_live_and_the_cloud_of_three(app_url, tmp_p
         browser.close()
     assert max(waits) < float(os.environ.get("CLASS_VIEW_WAIT", "10"))  # a live view, not a reload
 
+
+
+def test_fresh_opens_of_the_lecturer_s_link_draw_the_bars_never_an_error(app_url, tmp_path):
+    """Eight fresh opens of the lecturer's link as the class page makes it (the join panel
+    above the results), each watched through several of the live part's ticks: the bar chart is drawn with the stored check every time, and no chart
+    shows a JavaScript error in its place (the chart used to be purged by a tick while
+    Plotly still drew it: "TypeError: e.emit is not a function", kept until a new check)."""
+    from playwright.sync_api import sync_playwright
+
+    code, key = store.create("zbirka-3.1", "plans")
+    token = store.join(code, "ana")
+    store.record(code, token, "v.b", [0.0, 1.0], "wrong", store.new_check())
+    said = []
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        for n in range(8):
+            context = browser.new_context(viewport={"width": 1920, "height": 1080}, locale="en-US")
+            view = context.new_page()
+            view.goto(f"{app_url}/class?class={code}&key={key}&lang=sr&made=1")
+            view.wait_for_function(f"() => {TOTAL} >= 1", timeout=60_000)
+            view.wait_for_timeout(3_500)  # three ticks of the live part
+            text = view.inner_text("[data-testid=stMain]")
+            said.append((view.evaluate(TOTAL), "emit is not a function" in text))
+            if n == 0:
+                shot(view, tmp_path / "class-view-fresh-open.png")
+            context.close()
+        browser.close()
+    assert said == [(1, False)] * 8, said

@@ -11,7 +11,7 @@ from classes import store
 from mechanisms import load_preset
 from methods.practice_steps import steps_for
 from ui import classview
-from ui.i18n import t
+from ui.i18n import counted, t
 
 from .test_pages import chart, page
 
@@ -52,7 +52,7 @@ def test_the_view_is_hidden_until_revealed_then_counts_and_draws_the_class(lang,
     bars = chart(at, "cv_bars")
     assert names(bars) == [t("class.hidden", lang)] and bars["data"][0]["x"][0] == 3
     assert "cv_cloud" not in {e.proto.id.rsplit("-", 1)[-1] for e in at.get("bidi_component")}
-    assert not any("3" in m.value and t("class.mistake_sense", lang, n=2) in m.value for m in at.markdown)
+    assert not any("3" in m.value and t("class.mistake_sense", lang, who=counted("class.n_students", 2, lang)) in m.value for m in at.markdown)
     assert not at.dataframe  # names hidden by default
 
     at.toggle(key="cv_all").set_value(True).run()
@@ -60,7 +60,7 @@ def test_the_view_is_hidden_until_revealed_then_counts_and_draws_the_class(lang,
     assert names(bars) == [t("class.diagnosis_ok", lang), t("class.diagnosis_sense", lang)]
     assert [tr["x"][0] for tr in bars["data"]] == [1, 2]  # first tries: one right, two reversed
     said = " ".join(m.value for m in at.markdown)
-    assert t("class.mistake_sense", lang, n=2) in said
+    assert t("class.mistake_sense", lang, who=counted("class.n_students", 2, lang)) in said
     cloud = chart(at, "cv_cloud")
     tips = [tr for tr in cloud["data"] if tr.get("mode") == "markers" and tr.get("name")]
     assert sum(int(tr["name"].rsplit("(", 1)[1].rstrip(")")) for tr in tips) == 3  # three latest answers
@@ -97,7 +97,7 @@ def test_the_printable_summary_writes_the_language_s_numbers(monkeypatch):
     monkeypatch.setattr("ui.i18n.current", lambda: "sr")
     serbian = classview.printable(found, STEPS, rows)
     assert "33,3 %" in serbian and "@page { size: A4" in serbian
-    assert t("class.mistake_sense", "sr", n=2) in serbian
+    assert t("class.mistake_sense", "sr", who="2 studenta") in serbian
     assert "cira" not in serbian  # a summary for the room: no nicknames
     monkeypatch.setattr("ui.i18n.current", lambda: "en")
     assert "33.3 %" in classview.printable(found, STEPS, rows)
@@ -148,3 +148,20 @@ def test_a_number_step_shows_the_class_s_values_around_the_exact_one():
                        "class.diagnosis_length (1)": 1}
     assert [sh["x0"] for sh in shown["layout"]["shapes"]] == [exact]
     assert not spread(step, given, False, "ω", lambda key, **_: key).to_dict()["layout"].get("shapes")
+
+
+@pytest.mark.parametrize("n, english, serbian", [
+    (1, "1 student", "1 student"), (2, "2 students", "2 studenta"), (5, "5 students", "5 studenata"),
+    (11, "11 students", "11 studenata"), (12, "12 students", "12 studenata"),
+    (21, "21 students", "21 student"), (24, "24 students", "24 studenta")])
+def test_a_count_of_students_is_said_in_each_language_s_plural(n, english, serbian):
+    assert counted("class.n_students", n, "en") == english
+    assert counted("class.n_students", n, "sr") == serbian
+    assert t("class.mistake_tie", "en", who=counted("class.n_students", 1, "en"), made="x") \
+        == "Most common mistakes, made equally often (by 1 student each): x."
+
+
+def test_the_printable_summary_says_nothing_odd_for_a_step_nobody_reached():
+    code, key = planted()
+    said = classview.printable(store.opened(code, key), STEPS, [])  # (no checks: none reached)
+    assert "<td>0</td>" in said and "()" not in said

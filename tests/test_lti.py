@@ -338,3 +338,36 @@ def test_a_hand_in_from_the_command_line_is_scored_too(tool, tmp_path):
                  "--class", query["class"], "--student", query["student"]]) == 0
     assert grades.send_due(db) == 1
     assert platform.scores[-1][1]["scoreGiven"] == 1  # the first right, the second reversed
+
+
+def test_a_test_activity_sends_its_grades_when_its_teacher_closes_it(tool):
+    """Picked as a test in deep linking (custom test=1): its class is a test, a check is
+    stored but no grade goes while it is open (a gradebook shows students their grade);
+    closing it sends every learner's score, as the one fold counts it."""
+    client, platform, db = tool
+    answer = launch(client, platform, sub="teacher-1", **{
+        CLAIM + "message_type": "LtiDeepLinkingRequest", CLAIM + "roles": [INSTRUCTOR],
+        DEEP + "deep_linking_settings": {"deep_link_return_url": platform.url("/deep-return")}})
+    assert "name='test'" in answer.text
+    context = answer.text.split("name='context' value='")[1].split("'")[0]
+    picked = client.post("/lti/deeplink", data={"context": context, "task": "zbirka-3.1",
+                                                "method": "plans", "test": "1"})
+    said = picked.text.split("name='JWT' value='")[1].split("'")[0]
+    (item,) = jwt.decode(said, keys.private_key().public_key(), algorithms=["RS256"],
+                         audience=platform.issuer)[DEEP + "content_items"]
+    assert item["custom"] == {"task": "zbirka-3.1", "method": "plans", "test": "1"}
+    query = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(launch(
+        client, platform, **{CLAIM + "custom": item["custom"]}).headers["location"]).query))
+    code, token = query["class"], query["student"]
+    found = store.find(code, db)
+    assert found.test and found.closed is None
+    first = steps_of(found)[0]
+    store.record(code, token, first.id, 1.0, "ok", store.new_check(), url=db)
+    assert grades.send_due(db) == 0 and not platform.scores
+    with pytest.raises(store.OneTry):  # one try a step
+        store.record(code, token, first.id, 2.0, "ok", store.new_check(), url=db)
+    registered = lti.platform(platform.issuer, platform.client_id, db)
+    key = keys.lecturer_key(f"{registered.id}|course-7|rl-1")  # (the instructor's link carries it)
+    store.close(code, key, db)
+    grades.rescore(code, db)
+    assert grades.send_due(db) == 1 and platform.scores[-1][1]["scoreGiven"] == 1

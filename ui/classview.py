@@ -11,6 +11,7 @@ that reruns every second and fetches only the checks stored since the last one.
 from __future__ import annotations
 
 import html
+import json
 from datetime import datetime
 
 import pandas as pd
@@ -19,6 +20,7 @@ import streamlit as st
 from classes import store, summary
 from classes.steps import scene_of
 from classes.store import Class, ClassError, StoreDown
+from lti.grades import rescore
 from exams.codes import parse
 from exams.variants import MAX_COUNT, VariantError, from_code, generate
 from figures.classview import COLOURS, spread, step_bars
@@ -30,7 +32,7 @@ from methods.practice_steps import steps_for
 from ui.boundary import boundary
 from ui.classroom import wait_for_store
 from ui.export import chart
-from ui.i18n import current, kept_language, message, num, t, title_of
+from ui.i18n import counted, current, kept_language, message, num, t, title_of
 from ui.practice import shown_unit
 from ui.present import look
 
@@ -108,6 +110,8 @@ def view(code: str, key: str) -> bool:
         return True
     st.caption(f"{t(f'class.method_{found.method}')} · {title_of(class_scene(found.scene))} · "
                f"{t('class.view_live')}")
+    if found.test:
+        test_state(found, key)
     symbols = {s.id: f"{i + 1}. {plain(s.symbol)}" for i, s in enumerate(steps)}
     # the lecturer's controls in one row (the sidebar is hidden on a projector)
     cols = st.columns([1, 1, 1, 2, 1], vertical_alignment="bottom")
@@ -125,6 +129,23 @@ def view(code: str, key: str) -> bool:
     live(found, key, steps, shown, names, look_at, right, split)
     exports(found, key, steps)
     return True
+
+
+def test_state(found: Class, key: str) -> None:
+    """A test's state, and its lecturer's button to close it (the students then see their
+    verdicts, and a Moodle activity's grades are sent)."""
+    if found.closed is not None:
+        st.success(t("class.test_closed"), icon=":material/lock_open:")
+        return
+    st.info(t("class.test_open"), icon=":material/lock:")
+    if st.button(t("class.test_close"), key="cv_close", icon=":material/lock_open:"):
+        try:
+            store.close(found.code, key)
+            rescore(found.code)
+        except ClassError as exc:
+            st.error(message(exc.args[0]))
+            return
+        st.rerun()
 
 
 def _split_choice(found: Class) -> str | None:
@@ -163,7 +184,7 @@ def _counts(found: Class, key: str, steps: list[Step], shown: set[str], names: b
     anew while the class is open), and its exports."""
     rows = _fetch(found) if live else _seen(found)
     ids = [s.id for s in steps]
-    counts = summary.counts(rows, ids)
+    counts = summary.counts(rows, ids, found.rules)
     left, right_col = st.columns(2)
     left.metric(t("class.students"), len({r["student"] for r in rows}))
     right_col.metric(t("class.checks"), len(rows))
@@ -175,15 +196,16 @@ def _counts(found: Class, key: str, steps: list[Step], shown: set[str], names: b
                     t("class.bars_title"), t, look()), f"class-{found.code}", key="cv_bars")
     for i, (step, count) in enumerate(zip(steps, counts)):
         if step.id in shown and count.reached:
-            st.markdown(t("class.step_counts", n=i + 1, symbol=plain(step.symbol), reached=count.reached,
-                          first=count.first, later=count.later, revealed=count.revealed)
+            st.markdown(t("class.step_counts_test" if found.test else "class.step_counts", n=i + 1,
+                          symbol=plain(step.symbol), reached=count.reached, first=count.first,
+                          later=count.later, revealed=count.revealed, wrong=count.wrong)
                         + " " + mistake_text(count))
     if look_at in shown:
         _drawing(found, steps, ids.index(look_at), rows, right)
     if split is not None:
         _by_band(found, rows, steps, shown, split)
     if names:
-        table = pd.DataFrame(summary.students(rows, ids), columns=["nickname", "done", "first"])
+        table = pd.DataFrame(summary.students(rows, ids, found.rules), columns=["nickname", "done", "first"])
         st.dataframe(table.rename(columns={"nickname": t("class.table_nickname"),
                                            "done": t("class.table_done"),
                                            "first": t("class.table_first")}),
@@ -198,8 +220,9 @@ def mistake_text(count: summary.StepCount) -> str:
         return t("class.no_mistake")
     students, tied = made
     if len(tied) == 1:
-        return t(f"class.mistake_{tied[0][0]}", n=students, term=plain(tied[0][1]))
-    return t("class.mistake_tie", n=students, made="; ".join(
+        return t(f"class.mistake_{tied[0][0]}", who=counted("class.n_students", students),
+                 term=plain(tied[0][1]))
+    return t("class.mistake_tie", who=counted("class.n_students", students), made="; ".join(
         t(f"class.diagnosis_{d}") + (f" ({plain(term)})" if term else "") for d, term in tied))
 
 
@@ -207,7 +230,7 @@ def _drawing(found: Class, steps: list[Step], index: int, rows: list[dict], righ
     """The class's latest answers to one step: a cloud of tips over the construction, or
     for a number, how the values spread."""
     step = steps[index]
-    latest = summary.latest(rows, step.id).values()
+    latest = summary.latest(rows, step.id, found.rules).values()
     answers = []
     for row in latest:
         value = complex(*row["answer"]) if isinstance(row["answer"], list) else float(row["answer"])
@@ -215,7 +238,7 @@ def _drawing(found: Class, steps: list[Step], index: int, rows: list[dict], righ
         answers.append((summary.relative(value, own, step.expected, step.kind), row["diagnosis"]))
     if found.variants:
         st.caption(t("class.relative_note"))
-    title = t("class.cloud_title", symbol=plain(step.symbol), count=len(answers))
+    title = t("class.cloud_title", symbol=plain(step.symbol), who=counted("class.n_students", len(answers)))
     if step.kind == "scalar":
         fig = spread(step, [(float(v.real) if isinstance(v, complex) else v, d) for v, d in answers],
                      right, title, t, shown_unit(step), look())
@@ -244,7 +267,7 @@ def _by_band(found: Class, rows: list[dict], steps: list[Step], shown: set[str],
     table = {}
     for band in sorted(set(bands.values())):
         members = {s for s, b in bands.items() if b == band}
-        counts = summary.counts([r for r in rows if r["student"] in members], [s.id for s in steps])
+        counts = summary.counts([r for r in rows if r["student"] in members], [s.id for s in steps], found.rules)
         name = t("class.band", low=num(band[0], 4), high=num(band[1], 4), unit=unit)
         table[f"{name} ({len(members)})"] = [f"{c.first}/{c.reached}" if s.id in shown else "·"
                                              for s, c in zip(steps, counts)]
@@ -265,7 +288,18 @@ def exports(found: Class, key: str, steps: list[Step]) -> None:
         except ClassError:
             return [{k: v for k, v in memo[n].items() if k != "id"} for n in sorted(memo)]
 
-    cols = st.columns(3)
+    def outcomes() -> str:
+        done = rows()
+        try:
+            everyone = store.roster(found)
+        except ClassError:  # (the students seen in the checks)
+            everyone = {}
+        return json.dumps(summary.of_class(found, done, everyone), ensure_ascii=False, allow_nan=False)
+
+    cols = st.columns(4)
+    cols[3].download_button(t("class.export_summary"), lambda: outcomes().encode("utf-8"),
+                            f"class-{found.code}-summary.json", mime="application/json",
+                            on_click="ignore", icon=":material/summarize:")
     cols[0].download_button(t("class.export_csv"), lambda: store.as_csv(rows()).encode("utf-8"),
                             f"class-{found.code}.csv", mime="text/csv", on_click="ignore",
                             icon=":material/download:")
@@ -280,18 +314,18 @@ def exports(found: Class, key: str, steps: list[Step]) -> None:
 def printable(found: Class, steps: list[Step], rows: list[dict]) -> str:
     """The summary on one A4 page: per step the counts, the first tries as a bar, the most
     common mistake (numbers the page's language's way)."""
-    counts = summary.counts(rows, [s.id for s in steps])
+    counts = summary.counts(rows, [s.id for s in steps], found.rules)
     most = max([c.reached for c in counts] + [1])
     head = "".join(f"<th>{html.escape(t(k))}</th>" for k in (
         "class.print_step", "class.print_reached", "class.print_first", "class.print_later",
         "class.print_revealed", "class.print_bar", "class.print_mistake"))
     body = []
     for i, (step, c) in enumerate(zip(steps, counts)):
-        share = num(100 * c.first / c.reached, 3) + " %" if c.reached else ""
+        share = f" ({num(100 * c.first / c.reached, 3)} %)" if c.reached else ""
         bar = "".join(f'<span style="width:{100 * n / most:.1f}%;background:{COLOURS[d]}"></span>'
                       for d, n in sorted(c.first_tries.items(), key=lambda kv: DIAGNOSES.index(kv[0])))
         body.append(f"<tr><td>{i + 1}. {html.escape(plain(step.symbol))}</td><td>{c.reached}</td>"
-                    f"<td>{c.first} ({share})</td><td>{c.later}</td><td>{c.revealed}</td>"
+                    f"<td>{c.first}{share}</td><td>{c.later}</td><td>{c.revealed}</td>"
                     f'<td class="bar">{bar}</td><td>{html.escape(mistake_text(c))}</td></tr>')
     legend = " ".join(f'<span class="key" style="background:{COLOURS[d]}"></span>'
                       f"{html.escape(t(f'class.diagnosis_{d}'))}" for d in DIAGNOSES)

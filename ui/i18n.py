@@ -112,6 +112,19 @@ def t(key: str, language: str | None = None, **values) -> str:
                           for k, v in values.items()})
 
 
+def counted(key: str, n: int, language: str | None = None) -> str:
+    """``n`` and a noun in the form the language wants after that number: the string ``key``
+    holds three forms, "one|few|many" (Serbian: 1 student, 2 studenta, 5 studenata; 21
+    student, 12 studenata), English using the first for 1 and the last otherwise."""
+    language = language or current()
+    forms = t(key, language).split("|")
+    if language.startswith("sr"):
+        form = 0 if n % 10 == 1 and n % 100 != 11 else 1 if 2 <= n % 10 <= 4 and not 12 <= n % 100 <= 14 else 2
+    else:
+        form = 0 if n == 1 else 2
+    return forms[form].format(n=n)
+
+
 def label_of(label: str, language: str | None = None) -> str:
     """A scene's member label in the language's words where the labels table has them (an
     uploaded scene's own labels stay as written)."""

@@ -541,6 +541,16 @@ export default function (component) {
   const text = new TextDecoder().decode(data);
   if (gd.__drawn === text) return;
   gd.__drawn = text;
+  // each mount's draws are its own: a chart taken off the page (a fragment's tick can
+  // unmount and mount it again) is purged while Plotly may still be drawing it, and that
+  // draw then fails inside Plotly ("e.emit is not a function": purge removed the div's
+  // event methods). Such a failure is not this mount's and is not shown.
+  const generation = (gd.__generation = (gd.__generation || 0) + 1);
+  const failed = (error) => {
+    if (gd.__generation !== generation) return;
+    gd.__drawn = null;  // the same figure sent again draws again
+    gd.textContent = String(error);
+  };
   const spec = JSON.parse(text);
   gd.__first = spec.first;
   if (!spec.first) window.__mehanizmiPainted = false;  // a whole run: the next first run reports
@@ -584,13 +594,20 @@ export default function (component) {
         focus(gd, spec);
         if (spec.first && gd.__first) reportFirstPaint(gd);  // (not if a whole run's figure came since)
       })
-      .catch((error) => { gd.textContent = String(error); });
-  })).catch((error) => { gd.textContent = String(error); });
-  // called when the chart leaves the page (not between reruns): free Plotly's listeners
-  return () => {
+      .catch(failed);
+  })).catch(failed);
+  // called when the chart leaves the page: free Plotly's listeners. Streamlit also calls it
+  // for a chart that stays (a fragment's tick on a page whose join panel sits above the
+  // live part): purged then, mid-draw, the chart showed "TypeError: e.emit is not a
+  // function" and stayed blank until new data came. So only a chart whose div really left
+  // the document is purged.
+  return () => setTimeout(() => {
+    if (gd.isConnected) return;
+    gd.__generation += 1;  // a draw still under way is no longer this chart's
+    gd.__drawn = null;  // mounted again with the same figure, it is drawn again
     waiting.delete(gd);
     dropCrank(gd);
     if (gd.__unhandle) gd.__unhandle();
     if (gd.__Plotly) gd.__Plotly.purge(gd);
-  };
+  });
 }
