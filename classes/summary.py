@@ -44,17 +44,27 @@ class StepCount:
 def tried(rows: list[dict]) -> list[Try]:
     """Stored checks as tries, in the order the store numbered them (by try within a step,
     then by check number): the order every fold of them takes."""
-    return [Try(r["step"], r["diagnosis"], r["answer"], r.get("term") or "", r.get("check", ""))
-            for r in sorted(rows, key=lambda r: (r["try"], r.get("id", 0)))]
+    return _tried(list(enumerate(rows)))
+
+
+def _tried(numbered: list[tuple[int, dict]]) -> list[Try]:
+    ordered = sorted(numbered, key=lambda ir: (ir[1]["try"], ir[1].get("id", 0)))
+    return [Try(r["step"], r["diagnosis"], r["answer"], r.get("term") or "", _check(i, r))
+            for i, r in ordered]
+
+
+def _check(index: int, row: dict) -> str:
+    """A row's check id (a planted row without one: its place in the rows given)."""
+    return row.get("check") or f"#{index}"
 
 
 def progress(rows: list[dict], rules: Rules = PRACTICE) -> dict[str, Progress]:
     """Each student's progress (methods.progress's fold) from their stored checks: what their
     page, this view, ``class summary`` and the gradebook all say."""
-    mine: dict[str, list[dict]] = defaultdict(list)
-    for row in rows:
-        mine[row["student"]].append(row)
-    return {student: Progress.of(tried(own), rules) for student, own in mine.items()}
+    mine: dict[str, list[tuple[int, dict]]] = defaultdict(list)
+    for numbered in enumerate(rows):
+        mine[numbered[1]["student"]].append(numbered)
+    return {student: Progress.of(_tried(own), rules) for student, own in mine.items()}
 
 
 def counts(rows: list[dict], steps: list[str], rules: Rules = PRACTICE) -> list[StepCount]:
@@ -80,9 +90,10 @@ def counts(rows: list[dict], steps: list[str], rules: Rules = PRACTICE) -> list[
 def latest(rows: list[dict], step: str, rules: Rules = PRACTICE) -> dict[str, dict]:
     """Each student's latest answer to ``step`` that counted (a try, not a "Show it"): what
     the class view draws as the cloud."""
-    by_check = {r.get("check", ""): r for r in rows}
+    mine = [r for r in rows if r["step"] == step]
+    by_check = {_check(i, r): r for i, r in enumerate(mine)}
     out = {}
-    for student, own in progress([r for r in rows if r["step"] == step], rules).items():
+    for student, own in progress(mine, rules).items():
         graded = [t for t in own.record(step).graded if t.answer is not None]
         if graded:
             out[student] = by_check[graded[-1].check]

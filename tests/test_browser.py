@@ -51,10 +51,10 @@ def keep(shot: Path) -> None:
         shutil.copy(shot, Path(target) / shot.name)
 
 
-def check_first_step(page, turn: float = 0.0) -> None:
+def check_first_step(page, turn: float = 0.0, verdict: str | None = None) -> None:
     """Type the first step of task 3.1's plans the Serbian way (decimal commas) — right, or
     turned by ``turn`` degrees — press Check and wait for the verdict (right: a success;
-    else a warning)."""
+    else a warning; or the alert ``verdict`` names: "Info" for a step done elsewhere)."""
     from mechanisms import load_preset
     from methods.practice_steps import steps_for
 
@@ -63,8 +63,8 @@ def check_first_step(page, turn: float = 0.0) -> None:
     boxes.nth(0).fill(f"{abs(z):.6g}".replace(".", ","))
     boxes.nth(1).fill(f"{math.degrees(math.atan2(z.imag, z.real)) + turn:.6g}".replace(".", ","))
     page.get_by_role("button", name="Proveri").click()
-    verdict = "Success" if turn == 0 else "Warning"
-    page.locator(f"[data-testid='stAlertContent{verdict}']").wait_for(timeout=30_000)
+    verdict = verdict or ("Success" if turn == 0 else "Warning")
+    page.locator(f"[data-testid='stAlertContent{verdict}']").first.wait_for(timeout=30_000)
 
 
 def open_page(browser, url: str, size=(1400, 900)):

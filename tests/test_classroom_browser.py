@@ -10,7 +10,7 @@ import pytest
 
 from classes import store
 
-from .test_browser import check_first_step, wait_idle
+from .test_browser import check_first_step, keep, wait_idle
 
 pytestmark = pytest.mark.browser
 
@@ -68,3 +68,46 @@ def test_a_class_is_started_joined_from_phones_and_resumed_after_a_reload(app_ur
     again.get_by_text("Korak 2 od").first.wait_for(timeout=30_000)
     assert "class=" in again.url and "student=" in again.url
     assert len(store.export(code, key)) == 2  # a reload stores nothing twice
+
+
+def test_show_it_on_one_phone_then_a_stale_phone_s_answer_locks_nobody_out(app_url, chromium,
+                                                                         tmp_path):
+    """One student on two phones (issue 66): "Pokaži" on the first, then the right answer
+    typed on the second, which has not reloaded — told the step was already done elsewhere
+    (never "Tačno"), stored; every later open of the link, on either phone, goes on at step
+    2; a link with another instant (``at=100``) practises the class's, said in a note. The
+    lecturer's export and the store's fold say "revealed"."""
+    from classes import summary
+    from methods.progress import REVEALED
+
+    browser, phone = chromium
+    code, key = store.create("zbirka-3.1", "plans")
+    token = store.join(code, "ana")
+    link = f"{app_url}/velocity_plans?class={code}&student={token}&lang=sr&scene=zbirka-3.1"
+    phones = []
+    for _ in range(2):
+        page = browser.new_context(**phone, locale="sr-RS").new_page()
+        page.goto(link)
+        page.locator("[data-testid='stForm'] input").first.wait_for(timeout=60_000)
+        wait_idle(page)
+        phones.append(page)
+    first, second = phones
+    first.get_by_role("button", name="Pokaži").tap()
+    first.get_by_text("Prikazano posle 0 od 3").first.wait_for(timeout=30_000)
+    check_first_step(second, verdict="Info")  # stale: right, but the step was shown meanwhile
+    text = second.inner_text("[data-testid=stMain]")
+    assert "Već urađeno na drugom uređaju" in text and "Tačno" not in text.split("Već urađeno")[0][-200:]
+    second.screenshot(path=str(tmp_path / "class-stale-phone.png"))
+    keep(tmp_path / "class-stale-phone.png")
+    for page in phones:
+        page.reload()
+        page.get_by_text("Korak 2 od").first.wait_for(timeout=60_000)
+        assert not page.locator("[data-testid='stException']").count()
+        assert "nije uspelo" not in page.inner_text("[data-testid=stMain]")
+    rows = store.export(code, key)
+    assert [r["diagnosis"] for r in rows] == [REVEALED, "ok"]
+    assert summary.report(rows, [rows[0]["step"]])[0]["steps"] == {rows[0]["step"]: "revealed"}
+    other = browser.new_context(**phone, locale="sr-RS").new_page()
+    other.goto(link + "&at=100&omega=7")
+    other.get_by_text("nisu korišćene").first.wait_for(timeout=60_000)
+    assert "at=100" not in other.url

@@ -27,6 +27,13 @@ CHARTED = "first_paint_charted"  # this run has sent a chart
 PAINTED = "first_paint_painted"  # a chart reported its paint: the run it starts is owed whole
 
 
+class PageDone(Exception):
+    """Raised where a page has drawn all it shows this visitor (a seated student's practice):
+    app.py ends the run there as a run that finished. Not ``st.stop()``: after it, what
+    app.py writes at a run's end (``end_run``) did not stay, so the page's first run never
+    ended and its chart's paint never brought the whole page."""
+
+
 def begin_run(page: str) -> None:
     """Called by app.py before page ``page`` (its URL path) runs."""
     st.session_state[PAGE] = page
