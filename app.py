@@ -5,7 +5,7 @@ import streamlit as st
 from ui.boundary import boundary
 from ui.chapters import BUILDER, CHAPTERS, CLASSROOM, VARIANTS
 from ui.classroom import sidebar_join
-from ui.firstpaint import PageDone, begin_run, end_run
+from ui.firstpaint import begin_run, end_run
 from ui.i18n import current, language_picker, t
 from ui.layout import frame_css
 from ui.present import projector_switch
@@ -51,7 +51,5 @@ with boundary():  # no traceback on any page: one sentence, and the server's log
     begin_run(page.url_path)
     try:
         page.run()
-    except PageDone:  # the page drew all it shows (ui.practice.class_only)
-        pass
     finally:  # (st.stop() and a rerun leave run() by an exception)
         end_run()

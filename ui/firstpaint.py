@@ -19,19 +19,14 @@ fragment starts a fragment's run with its paint: that run becomes the page's
 
 from __future__ import annotations
 
+from typing import NoReturn
+
 import streamlit as st
 
 PAGE = "first_paint_page"  # the page this run draws (its URL path)
 SEEN = "first_paint_seen"  # the pages that have finished a run in this session
 CHARTED = "first_paint_charted"  # this run has sent a chart
 PAINTED = "first_paint_painted"  # a chart reported its paint: the run it starts is owed whole
-
-
-class PageDone(Exception):
-    """Raised where a page has drawn all it shows this visitor (a seated student's practice):
-    app.py ends the run there as a run that finished. Not ``st.stop()``: after it, what
-    app.py writes at a run's end (``end_run``) did not stay, so the page's first run never
-    ended and its chart's paint never brought the whole page."""
 
 
 def begin_run(page: str) -> None:
@@ -44,6 +39,16 @@ def begin_run(page: str) -> None:
 def end_run() -> None:
     """Called by app.py after the page ran (or stopped)."""
     st.session_state[SEEN] = st.session_state.get(SEEN, frozenset()) | {st.session_state[PAGE]}
+
+
+def finish() -> NoReturn:
+    """The page drew all it shows this visitor (a seated student's practice): its run ends
+    here, as a run that finished. ``st.stop()`` alone is not enough: what app.py writes at
+    a run's end after it (``end_run``) did not stay, so the page's first run never ended
+    and its chart's paint never brought the whole page."""
+    if PAGE in st.session_state:  # (run through app.py)
+        end_run()
+    st.stop()
 
 
 def painted() -> None:

@@ -18,7 +18,7 @@ from methods.practice import RULES, Step, Verdict, hint_keys, polar, ratio_digit
 from methods.progress import Progress, verdict_of
 from ui import classroom
 from ui.export import chart
-from ui.firstpaint import PageDone
+from ui.firstpaint import finish
 from ui.fragments import rerun_here
 from ui.i18n import kept_language, num, t
 from ui.inview import into_view
@@ -62,7 +62,7 @@ def class_only(*keys: str) -> None:
     ``keys``) gets the class's practice and nothing else: no readings, tables, book values,
     self-check box, other tabs or figures that would show what the steps ask, whatever the
     link or the sliders say — the class's scene, instant and method, a note naming the
-    link's values left out. Then the page's run ends (PageDone). A link to a class while
+    link's values left out. Then the page's run ends (``finish``). A link to a class while
     its store cannot be reached waits for it (practice never starts unstored). Anyone
     else: nothing here."""
     if not st.query_params.get("class") or not st.query_params.get("student"):
@@ -70,7 +70,7 @@ def class_only(*keys: str) -> None:
     seated = next((s for s in map(classroom.seat, keys) if s), None)
     if classroom.waiting_for_store():
         classroom.seat_refused()  # (the waiting notice, which reruns the page when it answers)
-        raise PageDone
+        finish()
     if seated is None:
         return  # not this page's class, or no such student: said above, the page as it is
     known = classroom.class_steps(seated)
@@ -84,7 +84,7 @@ def class_only(*keys: str) -> None:
     if ignored:
         st.info(t("class.fixed", names=", ".join(ignored)), icon=":material/lock:")
     panel(steps, key, t(sheet) if sheet else "", drawable)
-    raise PageDone
+    finish()
 
 
 def hint(step: Step, verdict: Verdict) -> str:
