@@ -8,6 +8,7 @@ Every count is of students, not of tries: a student who tried five times is one 
 
 from __future__ import annotations
 
+import json
 from collections import Counter, defaultdict
 from dataclasses import dataclass, field
 
@@ -144,6 +145,12 @@ def of_class(found: Class, rows: list[dict], everyone: dict[str, str]) -> dict:
     return {"code": found.code, "method": found.method, "scene": found.scene, "at": found.at,
             "test": found.test, "closed": found.closed.isoformat() if found.closed else None,
             "steps": steps, "students": report(rows, steps, found.rules, everyone)}
+
+
+def as_json(said: dict) -> str:
+    """A class's summary (``of_class``) as ``class summary --json`` prints it and the live
+    view's *Outcomes* download saves it: the same bytes."""
+    return json.dumps(said, ensure_ascii=False, allow_nan=False) + "\n"
 
 
 def bands(values: dict[str, float], count: int = 3) -> dict[str, tuple[float, float]]:

@@ -7,11 +7,11 @@ from __future__ import annotations
 
 import json
 
-from exams.moodle import left_out
-from exams.variants import VariantError, answers, from_code, symbol
+from exams.judged import judged_steps, table
+from exams.variants import VariantError, from_code
 from mechanisms import SceneError, load_preset, preset_ids
 from mechanisms.typed import Refused, parse
-from methods.judge import judge, value_step
+from methods.judge import judge
 
 from .practice import hint
 
@@ -28,20 +28,19 @@ def add(sub) -> None:
     p.set_defaults(run=_check)
 
 
-def _named(text: str) -> tuple[object, dict]:
-    """The scene and its values by name: a variant's key, or a preset's own."""
+def _named(text: str) -> dict:
+    """A task's (a preset id's) or a variant's judged values by name (exams.judged)."""
     if text in preset_ids():
-        scene = load_preset(text)
-        return scene, {a.key: a for a in answers(scene, scene)}
+        return {a.key: (a, step) for a, step in table(load_preset(text))}
     try:
         variant = from_code(text)  # a mistyped code: said in words, exit code 2
     except VariantError as exc:
         raise SceneError(exc.args[0]) from None
-    return variant.scene, {a.key: a for a in variant.key}
+    return {a.key: (a, step) for a, step in judged_steps(variant.scene, variant.key)}
 
 
 def _check(args) -> int:
-    scene, named = _named(args.scene)
+    named = _named(args.scene)
     if args.name not in named:
         raise SceneError(f"check: {args.scene} has no value named {args.name!r}; it has "
                          f"{', '.join(sorted(named))}")
@@ -50,9 +49,7 @@ def _check(args) -> int:
     except Refused as why:
         raise SceneError(f"check: {args.value!r} is not one number ({why.reason.replace('_', ' ')}"
                          f"{'; write a point, or --language sr' if why.reason == 'comma' else ''})") from None
-    answer = named[args.name]
-    step = value_step(answer.key, answer.value, answer.unit, answer.tolerance,
-                      left_out(scene).get(answer.key, ()), symbol(answer.key))
+    answer, step = named[args.name]
     verdict = judge(step, typed)
     out = {"name": answer.key, "exact": answer.value, "unit": answer.unit,
            "tolerance": step.tolerance, "diagnosis": verdict.diagnosis,

@@ -94,7 +94,7 @@ def _summary(args) -> int:
     found = store.opened(args.code, args.key)
     said = summary.of_class(found, store.export(args.code, args.key), store.roster(found))
     if args.json:
-        print(json.dumps(said, ensure_ascii=False, allow_nan=False))
+        sys.stdout.write(summary.as_json(said))
         return 0
     print(f"class {found.code}: {found.method} on {found.scene[:60]}"
           + (" (a test, closed)" if found.test and found.closed else " (a test, open)" if found.test else ""))

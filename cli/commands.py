@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import csv
 import json
+import re
 import sys
 from pathlib import Path
 
@@ -55,9 +56,22 @@ def main(argv: list[str] | None = None) -> int:
         return 3
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse, with a value typed as a person types it taken for a value even when it is
+    negative: argparse takes "-4.5" for a number but "-4,51716" (a decimal comma) and
+    "-1e0" for options, and stopped with a usage error. None of our options looks like a
+    number, so nothing is lost. Sub-commands get this class too (``add_subparsers``)."""
+
+    NEGATIVE = re.compile(r"^-(\d+([.,]\d*)?|[.,]\d+)([eE][-+]?\d+)?$")
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = self.NEGATIVE
+
+
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="python -m solvers",
-                                     description="Mehanizmi solvers from the command line.")
+    parser = Parser(prog="python -m solvers",
+                    description="Mehanizmi solvers from the command line.")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("list", help="list the presets with their titles")
     p.set_defaults(run=_list)

@@ -11,21 +11,18 @@ from pathlib import Path
 from figures.plans import plain
 from mechanisms import SceneError
 from mechanisms.messages import KEEP, strings
-from methods.practice import Step, Verdict, answer_of, hint_keys, ratio_digits
+from methods.practice import Step, Verdict, answer_of, hint_texts
 from methods.progress import Progress
 from methods.practice_steps import steps_for
 
 
 def hint(step: Step, verdict: Verdict, language: str = "en") -> str:
-    """The hint for a diagnosis, in the strings table's words (English unless ``language``
-    says "sr"; a term's name as text with sub- and superscripts, aᵏ_A4A, not LaTeX source)."""
-    comma = language == "sr"
-    ratio = f"{verdict.ratio:.{ratio_digits(verdict.ratio)}g}" if verdict.ratio is not None else ""
-    values = dict(ratio=ratio.replace(".", ",") if comma else ratio,
-                  term=plain(verdict.term) if verdict.term else "",
-                  turn=f"{verdict.turn:.0f}" if verdict.turn is not None else "")
+    """The hint for a diagnosis (methods.practice.hint_texts, the words every surface says),
+    in English unless ``language`` says "sr" (a decimal comma; a term's name as text with
+    sub- and superscripts, aᵏ_A4A, not LaTeX source)."""
     table = strings(language)
-    return " ".join(KEEP.sub(r"\1", table[key]).format(**values) for key in hint_keys(step, verdict))
+    return " ".join(text.render(lambda key: KEEP.sub(r"\1", table[key]), language == "sr")
+                    for text in hint_texts(step, verdict, plain))
 
 
 def graded(steps: list[Step], answers: dict) -> dict:

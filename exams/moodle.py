@@ -36,23 +36,16 @@ from dataclasses import dataclass
 from xml.sax.saxutils import escape
 
 from exams.sheets import drawing_svg, length_scale
+from exams.judged import judged_steps
 from exams.variants import Answer, Variant, VariantSet, symbol
 from figures.balancing import end_view_figure, side_view_figure
 from figures.gears import schematic_figure
-from figures.plans import plain
 from figures.svg import figure_svg
 from mechanisms.gears import GearTrain
 from mechanisms.messages import Text
 from mechanisms.rotor import Rotor
-from mechanisms.schema import Scene
-from methods import practice_steps
-from methods.plans import build
-from methods.judge import left_out_sizes, value_step
-from methods.practice import Step, Term, Verdict, hint_keys, scalar_mistakes
-from methods.scales import plan_scales
+from methods.practice import TURNS, Step, Verdict, hint_texts, scalar_mistakes
 from solvers.balancing import unit
-from solvers.diagnostics import Unsolvable, solve_instant
-from solvers.structure import StructureError
 
 WIDE = 1e9  # "the right sign, another size": up to this many times the key (wider, and a float
 # no longer tells a small response on the other side of 0 from the interval's edge)
@@ -95,41 +88,22 @@ class Choice:
 
 
 def asked_steps(variant: Variant) -> list[tuple[Answer, Step]]:
-    """Each asked value of the variant as the judge's step (methods.judge.value_step): its
-    key, the one tolerance rule (a drawing's where the key has one), and the value without
-    each term a plan's sum adds, where the value is the size of a plan's sum (|v_C|, |a_C|)."""
-    terms = left_out(variant.scene)
-    return [(answer, value_step(answer.key, answer.value, answer.unit, answer.tolerance,
-                                terms.get(answer.key, ()), symbol(answer.key)))
-            for answer in variant.key if answer.asked]
-
-
-def left_out(scene) -> dict[str, tuple[Term, ...]]:
-    """For a linkage: result key → the sizes of its plan's sum with one term left out."""
-    if not isinstance(scene, Scene):
-        return {}
-    try:
-        plans = build(solve_instant(scene, None))
-    except (Unsolvable, StructureError, NotImplementedError, KeyError):
-        return {}  # a class III group: its plans are not drawn
-    out = {}
-    names = {n.lower(): n for n in scene.point_names}
-    for step in practice_steps.plans(plans, plan_scales(scene, plans)):
-        kind, _, point = step.id.partition(".")
-        if step.rule == "sum" and kind in ("v", "a") and point in names:
-            out[f"points.{names[point]}.{kind}"] = tuple(
-                Term(plain(t.name), t.value) for t in left_out_sizes(step))
-    return out
+    """Each asked value of the variant as the judge's step (exams.judged: the one table)."""
+    return [(answer, step) for answer, step in judged_steps(variant.scene, variant.key)
+            if answer.asked]
 
 
 def choices(step: Step) -> list[Choice]:
     """The answers of one asked value, in the order Moodle must try them."""
     exact = float(step.expected)
     out = [Choice("ok", exact, step.tolerance, 100, _hint(step, Verdict("ok")))]
+    if step.unit == "°":  # a direction a whole turn away is the same (methods.practice)
+        out += [Choice("ok", exact + 360.0 * k, step.tolerance, 100, _hint(step, Verdict("ok")))
+                for n in range(1, TURNS + 1) for k in (-n, n)]
     out += [Choice(m.diagnosis, m.value, m.width, 0,
-                   _hint(step, Verdict(m.diagnosis, ratio=m.ratio, term=m.term)))
+                   _hint(step, Verdict(m.diagnosis, ratio=m.ratio, term=m.term, unit=m.unit)))
             for m in scalar_mistakes(step)]
-    if abs(exact) > step.tolerance:  # the right sign, another size: (0, WIDE·|x|] on its side
+    if abs(exact) > step.tolerance and step.unit != "°":  # the right sign, another size: (0, WIDE·|x|] on its side
         out.append(Choice("wrong", 0.0, 0.0, 0, _hint(step, Verdict("wrong"))))  # (0 is no size)
         half = math.copysign(WIDE * abs(exact) / 2, exact)
         out.append(Choice("length", half, abs(half), 0, _hint(step, Verdict("length"))))
@@ -138,13 +112,8 @@ def choices(step: Step) -> list[Choice]:
 
 
 def _hint(step: Step, verdict: Verdict) -> tuple[Text, ...]:
-    """Practice's hint for the verdict; for "the right sign, another size", whose ratio each
-    response has its own, the same words without it."""
-    if verdict.diagnosis == "length":
-        return (Text("practice.value_off"),)
-    values = {"ratio": verdict.ratio if verdict.ratio is not None else "", "term": verdict.term,
-              "turn": ""}
-    return tuple(Text(key, **values) for key in hint_keys(step, verdict))
+    """Practice's hint for the verdict, in the same words (methods.practice.hint_texts)."""
+    return hint_texts(step, verdict)
 
 
 def matching(parts: list[Choice], response: float) -> Choice | None:

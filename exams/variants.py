@@ -29,10 +29,9 @@ from mechanisms.messages import Text
 from mechanisms.rotor import Rotor
 from mechanisms.schema import Scene
 from mechanisms.writer import to_text
-from methods.plans import build, readings
-from methods.scales import PRECISION_CM
+from methods.judge import drawing_errors
 from reports.values import exact_values
-from solvers.balancing import balance, graphical_error
+from solvers.balancing import balance
 from solvers.diagnostics import Unsolvable, solve_instant
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError
@@ -255,8 +254,8 @@ def unit_of(key: str) -> str:
 
 # what the chapter pages' self-check boxes grade, as result keys: the plans page's speeds,
 # accelerations, ω and ε (not the driver's: given); the kinetostatics page's M_p or F_p, P
-# and |F_pq|; the gear page's ω of every member (a rotor's page grades its unknowns: the
-# book's own keys)
+# and |F_pq|; the gear page's ω of every member (a rotor's page grades each plane's
+# unknowns, ``_self_checked``)
 SELF_CHECKED = re.compile(r"points\.[^.]+\.[va]|members\.\d+\.(omega|epsilon)|"
                           r"driving\.(torque|force|power)|reactions\.(\d+)-(\d+)\.magnitude")
 
@@ -266,7 +265,7 @@ def answers(scene, task_scene) -> list[Answer]:
     self-check grades besides; exact for ``scene``, with the error a drawing at the task's
     scales allows where the book reads it off a plan or a polygon."""
     exact = exact_values(dataclasses.replace(scene, book=task_scene.book))  # a train's asked ratios
-    tolerance = _tolerances(scene, task_scene)
+    tolerance = drawing_errors(scene, task_scene)
     asked = [key for key in task_scene.book if key in exact]
     return ([Answer(key, exact[key], unit_of(key), tolerance.get(key)) for key in asked]
             + [Answer(key, exact[key], unit_of(key), tolerance.get(key), asked=False)
@@ -274,8 +273,13 @@ def answers(scene, task_scene) -> list[Answer]:
 
 
 def _self_checked(key: str, scene) -> bool:
+    if isinstance(scene, Rotor):  # each plane's unknown (its mass, or its radius) and angle
+        part = re.fullmatch(r"corrections\.([^.]+)\.(mass|radius|angle_deg)", key)
+        plane = part and scene.corrections.get(part.group(1))
+        return bool(plane) and (part.group(2) == "angle_deg"
+                                or (part.group(2) == "mass") == (plane.mass is None))
     found = SELF_CHECKED.fullmatch(key)
-    if not found or isinstance(scene, Rotor):
+    if not found:
         return False
     if isinstance(scene, Scene):
         parts = key.split(".")
@@ -286,51 +290,6 @@ def _self_checked(key: str, scene) -> bool:
         if parts[0] == "reactions":
             return int(found.group(3)) < int(found.group(4))  # F_pq once: |F_qp| = |F_pq|
     return True
-
-
-def _tolerances(scene, task_scene) -> dict[str, float]:
-    if isinstance(scene, Rotor):
-        return _rotor_tolerances(scene)
-    if not isinstance(scene, Scene) or not task_scene.scales:
-        return {}
-    scales = {"L": 0.1, "v": 1.0, "a": 10.0, **task_scene.scales}
-    out = {}
-    for point in scene.point_names:
-        out[f"points.{point}.v"] = PRECISION_CM * scales["v"]
-        out[f"points.{point}.a"] = PRECISION_CM * scales["a"]
-    for pair in scene.pairs:
-        out[f"sliders.{pair.name}.v"] = PRECISION_CM * scales["v"]
-        out[f"sliders.{pair.name}.a"] = PRECISION_CM * scales["a"]
-    if "F" in scales:
-        for a in scene.members:
-            for b in [1, *scene.members]:
-                out[f"reactions.{a}-{b}.magnitude"] = PRECISION_CM * scales["F"]
-                out[f"reactions.{b}-{a}.magnitude"] = PRECISION_CM * scales["F"]
-    try:
-        plans = build(solve_instant(scene, None))
-    except (Unsolvable, StructureError, NotImplementedError, KeyError):
-        return out  # a class III group: its plans are not drawn here
-    for r in readings(plans, scales, PRECISION_CM):
-        name, member = r.symbol.split("_", 1)
-        quantity = {"\\omega": "omega", "\\varepsilon": "epsilon"}.get(name)
-        if quantity:
-            out[f"members.{member.strip('{}')}.{quantity}"] = r.uncertainty
-    return out
-
-
-def _rotor_tolerances(rotor: Rotor) -> dict[str, float]:
-    """As the rotor page: a polygon drawn at a scale that fits 10 cm, read to half a mm."""
-    found = balance(rotor)
-    out = {}
-    sizes = [m.mass * m.radius for m in rotor.masses]
-    scale = max(sizes) / 0.1  # kg·m per metre of drawing
-    for plane, f in found.corrections.items():
-        length, angle = graphical_error(f.mass * f.radius, scale, PRECISION_CM / 100,
-                                        vectors=len(sizes) + 1)
-        out[f"corrections.{plane}.mass"] = length / f.radius
-        out[f"corrections.{plane}.radius"] = length / f.mass
-        out[f"corrections.{plane}.angle_deg"] = math.degrees(angle)
-    return out
 
 
 def from_code(text: str) -> Variant:

@@ -23,7 +23,10 @@ from __future__ import annotations
 
 import cmath
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+
+from mechanisms.messages import Text
 
 # each diagnosis and each kind of step, by the strings that say it (locales/*.toml); the pages
 # and the command line format them in their own language
@@ -41,9 +44,9 @@ RULES = {"relative": "practice.rule_relative", "normal": "practice.rule_normal",
          "balancing": "practice.rule_balancing", "stage": "practice.rule_stage",
          "polygon": "practice.rule_polygon", "correction": "practice.rule_correction"}
 ANGLE_READ = math.radians(1.0)  # a direction read with a protractor (as the polygons' error)
-RELATIVE = 0.01  # a value computed from an equation by hand: ±1 %
 SLIP = 0.02  # an answer within 2 % of a slipped value is that slip
 TRIES = 3  # after three tries the step is revealed
+TURNS = 2  # a direction typed up to this many whole turns away is the same direction
 DIAGNOSES = ("ok", "sense", "direction", "length", "scale", "missing-term", "wrong", "none")
 
 
@@ -98,6 +101,7 @@ class Verdict:
     ratio: float | None = None
     term: str = ""
     turn: float | None = None
+    unit: str = ""  # for a unit slip ("scale"): the unit the answer was written in
 
     @property
     def ok(self) -> bool:
@@ -157,6 +161,14 @@ def _close(a: complex, b: complex, tolerance: float) -> bool:
             and abs(cmath.phase(a / b)) <= ANGLE_READ if a else False)
 
 
+# the units a value of each unit is often written in by mistake, and how many of them make
+# one of it: a kg·m² written in kg·mm² is a million times too large, and is a unit slip,
+# not a length or a power of ten
+UNIT_SLIPS = {"m": (("mm", 1e3), ("cm", 1e2)), "kg·m": (("kg·mm", 1e3),),
+              "kg·m²": (("kg·mm²", 1e6),), "N·m": (("N·mm", 1e3),), "N": (("kN", 1e-3),),
+              "°": (("rad", math.pi / 180),), "rad": (("°", 180 / math.pi),)}
+
+
 def _slips(step: Step) -> list[float]:
     """The factors of a unit or scale slip: powers of ten, the drawing scale and its inverse
     (a length on the plan read as the value, or the other way round)."""
@@ -191,6 +203,9 @@ def _vector(step: Step, answer: complex) -> Verdict:
 
 
 def _slipped(step: Step, answer: complex, exact: complex) -> Verdict | None:
+    for unit, factor in UNIT_SLIPS.get(step.unit, ()):
+        if abs(answer - exact * factor) <= max(step.tolerance * factor, SLIP * abs(exact * factor)):
+            return Verdict("scale", ratio=factor, unit=unit)
     for factor in _slips(step):
         if abs(answer - exact * factor) <= max(step.tolerance * factor, SLIP * abs(exact * factor)):
             return Verdict("scale", ratio=factor)
@@ -208,17 +223,24 @@ class Mistake:
     width: float
     ratio: float | None = None
     term: str = ""
+    unit: str = ""
 
 
 def scalar_mistakes(step: Step) -> list[Mistake]:
     """The usual mistakes of a scalar step, in the order the grader tries them after the
-    right answer: a term left out, the sign reversed, a unit or scale slip (a power of
-    ten). Practice grades by them, and the Moodle export (exams/moodle.py) lists them as
-    its answers with the same feedback."""
+    right answer: a term left out, the sign reversed, a unit slip (kg·mm² for kg·m²), a
+    scale slip (a power of ten); for a direction (°), the opposite direction (half a turn
+    either way) and radians for degrees. Practice grades by them, and the Moodle export
+    (exams/moodle.py) lists them as its answers with the same feedback."""
     exact, tol = _real(step.expected), step.tolerance
     out = [Mistake("missing-term", _real(term.value), tol, term=term.name) for term in step.missing]
+    units = [Mistake("scale", exact * f, max(tol * f, SLIP * abs(exact * f)), ratio=f, unit=u)
+             for u, f in UNIT_SLIPS.get(step.unit, ())]
+    if step.unit == "°":
+        return out + [Mistake("sense", exact + half, tol) for half in (180.0, -180.0)] + units
     if abs(exact) > tol:
         out.append(Mistake("sense", -exact, tol))
+        out += units
         out += [Mistake("scale", exact * f, max(tol * f, SLIP * abs(exact * f)), ratio=f)
                 for f in _slips(step)]
     return out
@@ -226,14 +248,26 @@ def scalar_mistakes(step: Step) -> list[Mistake]:
 
 def _scalar(step: Step, answer: float) -> Verdict:
     exact, tol = _real(step.expected), step.tolerance
-    if abs(answer - exact) <= tol:
+    # a direction (°) is the same one or two whole turns away (as the Moodle bank's answers
+    # list them; a value a thousand times too large is no direction): compared as the
+    # nearest to the right one
+    near = step.unit == "°" and abs(answer - exact) <= TURNS * 360.0 + tol
+    turned = exact + equivalent_turn(answer - exact) if near else answer
+    if abs(turned - exact) <= tol:
         return Verdict("ok")
     for m in scalar_mistakes(step):
-        if abs(answer - m.value) <= m.width:
-            return Verdict(m.diagnosis, ratio=m.ratio, term=m.term)
-    if abs(exact) > tol and answer != 0 and math.copysign(1, answer) == math.copysign(1, exact):
+        seen = turned if m.diagnosis in ("sense", "missing-term") else answer
+        if abs(seen - m.value) <= m.width:
+            return Verdict(m.diagnosis, ratio=m.ratio, term=m.term, unit=m.unit)
+    if step.unit != "°" and abs(exact) > tol and answer != 0 \
+            and math.copysign(1, answer) == math.copysign(1, exact):
         return Verdict("length", ratio=answer / exact)
     return Verdict("wrong")
+
+
+def equivalent_turn(difference: float) -> float:
+    """An angle's difference from the right one, in (−180°, 180°]: −78,92° is 281,08°."""
+    return 180.0 - (180.0 - difference) % 360.0
 
 
 def ratio_digits(ratio: float) -> int:
@@ -243,9 +277,30 @@ def ratio_digits(ratio: float) -> int:
 
 def hint_keys(step: Step, verdict: Verdict) -> list[str]:
     """The strings that say a verdict: its diagnosis — of a value and its sign for a scalar
-    step, of an arrow otherwise — and for a step drawn the wrong way or not at all the
-    book's rule for that kind of step (without the answer; none for a step with no rule)."""
-    keys = [(VALUE_HINTS if step.kind == "scalar" else HINTS)[verdict.diagnosis]]
+    step, of an arrow otherwise; a unit slip as one — and for a step drawn the wrong way or
+    not at all the book's rule for that kind of step (without the answer; none for a step
+    with no rule)."""
+    if verdict.unit:
+        keys = ["practice.value_unit" if step.kind == "scalar" else "practice.hint_unit"]
+    else:
+        keys = [(VALUE_HINTS if step.kind == "scalar" else HINTS)[verdict.diagnosis]]
     if verdict.diagnosis in ("sense", "direction", "length", "wrong") and step.rule:
         keys.append(RULES[step.rule])
     return keys
+
+
+def hint_texts(step: Step, verdict: Verdict, term: Callable[[str], str] = str) -> tuple[Text, ...]:
+    """The hint of a verdict as sentences to render in any language — the only place its
+    words and numbers are chosen: the practice panel, the self-check box, ``check``,
+    ``practice --answers`` and the Moodle bank's feedback all render these. A ratio with the
+    digits that show how far it is from 1 (1000, 0,221, 1,006); a scalar's "right sign,
+    another size" without one, as Moodle's band of sizes cannot have one; ``term`` writes a
+    left-out term's name (LaTeX → text)."""
+    if step.kind == "scalar" and verdict.diagnosis == "length":
+        return (Text("practice.value_off"),) + tuple(Text(k) for k in hint_keys(step, verdict)[1:])
+    ratio = (float(f"{verdict.ratio:.{ratio_digits(verdict.ratio)}g}")
+             if verdict.ratio is not None else "")
+    values = {"ratio": ratio, "term": term(verdict.term) if verdict.term else "",
+              "turn": float(f"{abs(verdict.turn):.2g}") if verdict.turn else "",
+              "unit": step.unit, "wrote": verdict.unit}
+    return tuple(Text(key, **values) for key in hint_keys(step, verdict))

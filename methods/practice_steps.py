@@ -33,15 +33,11 @@ from .force_steps import latex_name, steps as force_construction
 from .gear_steps import speed_steps
 from .lever_steps import construction as lever_construction
 from .plans import POLE, Plans, build, is_construction, readings
-from .practice import RELATIVE, Step, Term
+from .judge import tolerance
+from .practice import Step, Term
 from .scales import PRECISION_CM, plan_scales, polygon_scale
 
 UNITS = {"v": "m/s", "a": "m/s²"}
-
-
-def _by_hand(value: float, floor: float = 1e-12) -> float:
-    """The tolerance of a value computed by hand from an equation (never zero)."""
-    return max(RELATIVE * abs(value), floor)
 
 
 def _tex_image(image: str) -> str:
@@ -118,7 +114,7 @@ def _rates(plans_: Plans, scales: dict[str, float]) -> list[Step]:
             continue
         for name, value, unit, symbol in (("omega", w, "s⁻¹", f"\\omega_{{{member}}}"),
                                           ("epsilon", e, "s⁻²", f"\\varepsilon_{{{member}}}")):
-            tol = max(error.get(symbol, RELATIVE * abs(value)), 1e-12)
+            tol = tolerance(value, error.get(symbol))  # (the one rule: methods.judge)
             out.append(Step(f"{name}.{member}", f"{symbol} of member {member}, signed "
                             f"({unit}, counter-clockwise positive)", symbol, "scalar", unit,
                             value, tol, 1.0, "", rule="rate"))
@@ -134,11 +130,13 @@ def forces(k: Kinetostatics, index: int, scale_f: float) -> list[Step]:
             out += _closing_steps(st, n, scale_f)
             continue
         for name, (value, unit) in st.found.items():
-            tol = _by_hand(value, max(PRECISION_CM * scale_f, 1e-12) if unit == "N" else 1e-12)
+            tol = tolerance(value)  # computed from the equation (the one rule: methods.judge)
+            missing = balancing_missing(k, index)[1] if name == "M_p" else ()
             out.append(Step(f"forces.{n}.{name}", f"{name} from the {st.kind} equation of "
                             f"members {st.members} ({unit})", latex_name(name), "scalar", unit,
                             value, tol,
-                            scale_f if unit == "N" else 1.0, f"F{n}", rule="moment"))
+                            scale_f if unit == "N" else 1.0, f"F{n}", missing=missing,
+                            rule="balancing" if name == "M_p" else "moment"))  # (as judge.rule_of)
     return out
 
 
@@ -179,28 +177,40 @@ def lever(k: Kinetostatics, index: int) -> list[Step]:
     for i, m in enumerate(construction.moments):
         out.append(Step(f"lever.{i}.{m.name}", f"the moment of {m.name} about the pole of the "
                         "turned plan, counter-clockwise positive (N·m/s)", f"{m.name}\\cdot h",
-                        "scalar", "N·m/s", m.value, _by_hand(m.value),
+                        "scalar", "N·m/s", m.value, tolerance(m.value),
                         rule="moment"))
     arm = construction.balancing_arm
-    missing = tuple(Term(m.name, construction.balancing + m.value / arm) for m in construction.moments)
+    missing, torque_missing = balancing_missing(k, index)
     terms = tuple(Term(m.name, -m.value / arm) for m in construction.moments)
     out.append(Step("lever.F_p", "the balancing force F_p at the crank pin's image (N)", "F_p",
-                    "scalar", "N", construction.balancing, _by_hand(construction.balancing), 1.0,
+                    "scalar", "N", construction.balancing, tolerance(construction.balancing), 1.0,
                     "", 0j, terms, missing, "balancing"))
     if construction.torque is not None:
-        length = k.motion.scene.members[DRIVER].length
         out.append(Step("lever.M_p", f"the driving torque M_p = F_p·{construction.crank} (N·m)",
                         "M_p", "scalar", "N·m", construction.torque,
-                        _by_hand(construction.torque), 1.0, "", 0j, (),
-                        tuple(Term(t.name, t.value * length) for t in missing), "balancing"))
+                        tolerance(construction.torque), 1.0, "", 0j, (), torque_missing,
+                        "balancing"))
     return out
+
+
+def balancing_missing(k: Kinetostatics, index: int) -> tuple[tuple[Term, ...], tuple[Term, ...]]:
+    """The balancing force F_p and the driving torque M_p with one force's moment left out
+    (Zhukovsky's lever): what a student who forgot that load gets — whichever way, the
+    lever or the force polygons, they found M_p."""
+    construction = lever_construction(k, index)
+    arm = construction.balancing_arm
+    force = tuple(Term(m.name, construction.balancing + m.value / arm) for m in construction.moments)
+    if construction.torque is None:
+        return force, ()
+    length = k.motion.scene.members[DRIVER].length
+    return force, tuple(Term(t.name, t.value * length) for t in force)
 
 
 def willis(solution: TrainSolution) -> list[Step]:
     """Each member's ω in the book's order (the inputs are given, not asked), signed."""
     return [Step(f"willis.{s.member}", f"ω{s.member}, signed (s⁻¹, counter-clockwise positive)",
                  f"\\omega_{{{s.member}}}", "scalar", "s⁻¹", s.omega,
-                 _by_hand(s.omega, 1e-9), rule="stage")
+                 tolerance(s.omega), rule="stage")
             for s in speed_steps(solution) if s.kind != "input"]
 
 

@@ -33,7 +33,7 @@ from ui.numbers import bound_link, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_start, scene_picker
-from ui.selfcheck import Quantity, answer_box
+from ui.selfcheck import Quantity, answer_box, computed
 from ui.url import seed
 
 page_title("pages/assur_groups.py")
@@ -155,13 +155,13 @@ def about_the_survey(base: Scene, scene: Scene, current: Motion, survey: Motion,
 
 def self_check(scene: Scene, structure, current: Motion) -> list[Quantity]:
     """What a student can check: W, the number of groups, each special point at the instant."""
-    quantities = [Quantity("W", float(degrees_of_freedom(scene)), ""),
-                  Quantity(t("assur.self_groups"), float(len(structure.groups)), "")]
+    quantities = [computed("W", float(degrees_of_freedom(scene)), ""),
+                  computed(t("assur.self_groups"), float(len(structure.groups)), "")]
     for name, p in current.special.items():
         z = complex(p.z[0])
         if np.isfinite(z):
-            quantities += [Quantity(f"x_{name} [m]", z.real, "m"), Quantity(f"y_{name} [m]", z.imag, "m"),
-                           Quantity(f"v_{name} [m/s]", float(abs(p.v[0])), "m/s")]
+            quantities += [computed(f"x_{name} [m]", z.real, "m"), computed(f"y_{name} [m]", z.imag, "m"),
+                           computed(f"v_{name} [m/s]", float(abs(p.v[0])), "m/s")]
     return quantities
 
 

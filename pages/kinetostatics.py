@@ -37,7 +37,7 @@ from ui.numbers import bound_link, last_value, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_speed, driver_start, scene_picker
-from ui.selfcheck import Quantity, answer_box
+from ui.selfcheck import answer_box, named
 from ui.url import seed, url_toggle
 
 page_title("pages/kinetostatics.py")
@@ -438,13 +438,8 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
         if scene.book:
             with main:
                 book_section(scene, base, task_values(base))
-        with answer_slot.container():
-            unit = "N·m" if rotating else "N"
-            quantities = [Quantity(f"{'M_p' if rotating else 'F_p'} [{unit}]", float(k.driving[now]), unit),
-                          Quantity("P [W]", float(k.power[now]), "W")]
-            quantities += [Quantity(f"|F_{p}{q}| [N]", float(r.magnitude[now]), "N")
-                           for (p, q), r in sorted(k.reactions.items()) if p < q]
-            answer_box(quantities, key="self")
+        with answer_slot.container():  # M_p or F_p, P, |F_pq|, parts (exams.judged), as the page counts inertia
+            answer_box(lambda: named(scene.with_(inertia=st.session_state["inertia"]), base), key="self")
         with main:
             speed_panel("kinetostatics", scene.id, ("kinetostatics",))
 

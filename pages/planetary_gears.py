@@ -25,7 +25,7 @@ from ui.layout import page_columns
 from ui.numbers import number_field
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
-from ui.selfcheck import Quantity, answer_box
+from ui.selfcheck import answer_box, named
 from ui.url import seed
 
 page_title("pages/planetary_gears.py")
@@ -169,7 +169,7 @@ def results() -> None:
                     st.latex(latex(total))
                     st.caption(t("gears.total_ratio"))
             method_doc("willis")
-    answer_box([Quantity(f"ω{m} [s⁻¹]", w, "s⁻¹") for m, w in solution.omega.items()], key="self")
+    answer_box(lambda: named(solution.train, base), key="self")  # (exams.judged: signed ω, ratios)
 
 
 with controls:

@@ -11,7 +11,6 @@ from figures.raw import RawFigure
 from figures.style import Look
 from mechanisms.schema import Scene
 from methods import practice_steps
-from methods.judge import left_out_sizes
 from methods.analytic import derivation, equations, solved_values
 from methods.contour import contour, free_points, latex as contour_latex
 from methods.plans import Plans, build, describe, readings
@@ -34,7 +33,7 @@ from ui.layout import page_columns
 from ui.numbers import bound_link, number_field
 from ui.present import look
 from ui.scenes import driver_speed, driver_start, scene_picker
-from ui.selfcheck import Quantity, answer_box
+from ui.selfcheck import answer_box, named
 from ui.url import seed
 
 SVG_CAPTIONS = {"v": "plans.svg_caption_v", "a": "plans.svg_caption_a"}
@@ -278,11 +277,8 @@ def at_the_instant(driven: Scene, scales: dict[str, float]) -> None:
         with tab_accuracy:
             accuracy_tab(scene, base, values, scales["precision_cm"])
     if not waiting():
-        with answer_slot.container():
-            sums = {s.symbol: left_out_sizes(s) for s in practice_steps.plans(plans, scales)
-                    if s.rule == "sum"}  # a point's v or a typed with a term forgotten
-            answer_box([Quantity(f"{plain(r.symbol)} [{r.unit}]", r.exact, r.unit, r.uncertainty,
-                                 sums.get(r.symbol, ())) for r in values], key="self")
+        with answer_slot.container():  # signed ω, ε and the task's tolerances (exams.judged)
+            answer_box(lambda: named(scene, base), key="self")
         with main:
             speed_panel("velocity_plans", scene.id, ("kinematics", "graphical"))
 

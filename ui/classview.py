@@ -11,7 +11,6 @@ that reruns every second and fetches only the checks stored since the last one.
 from __future__ import annotations
 
 import html
-import json
 from datetime import datetime
 
 import pandas as pd
@@ -294,7 +293,7 @@ def exports(found: Class, key: str, steps: list[Step]) -> None:
             everyone = store.roster(found)
         except ClassError:  # (the students seen in the checks)
             everyone = {}
-        return json.dumps(summary.of_class(found, done, everyone), ensure_ascii=False, allow_nan=False)
+        return summary.as_json(summary.of_class(found, done, everyone))
 
     cols = st.columns(4)
     cols[3].download_button(t("class.export_summary"), lambda: outcomes().encode("utf-8"),

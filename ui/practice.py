@@ -14,13 +14,13 @@ import streamlit as st
 
 from figures.plans import plain
 from figures.practice import practice_figure
-from methods.practice import RULES, Step, Verdict, hint_keys, polar, ratio_digits
+from methods.practice import RULES, Step, Verdict, hint_texts, polar
 from methods.progress import Progress, verdict_of
 from ui import classroom
 from ui.export import chart
 from ui.firstpaint import finish
 from ui.fragments import rerun_here
-from ui.i18n import kept_language, num, t
+from ui.i18n import current, kept_language, num, t
 from ui.inview import into_view
 from ui.numbers import Refused, number_field, refusal
 from ui.present import look
@@ -88,10 +88,11 @@ def class_only(*keys: str) -> None:
 
 
 def hint(step: Step, verdict: Verdict) -> str:
-    """The diagnosis in words, and the book's rule for the step where it helps."""
-    values = dict(ratio=num(verdict.ratio, ratio_digits(verdict.ratio)) if verdict.ratio is not None else "",
-                  term=plain(verdict.term), turn=num(abs(verdict.turn), 2) if verdict.turn else "")
-    return " ".join(t(key, **values) for key in hint_keys(step, verdict))
+    """The diagnosis in words (methods.practice.hint_texts: the words every surface says),
+    and the book's rule for the step where it helps, in the page's language."""
+    comma = current().startswith("sr")
+    return " ".join(text.render(lambda key: t(key), comma)
+                    for text in hint_texts(step, verdict, plain))
 
 
 def _state(key: str, steps: list[Step], seated: tuple[str, str] | None) -> dict:
