@@ -116,7 +116,7 @@ def rule_of(key: str, gears: bool = False) -> str:
         return "stage" if gears else "rate"
     if head.startswith("reactions.") and last in ("tangential", "normal"):
         return "moment"
-    if key in ("driving.torque", "driving.force"):
+    if head == "driving" and last in ("torque", "force"):
         return "balancing"
     return ""
 

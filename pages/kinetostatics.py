@@ -439,7 +439,7 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
             with main:
                 book_section(scene, base, task_values(base))
         with answer_slot.container():  # M_p or F_p, P, |F_pq|, parts (exams.judged), as the page counts inertia
-            answer_box(lambda: named(scene.with_(inertia=st.session_state["inertia"]), base), key="self")
+            answer_box(lambda: named(scene.with_loads(inertia=st.session_state["inertia"]), base), key="self")
         with main:
             speed_panel("kinetostatics", scene.id, ("kinetostatics",))
 

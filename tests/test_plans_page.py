@@ -79,7 +79,7 @@ def test_self_check_accepts_a_value_within_drawing_precision():
     index = next(i for i, o in enumerate(box.options) if o.startswith("v_C "))
     box.set_value(index).run()
     at.text_input(key="self_value").input("1.98").run()  # exact 1.959 m/s; ±0.025 m/s
-    assert at.success and "what a drawing at your scales allows" in at.success[0].value
+    assert at.success and "what a drawing at the task's scales allows" in at.success[0].value
     at.text_input(key="self_value").input("2.2").run()
     assert at.warning
 

@@ -66,10 +66,12 @@ def test_a_student_checks_a_graphical_answer():
     assert "decimal sign is a point" in at.error[-1].value and not at.success
     at.text_input(key="self_value").input("0.354").run()  # the first quantity: m_I [kg]
     assert at.success[0].value.startswith("Right")
-    at.text_input(key="self_value").input("0.358").run()  # 1.1 % off: within ±0.005 kg of a drawing
+    at.text_input(key="self_value").input("0.356").run()  # within the task's drawing: ±0.0025 kg
     assert at.success[0].value.startswith("Right") and "what a drawing" in at.success[0].value
+    at.text_input(key="self_value").input("0.358").run()  # as `check` says: outside it
+    assert at.warning and not at.success
     at.text_input(key="self_value").input("0.5").run()
-    assert "the value is not: 1.41 times" in at.warning[-1].value
+    assert at.warning[-1].value.startswith("The sign is right, but the size is not.")
     at.text_input(key="self_value").input("abc").run()
     assert "` abc ` is not one number" in at.error[-1].value and not at.warning
 

@@ -2,18 +2,34 @@
 the value is read off a drawing, else 0.5 % (tests/test_judge.py holds it to practice, the
 command line and Moodle)."""
 
-from ui.selfcheck import Quantity, verdict
+from methods.judge import value_step
+from ui.selfcheck import Quantity, computed, verdict
 
 
 def test_grades():
-    q = Quantity("m", 0.354, "kg", drawing=0.01)
+    q = Quantity("m", value_step("m", 0.354, "kg", 0.01), drawing=True)
     assert verdict(0.3541, q)[0].ok
     assert verdict(0.36, q)[0].ok  # within what the drawing allows
     said, step = verdict(0.5, q)
     assert said.diagnosis == "length" and said.ratio == 0.5 / 0.354 and step.tolerance == 0.01
-    assert not verdict(0.36, Quantity("t", 0.354, "s"))[0].ok  # no drawing: 0.5 % only
-    assert verdict(-0.354, Quantity("t", 0.354, "s"))[0].diagnosis == "sense"
-    assert verdict(3.54, Quantity("t", 0.354, "s"))[0].diagnosis == "scale"
+    assert not verdict(0.36, computed("t", 0.354, "s"))[0].ok  # no drawing: 0.5 % only
+    assert verdict(-0.354, computed("t", 0.354, "s"))[0].diagnosis == "sense"
+    assert verdict(3.54, computed("t", 0.354, "s"))[0].diagnosis == "scale"
+
+
+def test_the_box_offers_the_one_table_signed():
+    """Task 3.1's box: ω₃ as the book prints it, signed (−4,51716 right, +4,51716 the sense
+    reversed), with the tolerance ``check`` gives it; not a magnitude of its own."""
+    from exams.judged import table
+    from mechanisms import load_preset
+    from ui.selfcheck import named
+
+    scene = load_preset("zbirka-3.1")
+    box = {q.label: q for q in named(scene, scene)}
+    omega = box["ω₃ [s⁻¹]"]
+    assert verdict(-4.51716, omega)[0].ok and verdict(4.51716, omega)[0].diagnosis == "sense"
+    (checked,) = [s for a, s in table(scene) if a.key == "members.3.omega"]
+    assert omega.step == checked
 
 
 def test_the_plans_pages_box_names_a_term_left_out_of_a_points_sum():
