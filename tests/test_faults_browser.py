@@ -117,13 +117,13 @@ def test_a_class_deleted_mid_practice_is_said_to_student_and_lecturer(served, ch
     lecturer.goto(f"{served.url}/class?lang=sr&class={code}&key={key}")
     lecturer.get_by_text("Sačuvane provere").first.wait_for(timeout=30_000)
     store.delete(code, key, url=url)
-    lecturer.get_by_text(f"Nijedan čas nema kod {code}").first.wait_for(timeout=15_000)
+    lecturer.get_by_text(f"Čas {code} je obrisao njegov nastavnik").first.wait_for(timeout=15_000)
     with lecturer.expect_download() as csv:  # what the view had seen, not an error
         lecturer.get_by_role("button", name="Svi pokušaji (CSV)").click()
     assert "sense" in open(csv.value.path(), encoding="utf-8").read()
     student.locator("[data-testid='stForm'] input").nth(1).fill("0")
     student.get_by_role("button", name="Proveri").click()  # said, and not stored
-    student.get_by_text(f"Nijedan čas nema kod {code}").first.wait_for(timeout=15_000)
+    student.get_by_text(f"Čas {code} je obrisao njegov nastavnik").first.wait_for(timeout=15_000)
     check_first_step(student)  # practice goes on, graded as before, unstored
     shot = tmp_path / "class-deleted.png"
     lecturer.screenshot(path=str(shot))
