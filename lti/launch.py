@@ -7,6 +7,7 @@ message type the tool takes. Anything else is refused in words (LtiError).
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass, field
 from functools import cache
 
@@ -26,6 +27,7 @@ INSTRUCTOR = ("http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor",
               "http://purl.imsglobal.org/vocab/lis/v2/membership#Administrator",
               "http://purl.imsglobal.org/vocab/lis/v2/institution/person#Administrator")
 LEEWAY = 60  # s of clock difference allowed between the platform and the tool
+_LOG = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -53,8 +55,9 @@ def _keys(jwks_url: str) -> jwt.PyJWKClient:
 
 
 def checked(id_token: str, state: str, url: str | None = None) -> Launch:
-    """The launch ``id_token`` carries, checked; ``state`` (the login's) is used up."""
-    platform_id, nonce = store.take_state(state, url)
+    """The launch ``id_token`` carries, checked; ``state`` (the login's) is used up once
+    the token's signature verified (a tampered token leaves it to the honest one)."""
+    platform_id, nonce = store.peek_state(state, url)
     found = store.platform_by_id(platform_id, url)
     try:
         key = _keys(found.jwks_url).get_signing_key_from_jwt(id_token)
@@ -62,37 +65,68 @@ def checked(id_token: str, state: str, url: str | None = None) -> Launch:
                             issuer=found.issuer, leeway=LEEWAY,
                             options={"require": ["exp", "iat", "iss", "aud", "sub", "nonce"]})
     except jwt.PyJWKClientError as exc:
-        raise LtiError(Text("lti.token", why=f"the platform's keys: {exc}")) from None
+        _LOG.warning("a launch's keys could not be read: %s", exc)
+        raise LtiError(Text("lti.token", why=Text("lti.why_keys"))) from None
     except jwt.PyJWTError as exc:
-        raise LtiError(Text("lti.token", why=str(exc))) from None
-    return _launch(found, claims, nonce)
+        _LOG.warning("a launch's token was refused: %s", exc)
+        raise LtiError(Text("lti.token", why=Text("lti.why_signature"))) from None
+    store.take_state(state, url)
+    return _launch(found, _typed(claims), nonce)
+
+
+# the claims the tool reads, and the type each must have: a claim of another type (a
+# platform's bug, or a forged token signed by it) is refused in words, never a traceback
+TYPES = {CLAIM + "custom": dict, CLAIM + "launch_presentation": dict, CLAIM + "context": dict,
+         CLAIM + "resource_link": dict, CLAIM + "roles": list,
+         DEEP + "deep_linking_settings": dict, AGS: dict}
+INNER = {(CLAIM + "context", "id"): str, (CLAIM + "resource_link", "id"): str,
+         (CLAIM + "launch_presentation", "locale"): str, (AGS, "lineitem"): str,
+         (DEEP + "deep_linking_settings", "deep_link_return_url"): str}
+
+
+def _typed(claims: dict) -> dict:
+    """``claims``, each one the tool reads of the type it reads it as (LtiError if not)."""
+    for name, kind in TYPES.items():
+        if claims.get(name) is not None and not isinstance(claims[name], kind):
+            raise LtiError(Text("lti.token", why=Text("lti.why_claim", claim=name.rsplit("/", 1)[-1])))
+    for (name, part), kind in INNER.items():
+        value = (claims.get(name) or {}).get(part)
+        if value is not None and not isinstance(value, kind):
+            raise LtiError(Text("lti.token", why=Text("lti.why_claim", claim=f"{name.rsplit('/', 1)[-1]}.{part}")))
+    custom = claims.get(CLAIM + "custom") or {}
+    if not all(isinstance(v, (str, int, float, bool)) for v in custom.values()):
+        raise LtiError(Text("lti.token", why=Text("lti.why_claim", claim="custom")))
+    if not all(isinstance(role, str) for role in claims.get(CLAIM + "roles") or []):
+        raise LtiError(Text("lti.token", why=Text("lti.why_claim", claim="roles")))
+    return claims
 
 
 def _launch(found: Platform, claims: dict, nonce: str) -> Launch:
     """The claims of a signed, unexpired token for this tool, held to LTI's rules."""
     if claims.get("nonce") != nonce:
-        raise LtiError(Text("lti.token", why="the nonce is not the login's"))
+        raise LtiError(Text("lti.token", why=Text("lti.why_nonce")))
     azp = claims.get("azp")
     if azp is not None and azp != found.client_id:
-        raise LtiError(Text("lti.token", why="azp is another client"))
+        raise LtiError(Text("lti.token", why=Text("lti.why_azp")))
     deployment = str(claims.get(CLAIM + "deployment_id", ""))
     if deployment not in found.deployments:
         raise LtiError(Text("lti.deployment", deployment=deployment or "—"))
     if claims.get(CLAIM + "version") != "1.3.0":
-        raise LtiError(Text("lti.token", why="LTI version is not 1.3.0"))
+        raise LtiError(Text("lti.token", why=Text("lti.why_version")))
     kind = claims.get(CLAIM + "message_type")
     if kind not in (RESOURCE, DEEP_LINKING):
-        raise LtiError(Text("lti.token", why=f"message type {kind!r} is not one this tool takes"))
+        raise LtiError(Text("lti.token", why=Text("lti.why_message", kind=str(kind)[:40])))
     roles = claims.get(CLAIM + "roles") or []
     context = (claims.get(CLAIM + "context") or {}).get("id", "")
     link = (claims.get(CLAIM + "resource_link") or {}).get("id", "")
     if kind == RESOURCE and not link:
-        raise LtiError(Text("lti.token", why="no resource link"))
+        raise LtiError(Text("lti.token", why=Text("lti.why_link")))
     deep = claims.get(DEEP + "deep_linking_settings") or {}
     ags = claims.get(AGS) or {}
     return Launch(found, deployment, kind, str(claims["sub"]),
                   any(role in INSTRUCTOR for role in roles), str(context), str(link),
-                  dict(claims.get(CLAIM + "custom") or {}), ags.get("lineitem"),
+                  {k: str(v) for k, v in (claims.get(CLAIM + "custom") or {}).items()},
+                  ags.get("lineitem"),
                   deep.get("deep_link_return_url"), deep.get("data"),
                   "sr" if _locale(claims).startswith(("sr", "bs", "hr", "me")) else "en")
 

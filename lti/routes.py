@@ -212,7 +212,15 @@ async def deeplink(request: Request) -> Response:
         "<noscript><button type='submit'>OK</button></noscript></form></body></html>")
 
 
+async def posted_only(request: Request) -> Response:
+    """A launch or deep-linking address opened as a page (GET): said in words, 405 — not
+    the app's blank page."""
+    return refused(Text("lti.method"), 405)
+
+
 ROUTES = [Route("/lti/jwks", jwks, methods=["GET"]),
           Route("/lti/login", login, methods=["GET", "POST"]),
           Route("/lti/launch", launch, methods=["POST"]),
-          Route("/lti/deeplink", deeplink, methods=["POST"])]
+          Route("/lti/launch", posted_only, methods=["GET", "HEAD", "PUT", "DELETE", "PATCH"]),
+          Route("/lti/deeplink", deeplink, methods=["POST"]),
+          Route("/lti/deeplink", posted_only, methods=["GET", "HEAD", "PUT", "DELETE", "PATCH"])]

@@ -144,15 +144,25 @@ def new_state(found: Platform, url: str | None = None) -> tuple[str, str]:
     return state, nonce
 
 
-def take_state(state: str, url: str | None = None) -> tuple[int, str]:
-    """The platform and nonce of a login's ``state``, which is used up here: a second launch
-    with it (a replay) is refused, as is one after ten minutes."""
-    with engine(url).begin() as db:
+def peek_state(state: str, url: str | None = None) -> tuple[int, str]:
+    """The platform and nonce of a login's ``state``, left in place: a launch's signature is
+    checked against that platform's keys before the state is used up (``take_state``), so a
+    tampered token cannot use up the honest one's state."""
+    with engine(url).connect() as db:
         row = db.execute(sa.select(states).where(states.c.state == state)).first()
-        taken = db.execute(states.delete().where(states.c.state == state)).rowcount
-    if row is None or taken != 1 or aware(row.expires) < datetime.now(UTC):
+    if row is None or aware(row.expires) < datetime.now(UTC):
         raise LtiError(Text("lti.state"))
     return row.platform_id, row.nonce
+
+
+def take_state(state: str, url: str | None = None) -> None:
+    """Use up a login's ``state`` (its token verified): a second launch with it (a replay)
+    is refused, as is one after ten minutes."""
+    with engine(url).begin() as db:
+        taken = db.execute(states.delete().where(states.c.state == state,
+                                                 states.c.expires >= datetime.now(UTC))).rowcount
+    if taken != 1:
+        raise LtiError(Text("lti.state"))
 
 
 @dataclass(frozen=True)

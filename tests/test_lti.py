@@ -189,11 +189,16 @@ def test_a_learner_lands_in_practice_and_an_instructor_on_the_live_view(tool):
 
 @pytest.mark.parametrize("why, claims, status, said", [
     ("forged", {"key": rsa.generate_private_key(public_exponent=65537, key_size=2048)}, 401,
-     "Signature verification failed"),
-    ("expired", {"exp": time.time() - 3600}, 401, "expired"),
+     "signature, issuer, audience or time"),
+    ("expired", {"exp": time.time() - 3600}, 401, "signature, issuer, audience or time"),
     ("unknown deployment", {CLAIM + "deployment_id": "d-other"}, 400, "d-other"),
-    ("another audience", {"aud": "someone-else"}, 401, "Audience"),
+    ("another audience", {"aud": "someone-else"}, 401, "signature, issuer, audience or time"),
     ("LTI 1.1", {CLAIM + "version": "1.1"}, 401, "1.3.0"),
+    ("custom as text", {CLAIM + "custom": "task=zbirka-3.1"}, 401, "custom"),
+    ("presentation as text", {CLAIM + "launch_presentation": "sr"}, 401, "launch_presentation"),
+    ("context as a list", {CLAIM + "context": ["course-7"]}, 401, "context"),
+    ("a custom value as a list", {CLAIM + "custom": {"task": ["zbirka-3.1"]}}, 401, "custom"),
+    ("roles as text", {CLAIM + "roles": LEARNER}, 401, "roles"),
 ])
 def test_a_launch_that_cannot_be_trusted_is_refused_in_words_and_stores_nothing(tool, why, claims,
                                                                                  status, said):
@@ -202,7 +207,29 @@ def test_a_launch_that_cannot_be_trusted_is_refused_in_words_and_stores_nothing(
     answer = launch(client, platform, **claims)
     assert answer.status_code == status, (why, answer.text)
     assert said in answer.text and "<p>" in answer.text, why  # in words, both languages
+    assert "Signature verification failed" not in answer.text  # the tool's words, not a library's
     assert counts(db) == before
+
+
+def test_a_tampered_launch_does_not_use_up_the_honest_one_s_state(tool):
+    """The state is used up only by a token whose signature verified: a forged token sent
+    first with the honest login's state leaves that state to the honest launch."""
+    client, platform, _ = tool
+    asked = login(client, platform)
+    forger = rsa.generate_private_key(public_exponent=65537, key_size=2048)
+    forged = client.post("/lti/launch", data={"id_token": platform.token(asked["nonce"], key=forger),
+                                              "state": asked["state"]}, follow_redirects=False)
+    assert forged.status_code == 401
+    honest = client.post("/lti/launch", data={"id_token": platform.token(asked["nonce"]),
+                                              "state": asked["state"]}, follow_redirects=False)
+    assert honest.status_code == 303
+
+
+@pytest.mark.parametrize("path", ["/lti/launch", "/lti/deeplink"])
+def test_a_launch_address_opened_as_a_page_is_said_in_words(tool, path):
+    client, _, _ = tool
+    answer = client.get(path)
+    assert answer.status_code == 405 and "POST" in answer.text and "<p>" in answer.text
 
 
 def test_a_replayed_launch_is_refused(tool):
@@ -217,7 +244,7 @@ def test_a_replayed_launch_is_refused(tool):
     other = login(client, platform)  # a fresh state with another login's nonce
     mixed = client.post("/lti/launch", data={"id_token": platform.token(asked["nonce"]),
                                              "state": other["state"]}, follow_redirects=False)
-    assert mixed.status_code == 401 and "nonce" in mixed.text
+    assert mixed.status_code == 401 and "not made for this login" in mixed.text
 
 
 def test_a_stored_check_is_scored_at_the_platform_and_a_platform_down_gets_it_later(tool, monkeypatch):
