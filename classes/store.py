@@ -173,6 +173,8 @@ def _engine(url: str) -> sa.Engine:
     """One engine per URL and process, its schema upgraded on first use."""
     # (hide_parameters: an error's text, logged with its traceback, names no token)
     made = sa.create_engine(url, pool_pre_ping=True, hide_parameters=True)
+    if made.dialect.name == "sqlite" and made.url.database not in (None, "", ":memory:"):
+        _private(Path(made.url.database))
     if made.dialect.name == "sqlite":
         @sa.event.listens_for(made, "connect")
         def _sqlite(connection, _record) -> None:  # shared by processes on one machine
@@ -181,6 +183,14 @@ def _engine(url: str) -> sa.Engine:
             connection.execute("PRAGMA foreign_keys=ON")
     migrate(made)
     return made
+
+
+def _private(path: Path) -> None:
+    """The SQLite file (student tokens) readable by its owner alone, made so before SQLite
+    first opens it (its -wal and -shm files take the file's mode)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    os.close(os.open(path, os.O_CREAT | os.O_WRONLY, 0o600))
+    os.chmod(path, 0o600)
 
 
 def reachable(url: str | None = None) -> bool:

@@ -413,3 +413,25 @@ def test_students_are_split_in_bands_of_a_given_value():
     assert split["a"] == (10.0, 20.0) and split["b"] == (20.0, 30.0)
     assert split["c"] == split["d"] == (30.0, 40.0)
     assert set(summary.bands({"a": 5.0, "b": 5.0}).values()) == {(5.0, 5.0)}
+
+
+def test_the_sqlite_store_is_readable_by_its_owner_alone(tmp_path):
+    """It holds the students' tokens: made 600 before SQLite first opens it, its WAL too."""
+    path = tmp_path / "private" / "class.db"
+    url = f"sqlite:///{path}"
+    code, _ = store.create("zbirka-3.1", "plans", url=url)
+    store.record(code, store.join(code, url=url), "v.b", 1.0, "ok", store.new_check(), url=url)
+    made = [p for p in path.parent.iterdir() if p.name.startswith("class.db")]
+    assert path in made and all(p.stat().st_mode & 0o077 == 0 for p in made), \
+        {p.name: oct(p.stat().st_mode) for p in made}
+
+
+def test_the_command_line_ends_quietly_on_a_closed_pipe_and_refuses_a_huge_answers_file(tmp_path):
+    done = subprocess.run(f"{sys.executable} -m solvers practice zbirka-3.1 --method plans | head -1",
+                          shell=True, cwd=ROOT, capture_output=True, text=True)
+    assert done.returncode == 0 and "Traceback" not in done.stderr and done.stdout.startswith("v.")
+    huge = tmp_path / "answers.json"
+    huge.write_text('{"answers": {"v.a-b": [1, 2]}, "pad": "' + "x" * 2_000_000 + '"}')
+    cli = _command_line(tmp_path / "cli.db")
+    said = cli("practice", "zbirka-3.1", "--method", "plans", "--answers", str(huge))
+    assert said.returncode == 2 and "over 1000 kB" in said.stderr and "Traceback" not in said.stderr
