@@ -102,20 +102,15 @@ def latest(rows: list[dict], step: str, rules: Rules = PRACTICE) -> dict[str, di
 
 
 def students(rows: list[dict], steps: list[str], rules: Rules = PRACTICE) -> list[dict]:
-    """Each student: nickname, steps done (settled any way) and right at the first try, in
-    the order they first checked."""
-    first_seen: dict[str, tuple[int, str]] = {}
-    for row in rows:
-        if row["step"] in steps:
-            seen = first_seen.get(row["student"])
-            if seen is None or row.get("id", 0) < seen[0]:
-                first_seen[row["student"]] = (row.get("id", 0), row["nickname"])
-    folded = progress(rows, rules)
-    out = []
-    for student, (_, nickname) in sorted(first_seen.items(), key=lambda kv: kv[1][0]):
-        said = folded[student].score(steps)
-        out.append({"nickname": nickname, "done": said["of"] - said["open"], "first": said["first"]})
-    return out
+    """Each student who checked a step of ``steps``, in the order they first checked: their
+    nickname, steps done (settled any way) and right at the first try — ``report``'s."""
+    mine = sorted((r for r in rows if r["step"] in steps), key=lambda r: r.get("id", 0))
+    first: dict[str, str] = {}
+    for row in mine:
+        first.setdefault(row["student"], row["nickname"])
+    return [{"nickname": said["nickname"], "done": said["score"]["done"],
+             "first": list(said["steps"].values()).count("first")}
+            for said in report(mine, steps, rules, first)]
 
 
 def report(rows: list[dict], steps: list[str], rules: Rules = PRACTICE,

@@ -11,11 +11,11 @@ import sys
 from classes import store, summary
 from classes.steps import steps_of
 from classes.store import variant_of
-from lti.grades import rescore
-from mechanisms.messages import Text, strings
-from methods.progress import Progress, score
+from lti.grades import close_test
 from mechanisms import SceneError, load_preset
 from mechanisms.link import PARAMETER
+from mechanisms.messages import Text, strings
+from methods.progress import Progress, score
 
 
 def add(sub) -> None:
@@ -106,11 +106,10 @@ def _summary(args) -> int:
 
 
 def _close(args) -> int:
-    found = store.close(args.code, args.key)
+    found = close_test(args.code, args.key)  # (a Moodle activity's scores go now)
     if not found.test:
         print(f"{found.code} is not a test: its students see their verdicts already")
         return 0
-    rescore(found.code)  # a Moodle activity's scores go now
     print(f"closed {found.code}: its students now see their verdicts")
     return 0
 

@@ -17,8 +17,8 @@ from methods.judge import left_out_sizes, rule_of, value_step
 from methods.plans import build
 from methods.practice import Step, Term
 from methods.scales import plan_scales
-from solvers.diagnostics import Unsolvable, solve_instant
 from reports.values import has_loads
+from solvers.diagnostics import Unsolvable, solve_instant
 from solvers.kinetostatics import analyse
 from solvers.structure import StructureError
 

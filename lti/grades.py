@@ -132,6 +132,15 @@ def send_due(url: str | None = None) -> int:
     return sent
 
 
+def close_test(code: str, key: str, url: str | None = None) -> classes.Class:
+    """A test closed by its lecturer (``class close``, the live view's button): its students
+    see their verdicts, and its Moodle learners' scores go (``rescore``)."""
+    found = classes.close(code, key, url)
+    if found.test:
+        rescore(found.code, url)
+    return found
+
+
 def rescore(code: str, url: str | None = None) -> None:
     """Every learner of the class ``code`` due again (a test just closed: its scores go)."""
     ids = sa.select(links.c.id).where(links.c.class_code == code).scalar_subquery()

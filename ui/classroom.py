@@ -12,7 +12,7 @@ from classes.store import ClassError, NotSaved, OneTry, StoreDown
 from classes.steps import practice_link, steps_at
 from classes.summary import tried
 from methods.practice import Step, grade
-from methods.progress import Progress
+from methods.progress import Progress, Rules
 from ui.boundary import boundary
 from ui.i18n import message, t
 
@@ -92,15 +92,16 @@ def wait_for_store(said: str) -> None:
     waiting()
 
 
-def resumed(seated: tuple[str, str], steps: list[Step]) -> Progress:
+def resumed(seated: tuple[str, str], steps: list[Step], rules: Rules | None = None) -> Progress:
     """The student's progress as the store has it: every try from every tab, phone or hand-in,
     folded in the order stored by the one rule (methods.progress) the live view and the
-    gradebook fold them by. A store that cannot be reached stops the page with the reason
-    (nothing is started afresh that would hide what the store holds) until it answers."""
+    gradebook fold them by (``rules``: the class's, asked of the store when not known yet).
+    A store that cannot be reached stops the page with the reason (nothing is started afresh
+    that would hide what the store holds) until it answers."""
     known = {s.id for s in steps}
     try:
         checks = store.tries(*seated)
-        rules = store.find(seated[0]).rules
+        rules = rules or store.find(seated[0]).rules
     except StoreDown:
         wait_for_store(t("class.store_down"))
         st.stop()
@@ -174,7 +175,7 @@ def give(state: dict, step: Step, answer) -> None:
         return
     check = _stored(state, step, _plain(answer), verdict.diagnosis, verdict.term)
     if check:
-        state["progress"] = resumed(state["seat"], state["steps"])
+        state["progress"] = resumed(state["seat"], state["steps"], progress.rules)
         state["mine"][step.id] = SETTLED if state["progress"].late(check) else verdict
 
 
@@ -190,7 +191,7 @@ def reveal(state: dict, step: Step) -> None:
     if state["seat"] is None:
         state["progress"].reveal(step)
     elif _stored(state, step, None, store.REVEALED, ""):
-        state["progress"] = resumed(state["seat"], state["steps"])
+        state["progress"] = resumed(state["seat"], state["steps"], state["progress"].rules)
         state["mine"].pop(step.id, None)
 
 

@@ -19,7 +19,7 @@ import streamlit as st
 from classes import store, summary
 from classes.steps import scene_of
 from classes.store import Class, ClassError, StoreDown
-from lti.grades import rescore
+from lti.grades import close_test
 from exams.codes import parse
 from exams.variants import MAX_COUNT, VariantError, from_code, generate
 from figures.classview import COLOURS, spread, step_bars
@@ -139,8 +139,7 @@ def test_state(found: Class, key: str) -> None:
     st.info(t("class.test_open"), icon=":material/lock:")
     if st.button(t("class.test_close"), key="cv_close", icon=":material/lock_open:"):
         try:
-            store.close(found.code, key)
-            rescore(found.code)
+            close_test(found.code, key)
         except ClassError as exc:
             st.error(message(exc.args[0]))
             return

@@ -72,7 +72,7 @@ def class_only(*keys: str) -> None:
         classroom.seat_refused()  # (the waiting notice, which reruns the page when it answers)
         finish()
     if seated is None:
-        return  # not this page's class, or no such student: said above, the page as it is
+        return  # not this page's class, or no such student: the page as it is (its practice switch says why)
     known = classroom.class_steps(seated)
     if known is None:
         return
@@ -90,8 +90,7 @@ def class_only(*keys: str) -> None:
 def hint(step: Step, verdict: Verdict) -> str:
     """The diagnosis in words (methods.practice.hint_texts: the words every surface says),
     and the book's rule for the step where it helps, in the page's language."""
-    comma = current().startswith("sr")
-    return " ".join(text.render(lambda key: t(key), comma)
+    return " ".join(text.render(t, current().startswith("sr"))
                     for text in hint_texts(step, verdict, plain))
 
 
