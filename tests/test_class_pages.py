@@ -83,8 +83,10 @@ def test_a_seated_student_sees_the_class_practice_alone_and_no_answer(method):
         shown = [w for w in written(step) if w in text]
         assert not shown, (method, step.id, shown)
     assert t("practice.exact", "en") not in text
-    # the link now says the class's own values: a reload practises the class
+    # the link now says the class's own values: a reload practises the class; the note stays
     assert at.query_params.get("at") != ["100"] and at.query_params.get("scene") != ["zbirka-2.1"]
+    at.run()
+    assert t("class.fixed", "en", names="")[:30] in said(at)
 
 
 @pytest.mark.parametrize("method", ["plans", "forces", "balance"])

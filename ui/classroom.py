@@ -136,8 +136,9 @@ def class_steps(seated: tuple[str, str]) -> tuple[store.Class, list[Step]] | Non
 
 def fixed_link(found: store.Class, token: str) -> list[str]:
     """The link's values that would practise something else than the class (``at``, a
-    slider's, ``s=``, ``scene``): the names of those given, and the page's link set to the
-    class's own, so that a reload or a shared link practises the class."""
+    slider's, ``s=``, ``scene``): the names of those given — said on every run of the
+    session, not only the one that found them — and the page's link set to the class's
+    own, so that a reload or a shared link practises the class."""
     try:
         _, own = practice_link(found, token, st.query_params.get("lang", ""))
     except StoreDown:  # (the note waits for the next run)
@@ -145,9 +146,11 @@ def fixed_link(found: store.Class, token: str) -> list[str]:
     given = {k: st.query_params.get_all(k) for k in st.query_params}
     ignored = sorted(k for k, v in given.items()
                      if k not in ("lang", "class", "student") and v != [own.get(k)])
+    said = st.session_state.setdefault("_class_fixed", {})  # kept: the link is clean after
     if ignored:
         st.query_params.from_dict({k: v for k, v in own.items() if v})
-    return ignored
+        said[found.code] = ignored
+    return said.get(found.code, [])
 
 
 def first_open(steps: list[Step], progress: Progress) -> int:
