@@ -48,7 +48,8 @@ def construction(motion: Motion, paths: list[str]) -> list[CompassStep]:
             continue
         known = {name: complex(p.z[i]) for name, p in motion.points.items()
                  if name in scene.frame or name in scene.members[DRIVER].points}
-        for group in motion.structure.groups:
+        for group in motion.structure.groups:  # (a group may hang on a point placed by offset)
+            steps += _offsets(scene, motion, i, known)
             steps += _group(scene, motion, group, i, known)
         steps += _offsets(scene, motion, i, known)
     for name in (p for p in paths if p not in scene.frame):  # a pivot has no path
@@ -59,18 +60,25 @@ def construction(motion: Motion, paths: list[str]) -> list[CompassStep]:
 
 
 def _crank(scene: Scene, motion: Motion) -> CompassStep:
-    pivot = next(p.point for p in scene.pairs if p.kind == "revolute" and set(p.members) == {FRAME, DRIVER})
-    pin = next((n for n in scene.members[DRIVER].points if n != pivot), pivot)
+    """The crank circle divided in 12; a driver that is no crank (a slider on its guide) has
+    its 12 positions placed in one step."""
+    pivot = _pivot(scene)
+    pin = _pin(scene)
+    found = {numbered(pin, i + 1): complex(z) for i, z in enumerate(motion.points[pin].z)
+             if np.isfinite(z)}  # (not where the driver itself cannot be placed)
+    if pivot is None:
+        return CompassStep("group", {"group": str(DRIVER), "position": f"1–{len(motion.at)}",
+                                     "points": f"{numbered(pin, 1)} … {numbered(pin, len(motion.at))}"},
+                           found=found)
     centre = scene.frame[pivot]
     radius = abs(scene.members[DRIVER].points[pin] - scene.members[DRIVER].points[pivot])
-    found = {numbered(pin, i + 1): complex(motion.points[pin].z[i]) for i in range(len(motion.at))}
     return CompassStep("crank", {"pin": pin, "centre": pivot, "link": pivot + pin, "radius": radius},
                        ((centre, radius),), found)
 
 
 def _group(scene: Scene, motion: Motion, group, i: int, known: dict[str, complex]) -> list[CompassStep]:
     k = i + 1
-    if group.kind == "RRR":
+    if group.kind == "RRR" and all(pair.point in known for pair in group.pairs[::2]):
         (j, m), (outer_j, inner, outer_m) = group.members, group.pairs
         x, arcs, out = inner.point, [], []
         for member, outer in ((j, outer_j), (m, outer_m)):
@@ -105,10 +113,11 @@ def _offsets(scene: Scene, motion: Motion, i: int, known: dict[str, complex]) ->
         for name, local in member.points.items():
             if name in known or name not in motion.points:
                 continue
-            a, b = (p for p in member.points if p in known and p != name) if sum(
-                p in known for p in member.points) >= 2 else (None, None)
-            if a is None:
+            given = [p for p in member.points if p in known and p != name
+                     and member.points[p] != member.points.get(name)]
+            if len(given) < 2 or member.points[given[0]] == member.points[given[1]]:
                 continue
+            a, b = given[:2]
             axis = (member.points[b] - member.points[a]) / abs(member.points[b] - member.points[a])
             offset = (local - member.points[a]) / axis
             known[name] = complex(motion.points[name].z[i])
@@ -119,9 +128,17 @@ def _offsets(scene: Scene, motion: Motion, i: int, known: dict[str, complex]) ->
     return out
 
 
+def _pivot(scene: Scene) -> str | None:
+    """The crank's frame pivot (None when the driver is not a crank)."""
+    return next((p.point for p in scene.pairs if p.kind == "revolute"
+                 and set(p.members) == {FRAME, DRIVER}), None)
+
+
 def _pin(scene: Scene) -> str:
-    pivot = next(p.point for p in scene.pairs if p.kind == "revolute" and set(p.members) == {FRAME, DRIVER})
-    return next((n for n in scene.members[DRIVER].points if n != pivot), pivot)
+    """The driver's point the construction follows: the crank pin (or a slider's point)."""
+    pivot = _pivot(scene)
+    return next((n for n in scene.members[DRIVER].points if n != pivot and n not in scene.frame),
+                next(iter(scene.members[DRIVER].points)))
 
 
 def _meet(first: tuple[complex, float], second: tuple[complex, float], near: complex) -> complex:

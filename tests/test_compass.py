@@ -4,7 +4,8 @@ where the solver puts it, and the page steps through it in every language."""
 import numpy as np
 import pytest
 
-from mechanisms import load_preset
+from mechanisms import load_preset, preset_ids
+from mechanisms.schema import Scene
 from methods.compass import construction
 from solvers.kinematics import solve
 from solvers.paths import cycle_values
@@ -24,13 +25,19 @@ def split(name: str) -> tuple[str, int]:
     return letter, int(name[len(letter):].translate(DIGITS))
 
 
-@pytest.mark.parametrize("pid", ["four-bar-crank-rocker", "zbirka-1.1", "zbirka-1.2", "zbirka-1.3"])
+LINKAGES = [p for p in preset_ids() if isinstance(load_preset(p), Scene)]
+
+
+@pytest.mark.parametrize("pid", LINKAGES)
 def test_every_point_the_construction_finds_is_the_solutions(pid):
+    """Every linkage preset (a slider driver, triads and points hung on offsets included:
+    the page ended in the error sentence for 2.1, 2.4, 5.1 …)."""
     motion = twelve(pid)
     steps = construction(motion, ["B"] if "B" in motion.points else [])
     found = {name: z for step in steps for name, z in step.found.items()}
     moving = [n for n in motion.points if n not in motion.scene.frame]
-    assert len({split(n) for n in found}) == len(moving) * 12  # every moving point, 12 times
+    feasible = [k + 1 for k in range(12) if motion.feasible[k]]
+    assert {(n, k) for n in moving for k in feasible} <= {split(n) for n in found}  # each, each time
     for name, z in found.items():
         letter, k = split(name)
         assert z == pytest.approx(complex(motion.points[letter].z[k - 1]), abs=1e-12)
