@@ -33,10 +33,13 @@ from classes.steps import steps_of
 from classes.store import ClassError, engine
 
 from . import keys
+from .launch import LINEITEM_SCOPE
 from .store import Platform, learners, links, platform_by_id
 
 SCOPE = "https://purl.imsglobal.org/spec/lti-ags/scope/score"
 SCORE_TYPE = "application/vnd.ims.lis.v1.score+json"
+LINEITEM_TYPE = "application/vnd.ims.lis.v2.lineitem+json"
+CONTAINER_TYPE = "application/vnd.ims.lis.v2.lineitemcontainer+json"
 EVERY = 5.0  # s between two looks for due scores (a score reaches the platform within 30 s)
 LONGEST = 300  # s: the longest wait before a down platform is tried again
 TIMEOUT = 10  # s a platform may take to answer
@@ -45,17 +48,17 @@ _TOKENS: dict[tuple[int, str], tuple[str, float]] = {}  # (platform, scope) → 
 _LOCK = threading.Lock()
 
 
-def token(found: Platform) -> str:
-    """An access token for the score scope: asked for with a signed client assertion, kept
-    until a minute before it expires."""
+def token(found: Platform, scope: str = SCOPE) -> str:
+    """An access token for ``scope``: asked for with a signed client assertion, kept until a
+    minute before it expires."""
     with _LOCK:
-        kept = _TOKENS.get((found.id, SCOPE))
+        kept = _TOKENS.get((found.id, scope))
         if kept and kept[1] > time.time() + 60:
             return kept[0]
     assertion = keys.sign({"iss": found.client_id, "sub": found.client_id,
                            "aud": found.token_url})
     body = urllib.parse.urlencode({
-        "grant_type": "client_credentials", "scope": SCOPE,
+        "grant_type": "client_credentials", "scope": scope,
         "client_assertion_type": "urn:ietf:params:oauth:client-assertion-type:jwt-bearer",
         "client_assertion": assertion}).encode()
     request = urllib.request.Request(found.token_url, body, method="POST",
@@ -64,7 +67,7 @@ def token(found: Platform) -> str:
     with urllib.request.urlopen(request, timeout=TIMEOUT) as answer:
         given = json.load(answer)
     with _LOCK:
-        _TOKENS[(found.id, SCOPE)] = (given["access_token"],
+        _TOKENS[(found.id, scope)] = (given["access_token"],
                                       time.time() + float(given.get("expires_in", 3600)))
     return given["access_token"]
 
@@ -103,9 +106,11 @@ def due(url: str | None = None) -> list:
     newest = (sa.select(sa.func.max(classes.checks.c.id))
               .where(classes.checks.c.student == learners.c.student).scalar_subquery())
     now = datetime.now(UTC)
-    query = (sa.select(learners, links.c.platform_id, links.c.class_code, newest.label("newest"))
+    target = sa.func.coalesce(learners.c.lineitem, links.c.lineitem)  # its own, or one made
+    query = (sa.select(learners, links.c.platform_id, links.c.class_code, newest.label("newest"),
+                       target.label("target"))
              .join(links, links.c.id == learners.c.link_id)
-             .where(learners.c.lineitem.is_not(None), newest > learners.c.scored,
+             .where(target.is_not(None), newest > learners.c.scored,
                     sa.or_(learners.c.due.is_(None), learners.c.due <= now)))
     with engine(url).connect() as db:
         return db.execute(query).all()
@@ -118,7 +123,7 @@ def send_due(url: str | None = None) -> int:
         try:
             body = score(row.class_code, row.student, row.sub, url)
             if body is not None:  # (None: a test not closed; its close sends them all)
-                post(platform_by_id(row.platform_id, url), row.lineitem, body)
+                post(platform_by_id(row.platform_id, url), row.target, body)
         except ClassError:  # the class went: nothing more to send for it
             _mark(row.id, {"scored": row.newest}, url)
         except Exception as exc:  # the platform down or refusing: later, less often
@@ -130,6 +135,57 @@ def send_due(url: str | None = None) -> int:
             _mark(row.id, {"scored": row.newest, "failures": 0, "due": None}, url)
             sent += body is not None
     return sent
+
+
+def make_lineitems(url: str | None = None) -> int:
+    """A line item for each link launched with only the platform's container (an activity
+    added by hand): the one the platform already has for the link, else one made (POST);
+    how many were found or made. One process asks for a link at a time (``asked``, taken in
+    one update), and a platform that refused is asked again a minute later."""
+    made = 0
+    now = datetime.now(UTC)
+    free = sa.and_(links.c.lineitems.is_not(None), links.c.lineitem.is_(None),
+                   sa.or_(links.c.asked.is_(None), links.c.asked < now - timedelta(seconds=60)))
+    with engine(url).connect() as db:
+        wanting = db.execute(sa.select(links).where(free)).all()
+    for row in wanting:
+        with engine(url).begin() as db:  # (another process may have taken it meanwhile)
+            if db.execute(links.update().where(links.c.id == row.id, free).values(asked=now)).rowcount != 1:
+                continue
+        try:
+            item = _lineitem(platform_by_id(row.platform_id, url), row, url)
+        except Exception as exc:  # the platform down or refusing: a minute later
+            _LOG.warning("no line item made for link %s (%s); again in a minute", row.id, exc)
+            continue
+        with engine(url).begin() as db:
+            db.execute(links.update().where(links.c.id == row.id, links.c.lineitems == row.lineitems)
+                       .values(lineitem=item))
+        made += 1
+    return made
+
+
+def _lineitem(found: Platform, row, url: str | None) -> str:
+    """The URL of the link's line item in its container: the platform's for this resource
+    link, or one made with the activity's label and its steps as the maximum."""
+    path, _, query = row.lineitems.partition("?")
+    asked = urllib.parse.urlencode({"resource_link_id": row.resource_link_id})
+    headers = {"Authorization": f"Bearer {token(found, LINEITEM_SCOPE)}"}
+    listed = urllib.request.Request(f"{path}?{query + '&' if query else ''}{asked}",
+                                    headers={**headers, "Accept": CONTAINER_TYPE})
+    with urllib.request.urlopen(listed, timeout=TIMEOUT) as answer:
+        items = json.load(answer)
+    mine = [i for i in items if isinstance(i, dict) and i.get("resourceLinkId") == row.resource_link_id
+            and isinstance(i.get("id"), str)]
+    if mine:
+        return mine[0]["id"]
+    maximum = len(steps_of(classes.find(row.class_code, url)))
+    body = {"scoreMaximum": maximum, "label": row.label or row.task, "resourceLinkId": row.resource_link_id,
+            "tag": "mehanizmi"}
+    made = urllib.request.Request(row.lineitems, json.dumps(body).encode(), method="POST",
+                                  headers={**headers, "Content-Type": LINEITEM_TYPE,
+                                           "Accept": LINEITEM_TYPE})
+    with urllib.request.urlopen(made, timeout=TIMEOUT) as answer:
+        return str(json.load(answer)["id"])
 
 
 def close_test(code: str, key: str, url: str | None = None) -> classes.Class:
@@ -157,6 +213,7 @@ def worker(stop: threading.Event, url: str | None = None, every: float = EVERY) 
     """Send due scores every ``every`` seconds until ``stop`` is set (a thread of the server)."""
     while not stop.wait(every):
         try:
+            make_lineitems(url)
             send_due(url)
         except Exception:  # the store down: the scores wait in it
             _LOG.exception("sending scores")

@@ -21,6 +21,7 @@ from .store import LtiError, Platform
 CLAIM = "https://purl.imsglobal.org/spec/lti/claim/"
 DEEP = "https://purl.imsglobal.org/spec/lti-dl/claim/"
 AGS = "https://purl.imsglobal.org/spec/lti-ags/claim/endpoint"
+LINEITEM_SCOPE = "https://purl.imsglobal.org/spec/lti-ags/scope/lineitem"  # (to make one)
 RESOURCE = "LtiResourceLinkRequest"
 DEEP_LINKING = "LtiDeepLinkingRequest"
 INSTRUCTOR = ("http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor",
@@ -43,6 +44,7 @@ class Launch:
     resource_link: str
     custom: dict = field(default_factory=dict)
     lineitem: str | None = None  # AGS: where this link's scores go
+    lineitems: str | None = None  # AGS: the platform's container, where the tool may make one
     deep_return: str | None = None  # deep linking: where the chosen link goes back to
     deep_data: str | None = None
     locale: str = "en"  # the app's language for the user: "sr" for a Serbian (or kin) locale
@@ -80,7 +82,7 @@ TYPES = {CLAIM + "custom": dict, CLAIM + "launch_presentation": dict, CLAIM + "c
          CLAIM + "resource_link": dict, CLAIM + "roles": list,
          DEEP + "deep_linking_settings": dict, AGS: dict}
 INNER = {(CLAIM + "context", "id"): str, (CLAIM + "resource_link", "id"): str,
-         (CLAIM + "launch_presentation", "locale"): str, (AGS, "lineitem"): str,
+         (CLAIM + "launch_presentation", "locale"): str, (AGS, "lineitem"): str, (AGS, "lineitems"): str, (AGS, "scope"): list,
          (DEEP + "deep_linking_settings", "deep_link_return_url"): str}
 
 
@@ -127,6 +129,7 @@ def _launch(found: Platform, claims: dict, nonce: str) -> Launch:
                   any(role in INSTRUCTOR for role in roles), str(context), str(link),
                   {k: str(v) for k, v in (claims.get(CLAIM + "custom") or {}).items()},
                   ags.get("lineitem"),
+                  ags.get("lineitems") if LINEITEM_SCOPE in (ags.get("scope") or []) else None,
                   deep.get("deep_link_return_url"), deep.get("data"),
                   "sr" if _locale(claims).startswith(("sr", "bs", "hr", "me")) else "en")
 

@@ -14,12 +14,18 @@ launch is checked), with a 4xx status; nothing is stored for it.
 
 from __future__ import annotations
 
+import functools
 import html
+import json
+import logging
 import os
 import secrets
 import urllib.parse
+from collections.abc import Awaitable, Callable
 
 import jwt
+from starlette.datastructures import FormData
+from starlette.exceptions import HTTPException
 from starlette.requests import Request
 from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
 from starlette.routing import Route
@@ -34,7 +40,10 @@ from . import keys, store
 from .launch import CLAIM, DEEP, DEEP_LINKING, Launch, checked
 from .store import LtiError
 
+MAX_BODY = 256 * 1024  # bytes a platform's form may have (a launch's id_token is a few kB)
+MAX_FIELDS = 40  # fields a platform's form may have (a launch sends two)
 PICKED = "plans"  # the picker's method until the lecturer chooses another
+_LOG = logging.getLogger(__name__)
 PICKER_STYLE = ("body{font-family:'Source Sans Pro',system-ui,sans-serif;max-width:44rem;"
                 "margin:2rem auto;padding:0 1rem;color:#262730}h1{font-size:1.5rem}"
                 "label{display:block;font-weight:600}select{display:block;width:100%;"
@@ -59,6 +68,49 @@ def refused(said: Text | str, status: int = 400) -> HTMLResponse:
                         f"</head><body>{body}</body></html>", status_code=status)
 
 
+class Refused(Exception):
+    """A request refused before it is read: its answer, in words."""
+
+    def __init__(self, answer: HTMLResponse):
+        super().__init__(answer.status_code)
+        self.answer = answer
+
+
+async def form_of(request: Request) -> FormData:
+    """The request's form, read within bounds: a body over ``MAX_BODY`` (said by its length
+    or found while reading), more than ``MAX_FIELDS`` fields, a file, or a form that cannot
+    be parsed is refused in words (``Refused``), never in the server's plain text."""
+    length = request.headers.get("content-length", "")
+    if length and (not length.isdigit() or int(length) > MAX_BODY):
+        raise Refused(refused(Text("lti.too_large", kb=MAX_BODY // 1024), 413))
+    body = b""
+    async for chunk in request.stream():
+        body += chunk
+        if len(body) > MAX_BODY:
+            raise Refused(refused(Text("lti.too_large", kb=MAX_BODY // 1024), 413))
+
+    async def replay() -> dict:
+        return {"type": "http.request", "body": body, "more_body": False}
+
+    try:
+        return await Request(request.scope, replay).form(max_fields=MAX_FIELDS, max_files=0,
+                                                         max_part_size=MAX_BODY)
+    except (HTTPException, ValueError, KeyError) as exc:
+        _LOG.warning("a form refused: %s", exc)
+        raise Refused(refused(Text("lti.form_bad"), 400)) from None
+
+
+def answered(route: Callable[[Request], Awaitable[Response]]) -> Callable[[Request], Awaitable[Response]]:
+    """``route`` with a request refused while being read (``Refused``) answered in words."""
+    @functools.wraps(route)
+    async def answer(request: Request) -> Response:
+        try:
+            return await route(request)
+        except Refused as exc:
+            return exc.answer
+    return answer
+
+
 async def jwks(request: Request) -> Response:
     return JSONResponse(keys.jwks(), headers={"Cache-Control": "public, max-age=3600"})
 
@@ -66,7 +118,7 @@ async def jwks(request: Request) -> Response:
 async def login(request: Request) -> Response:
     given = dict(request.query_params)
     if request.method == "POST":
-        given.update(dict(await request.form()))
+        given.update(dict(await form_of(request)))
     issuer, hint = given.get("iss", ""), given.get("login_hint", "")
     if not issuer or not hint:
         return refused(Text("lti.login_missing"))
@@ -88,7 +140,7 @@ async def login(request: Request) -> Response:
 
 
 async def launch(request: Request) -> Response:
-    form = await request.form()
+    form = await form_of(request)
     id_token, state = str(form.get("id_token", "")), str(form.get("state", ""))
     if not id_token or not state:
         return refused(Text("lti.launch_missing"))
@@ -107,9 +159,11 @@ def go(request: Request, said: Launch) -> Response:
     """A resource link's launch: its class (made at its first launch), then a learner to
     practise, an instructor to the class's live view."""
     task, method = said.custom.get("task", ""), said.custom.get("method", "")
-    practised(task, method)
+    scene, _ = practised(task, method)
     test = str(said.custom.get("test", "")).lower() in ("1", "true", "yes")
     link = store.link_class(said.platform, said.context, said.resource_link, task, method, test=test)
+    if said.lineitem is None and said.lineitems:  # (added by hand: its grades need a line item)
+        store.wants_lineitem(link, said.lineitems, activity_name(scene, method, said.locale == "sr"))
     base = base_url(request)
     if said.instructor:
         query = urllib.parse.urlencode({"class": link.class_code, "key": link.key,
@@ -125,14 +179,28 @@ def practised(task: str, method: str) -> tuple[object, list]:
     when they cannot be practised."""
     if method not in METHODS:
         raise LtiError(Text("lti.no_method", method=method or "—", methods=", ".join(METHODS)))
-    try:
-        scene = load_preset(task)
-        steps = steps_for(scene, method)
-    except (SceneError, ValueError, KeyError) as exc:
-        raise LtiError(Text("lti.no_task", task=task or "—", why=str(exc))) from None
+    if task not in preset_ids():
+        raise LtiError(Text("lti.no_task", task=task or "—", why=Text("lti.why_no_preset")))
+    scene = load_preset(task)
+    steps = _steps(scene, method)
     if not steps:
-        raise LtiError(Text("lti.no_task", task=task, why="no steps"))
+        raise LtiError(Text("lti.no_task", task=task, why=Text("lti.why_no_steps")))
     return scene, steps
+
+
+def _steps(scene, method: str) -> list:
+    """``method``'s steps on ``scene``; none when the scene is not of the method's kind."""
+    try:
+        return steps_for(scene, method)
+    except SceneError:  # (a gear train has no plans)
+        return []
+
+
+@functools.cache
+def pairs() -> dict[str, tuple[str, ...]]:
+    """Each task's methods that have steps there: all the picker offers (worked out once,
+    about 2 s, at the first deep linking)."""
+    return {task: tuple(m for m in METHODS if _steps(load_preset(task), m)) for task in preset_ids()}
 
 
 def picker(request: Request, said: Launch) -> Response:
@@ -144,12 +212,21 @@ def picker(request: Request, said: Launch) -> Response:
                          "return": said.deep_return, "data": said.deep_data,
                          "locale": said.locale}, lifetime=3600)
     sr = said.locale == "sr"
-    titles = {p: title(load_preset(p), sr) for p in preset_ids()}
+    offered = {task: methods for task, methods in pairs().items() if methods}
+    titles = {p: title(load_preset(p), sr) for p in offered}
     tasks = "".join(f"<option value='{html.escape(p)}'>{html.escape(titles[p])}</option>"
                     for p in sorted(titles))
+    first = offered[min(titles)]
     methods = "".join(f"<option value='{m}'{' selected' if m == PICKED else ''}>"
-                      f"{html.escape(method_name(m, sr))}</option>" for m in METHODS)
+                      f"{html.escape(method_name(m, sr))}</option>" for m in first)
+    names = {m: method_name(m, sr) for m in METHODS}
     words = strings("sr" if sr else "en")
+    # the method list follows the task: only pairs that have steps (the server refuses others)
+    follow = ("<script>const pairs=" + json.dumps(offered) + ",names=" + json.dumps(names) +
+              ";const t=document.querySelector('[name=task]'),m=document.querySelector('[name=method]');"
+              "t.addEventListener('change',()=>{const was=m.value;m.replaceChildren(...pairs[t.value]"
+              ".map(v=>new Option(names[v],v,false,v===was||(v==='" + PICKED + "'&&!pairs[t.value]"
+              ".includes(was)))))});</script>")
     return HTMLResponse(
         "<!DOCTYPE html><html><head><meta charset='utf-8'><title>Mehanizmi</title>"
         f"<meta name='viewport' content='width=device-width'><style>{PICKER_STYLE}</style></head><body>"
@@ -160,12 +237,17 @@ def picker(request: Request, said: Launch) -> Response:
         f"<p><label>{html.escape(words['lti.pick_method'])} <select name='method'>{methods}</select></label></p>"
         f"<p><label><input type='checkbox' name='test' value='1'> {html.escape(words['lti.pick_test'])}</label></p>"
         f"<p><button type='submit'>{html.escape(words['lti.pick_add'])}</button></p>"
-        "</form></body></html>")
+        f"</form>{follow}</body></html>")
 
 
 def title(scene, serbian: bool) -> str:
     """"id — title" of a preset, in Serbian where it has a Serbian title."""
     return f"{scene.id} — {(scene.title_sr if serbian and getattr(scene, 'title_sr', '') else scene.title)}"
+
+
+def activity_name(scene, method: str, serbian: bool) -> str:
+    """An activity's name and its grade's label: "method: id — title"."""
+    return f"{method_name(method, serbian)}: {title(scene, serbian)}"
 
 
 def method_name(method: str, serbian: bool) -> str:
@@ -175,7 +257,7 @@ def method_name(method: str, serbian: bool) -> str:
 async def deeplink(request: Request) -> Response:
     """The picked task and method, back to the platform as a signed deep-linking response:
     one ``ltiResourceLink`` with them as custom parameters, and a line item for its grade."""
-    form = await request.form()
+    form = await form_of(request)
     try:
         context = jwt.decode(str(form.get("context", "")), keys.private_key().public_key(),
                              algorithms=[keys.ALGORITHM])
@@ -186,12 +268,14 @@ async def deeplink(request: Request) -> Response:
         return refused(exc.args[0])
     task, method = str(form.get("task", "")), str(form.get("method", ""))
     test = form.get("test") == "1"
+    serbian = context.get("locale") == "sr"
     try:
         scene, steps = practised(task, method)
-    except LtiError as exc:
-        return refused(exc.args[0])
+    except LtiError:  # (the picker offers only pairs that work: a changed form)
+        return refused(Text("lti.deep_pair", task=task[:60] or "—",
+                            method=method_name(method, serbian) if method in METHODS else method[:20] or "—"))
     serbian = context.get("locale") == "sr"
-    name = f"{method_name(method, serbian)}: {title(scene, serbian)}"
+    name = activity_name(scene, method, serbian)
     claims = {"iss": found.client_id, "aud": found.issuer, "azp": found.client_id,
               "nonce": secrets.token_urlsafe(16),
               CLAIM + "message_type": "LtiDeepLinkingResponse", CLAIM + "version": "1.3.0",
@@ -219,8 +303,8 @@ async def posted_only(request: Request) -> Response:
 
 
 ROUTES = [Route("/lti/jwks", jwks, methods=["GET"]),
-          Route("/lti/login", login, methods=["GET", "POST"]),
-          Route("/lti/launch", launch, methods=["POST"]),
+          Route("/lti/login", answered(login), methods=["GET", "POST"]),
+          Route("/lti/launch", answered(launch), methods=["POST"]),
           Route("/lti/launch", posted_only, methods=["GET", "HEAD", "PUT", "DELETE", "PATCH"]),
-          Route("/lti/deeplink", deeplink, methods=["POST"]),
+          Route("/lti/deeplink", answered(deeplink), methods=["POST"]),
           Route("/lti/deeplink", posted_only, methods=["GET", "HEAD", "PUT", "DELETE", "PATCH"])]

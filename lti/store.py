@@ -19,6 +19,8 @@ from mechanisms.messages import Text
 from . import keys
 
 STATE_LIFETIME = timedelta(minutes=10)  # a login's state and nonce, until the launch uses them
+STATES_KEPT = 2000  # logins under way kept per platform: above it the oldest go (a flood of
+# logins cannot fill the store; an honest launch takes seconds, 2,000 logins after it)
 LINK_DAYS = 400  # a class a link made lives a course's year (the store's default is 30 days)
 
 meta = sa.MetaData()
@@ -40,7 +42,12 @@ links = sa.Table(
     sa.Column("id", sa.Integer, primary_key=True), sa.Column("platform_id", sa.Integer),
     sa.Column("context_id", sa.Text), sa.Column("resource_link_id", sa.Text),
     sa.Column("class_code", sa.String(6)), sa.Column("task", sa.Text),
-    sa.Column("method", sa.String(16)))
+    sa.Column("method", sa.String(16)),
+    # (0006) a link launched without a line item of its own: the platform's container, the
+    # label for the line item the tool makes there (lti.grades.make_lineitems), when it was
+    # last asked for, and that line item
+    sa.Column("lineitems", sa.Text), sa.Column("label", sa.Text),
+    sa.Column("asked", sa.DateTime(timezone=True)), sa.Column("lineitem", sa.Text))
 learners = sa.Table(
     "lti_learners", meta,
     sa.Column("id", sa.Integer, primary_key=True), sa.Column("link_id", sa.Integer),
@@ -135,10 +142,17 @@ def remove_platform(issuer: str, client_id: str, url: str | None = None) -> bool
 
 
 def new_state(found: Platform, url: str | None = None) -> tuple[str, str]:
-    """A login's one-use ``state`` and ``nonce``, kept until its launch (or ten minutes)."""
+    """A login's one-use ``state`` and ``nonce``, kept until its launch (or ten minutes, or
+    until ``STATES_KEPT`` newer logins of the platform came)."""
     state, nonce = secrets.token_urlsafe(32), secrets.token_urlsafe(32)
     with engine(url).begin() as db:
         db.execute(states.delete().where(states.c.expires < datetime.now(UTC)))
+        mine = states.c.platform_id == found.id
+        kept = db.execute(sa.select(sa.func.count()).select_from(states).where(mine)).scalar()
+        if kept >= STATES_KEPT:
+            oldest = (sa.select(states.c.state).where(mine).order_by(states.c.expires)
+                      .limit(kept - STATES_KEPT + 1))
+            db.execute(states.delete().where(states.c.state.in_(oldest.scalar_subquery())))
         db.execute(states.insert().values(state=state, nonce=nonce, platform_id=found.id,
                                           expires=datetime.now(UTC) + STATE_LIFETIME))
     return state, nonce
@@ -223,3 +237,12 @@ def learner(link: Link, sub: str, lineitem: str | None, url: str | None = None) 
     except sa.exc.IntegrityError:  # the same user's two first launches at once: one token
         return learner(link, sub, lineitem, url)
     return token
+
+
+def wants_lineitem(link: Link, container: str, label: str, url: str | None = None) -> None:
+    """A link launched with only the platform's line-items container: the tool makes its
+    line item there (lti.grades.make_lineitems); a new container (a copied course) a new one."""
+    with engine(url).begin() as db:
+        db.execute(links.update().where(links.c.id == link.id, sa.or_(
+            links.c.lineitems.is_(None), links.c.lineitems != container)).values(
+            lineitems=container, label=label, lineitem=None, asked=None))

@@ -96,7 +96,7 @@ def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
     assert [list(r) for r in table] == [list(store.FIELDS)] * 3
     assert [json.loads(r["answer"]) for r in table] == [r["answer"] for r in rows]
     with store.engine(url).connect() as db:  # the schema came from the migrations
-        assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0005"
+        assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0006"
 
 
 def test_a_fresh_process_s_first_sessions_arriving_at_once_make_one_store(tmp_path):

@@ -26,8 +26,11 @@ from classes import store
 from classes.steps import steps_of
 from lti import grades, keys
 from lti import store as lti
-from lti.launch import AGS, CLAIM, DEEP
+from lti.launch import AGS, CLAIM, DEEP, LINEITEM_SCOPE
+from lti import routes
 from lti.routes import ROUTES
+from mechanisms import SceneError, load_preset, preset_ids
+from methods.practice_steps import steps_for
 
 from .test_classes import postgres, url  # noqa: F401  (fixtures: both databases)
 
@@ -45,6 +48,7 @@ class Platform:
         self.client_id = uuid.uuid4().hex
         self.scores: list[tuple[str, dict, str]] = []  # (path, body, authorization)
         self.assertions: list[dict] = []
+        self.lineitems: list[dict] = []  # the container's line items (made by the tool's POST)
         self.down = False
         self.tool_jwks: str | None = None  # the tool's public keyset URL (else its key here)
         platform = self
@@ -68,6 +72,10 @@ class Platform:
                             f"<input type='hidden' name='state' value='{asked['state']}'></form>"
                             "<script>document.forms[0].submit()</script>")
                     return self._send(200, form.encode(), "text/html")
+                if self.path.startswith("/lineitems?"):  # the container, by resource link
+                    asked = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(self.path).query))
+                    return self._send(200, json.dumps([i for i in platform.lineitems if i.get(
+                        "resourceLinkId") == asked.get("resource_link_id")]).encode())
                 key = json.loads(RSAAlgorithm.to_jwk(platform.key.public_key()))
                 self._send(200, json.dumps({"keys": [{**key, "kid": "p1", "alg": "RS256"}]}).encode())
 
@@ -86,6 +94,10 @@ class Platform:
                                                 "grant_type": form["grant_type"]})
                     return self._send(200, json.dumps({"access_token": "t-" + uuid.uuid4().hex,
                                                        "expires_in": 3600}).encode())
+                if self.path == "/lineitems":  # a line item made in the container
+                    item = {**json.loads(body), "id": platform.url(f"/lineitems/{len(platform.lineitems) + 90}/lineitem")}
+                    platform.lineitems.append({**item, "kind": self.headers["Content-Type"]})
+                    return self._send(201, json.dumps(item).encode())
                 platform.scores.append((self.path, json.loads(body), self.headers["Authorization"],
                                         self.headers["Content-Type"]))
                 self._send(200, b"{}")
@@ -123,6 +135,7 @@ def tool(url, tmp_path, monkeypatch):
     """The tool's routes on the store ``url``, with a key of its own, and a platform."""
     monkeypatch.setenv("MEHANIZMI_DATABASE_URL", url)
     monkeypatch.setenv("MEHANIZMI_LTI_KEY", str(tmp_path / "lti" / "tool-key.pem"))
+    monkeypatch.setattr(grades, "_TOKENS", {})  # (platform ids repeat from one store to the next)
     platform = Platform()
     platform.register(url)
     client = TestClient(Starlette(routes=ROUTES), base_url="https://tool.example")
@@ -232,6 +245,46 @@ def test_a_launch_address_opened_as_a_page_is_said_in_words(tool, path):
     assert answer.status_code == 405 and "POST" in answer.text and "<p>" in answer.text
 
 
+BIG = {"a 5 MB token": dict(data={"id_token": "x" * 5_000_000, "state": "s"}),
+       "30 MB said by its length": dict(content=b"", headers={"content-length": str(30 * 2**20)}),
+       "20,000 fields": dict(data={f"f{i}": "1" for i in range(20_000)}),
+       "a multipart without a boundary": dict(content=b"id_token=1",
+                                              headers={"content-type": "multipart/form-data"}),
+       "a file": dict(files={"id_token": ("t.txt", b"x")}, data={"state": "s"}),
+       "a length that is no number": dict(content=b"a=1", headers={"content-length": "-1"})}
+
+
+@pytest.mark.parametrize("path", ["/lti/login", "/lti/launch", "/lti/deeplink"])
+@pytest.mark.parametrize("sent", BIG, ids=list(BIG))
+def test_an_oversized_or_broken_form_is_refused_in_both_languages(tool, path, sent):
+    """Every form the tool reads, read within bounds: refused in the tool's words (Serbian
+    and English), never Starlette's plain text, and nothing stored."""
+    client, _, db = tool
+    before = counts(db)
+    answer = client.post(path, **BIG[sent])
+    assert answer.status_code in (400, 413) and answer.text.count("<p>") == 2, answer.text[:200]
+    assert "obrazac" in answer.text and "form" in answer.text
+    assert counts(db) == before
+
+
+def test_login_states_are_bounded_per_platform(tool, monkeypatch):
+    """A flood of logins keeps at most STATES_KEPT states of a platform; the newest still
+    launches, the oldest is gone (its launch refused in words)."""
+    client, platform, db = tool
+    monkeypatch.setattr(lti, "STATES_KEPT", 5)
+    first = login(client, platform)
+    for _ in range(7):
+        asked = login(client, platform)
+    with store.engine(db).connect() as connection:
+        assert connection.execute(sa.select(sa.func.count()).select_from(lti.states)).scalar() == 5
+    honest = client.post("/lti/launch", data={"id_token": platform.token(asked["nonce"]),
+                                              "state": asked["state"]}, follow_redirects=False)
+    assert honest.status_code == 303
+    oldest = client.post("/lti/launch", data={"id_token": platform.token(first["nonce"]),
+                                              "state": first["state"]}, follow_redirects=False)
+    assert oldest.status_code == 401 and "ten minutes" in oldest.text
+
+
 def test_a_replayed_launch_is_refused(tool):
     client, platform, db = tool
     asked = login(client, platform)
@@ -278,6 +331,32 @@ def test_a_stored_check_is_scored_at_the_platform_and_a_platform_down_gets_it_la
     assert len(platform.assertions) == 1
 
 
+def test_an_activity_added_by_hand_gets_one_line_item_and_its_grades(tool):
+    """A launch whose AGS claim names only the container (an activity typed by hand, with
+    task= and method=, no deep linking): the tool makes one line item for the link — not
+    one per learner, per process or per pass — and the scores go there."""
+    client, platform, db = tool
+    only_container = {AGS: {"lineitems": platform.url("/lineitems"),
+                            "scope": [grades.SCOPE, LINEITEM_SCOPE]}}
+    query = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(
+        launch(client, platform, **only_container).headers["location"]).query))
+    launch(client, platform, sub="learner-2", **only_container)
+    code, token = query["class"], query["student"]
+    steps = steps_of(store.find(code, db))
+    assert grades.make_lineitems(db) == 1 and grades.make_lineitems(db) == 0
+    (item,) = platform.lineitems
+    assert item["resourceLinkId"] == "rl-1" and item["scoreMaximum"] == len(steps)
+    assert item["label"].startswith("Plan") and "zbirka-3.1" in item["label"] and item["kind"] == grades.LINEITEM_TYPE
+    assert {a["scope"] for a in platform.assertions} == {LINEITEM_SCOPE}
+    store.record(code, token, steps[0].id, 1.0, "ok", store.new_check(), url=db)
+    assert grades.send_due(db) == 1
+    assert platform.scores[-1][0] == "/lineitems/90/lineitem/scores"
+    assert platform.scores[-1][1]["scoreGiven"] == 1
+    with store.engine(db).begin() as connection:  # made already (another tool's copy): found, not made again
+        connection.execute(lti.links.update().values(lineitem=None, asked=None))
+    assert grades.make_lineitems(db) == 1 and len(platform.lineitems) == 1
+
+
 def test_deep_linking_returns_a_signed_resource_link_with_a_line_item(tool):
     client, platform, _ = tool
     answer = launch(client, platform, sub="teacher-1", **{
@@ -305,11 +384,39 @@ def test_deep_linking_returns_a_signed_resource_link_with_a_line_item(tool):
     assert learner.status_code == 403
 
 
+def test_the_picker_offers_only_pairs_that_have_steps(tool):
+    """Each task's methods in the picker are those with steps there (a gear train: Willis
+    alone); a pair forced into the form anyway is refused with advice for the picker."""
+    client, platform, _ = tool
+    answer = launch(client, platform, sub="teacher-1", **{
+        CLAIM + "message_type": "LtiDeepLinkingRequest", CLAIM + "roles": [INSTRUCTOR],
+        DEEP + "deep_linking_settings": {"deep_link_return_url": platform.url("/deep-return")}})
+    offered = json.loads(answer.text.split("const pairs=")[1].split(",names=")[0])
+    assert set(offered) == {t for t in preset_ids() if routes.pairs()[t]}
+    for task, methods in offered.items():
+        scene = load_preset(task)
+        for method in store.METHODS:
+            try:
+                has = bool(steps_for(scene, method))
+            except SceneError:
+                has = False
+            assert (method in methods) == has, (task, method)
+    assert offered["zbirka-6.1"] == ["willis"] and offered["zbirka-7.1"] == ["balance"]
+    context = answer.text.split("name='context' value='")[1].split("'")[0]
+    forced = client.post("/lti/deeplink", data={"context": context, "task": "zbirka-6.1",
+                                                "method": "plans"})
+    assert forced.status_code == 400 and "go back and pick another method" in forced.text
+    assert "vratite se" in forced.text and "Traceback" not in forced.text
+
+
 def test_a_link_without_a_usable_task_is_refused_in_words(tool):
     client, platform, db = tool
     before = counts(db)
     answer = launch(client, platform, **{CLAIM + "custom": {"task": "zbirka-9.9", "method": "plans"}})
     assert answer.status_code == 400 and "zbirka-9.9" in answer.text
+    assert "nijedan zadatak" in answer.text and "known presets" not in answer.text  # (the tool's words)
+    answer = launch(client, platform, **{CLAIM + "custom": {"task": "zbirka-6.1", "method": "plans"}})
+    assert answer.status_code == 400 and "nema koraka" in answer.text and "scene" not in answer.text
     answer = launch(client, platform, **{CLAIM + "custom": {"task": "zbirka-3.1", "method": "walk"}})
     assert answer.status_code == 400 and "walk" in answer.text
     assert counts(db) == before
