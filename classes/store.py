@@ -154,6 +154,7 @@ def database_url() -> str:
     if url:
         return url
     DATA.mkdir(parents=True, exist_ok=True)
+    DATA.chmod(0o700)  # (the app's own folder: its store, tool key, logs, database server)
     return f"sqlite:///{DATA / 'mehanizmi.db'}"
 
 
@@ -187,8 +188,9 @@ def _engine(url: str) -> sa.Engine:
 
 def _private(path: Path) -> None:
     """The SQLite file (student tokens) readable by its owner alone, made so before SQLite
-    first opens it (its -wal and -shm files take the file's mode)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
+    first opens it (its -wal and -shm files take the file's mode); a folder made for it is
+    its owner's alone too (a folder the administrator chose keeps its mode)."""
+    path.parent.mkdir(mode=0o700, parents=True, exist_ok=True)
     os.close(os.open(path, os.O_CREAT | os.O_WRONLY, 0o600))
     os.chmod(path, 0o600)
 

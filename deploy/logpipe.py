@@ -18,12 +18,24 @@ import re
 import sys
 from logging.handlers import RotatingFileHandler
 
-SECRET = re.compile(r"(?i)\b(key|student)(=|%3D)[^&\s\"',;]+")
+def _encoded(text: str) -> str:
+    """A pattern for ``text`` written plainly or with any letter percent-encoded, once or
+    more (``k``, ``%6B``, ``%256B`` …)."""
+    return "".join(f"(?:{re.escape(c)}|%(?:25)*{ord(c):02x})" for c in text)
+
+
+# a secret's name (however encoded, and as the tail of a longer one: id_token), its "=" and
+# its value, up to the next separator, plain or encoded
+SECRET = re.compile(
+    rf"(?i)((?:{'|'.join(_encoded(n) for n in ('key', 'student', 'token'))})(?:=|%(?:25)*3d))"
+    r"(?:(?!%(?:25)*26)[^&\s\"',;])+")
+CLIENT = re.compile(r"\bclient: [^,\s]+")  # nginx's error log names the client's address
 
 
 def redacted(line: str) -> str:
-    """``line`` with the value of every ``key=`` and ``student=`` replaced by "…"."""
-    return SECRET.sub(r"\1\2…", line)
+    """``line`` with the value of every ``key=``, ``student=`` and ``…token=`` (however
+    URL-encoded) and every client address replaced by "…"."""
+    return CLIENT.sub("client: …", SECRET.sub(r"\1…", line))
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -10,7 +10,8 @@
 # from the store). Ctrl-C (or SIGTERM) stops nginx, every process and that server.
 # Logs are kept in MEHANIZMI_LOGS (default data/logs; the folder and files readable by the
 # starting user alone; rotated at LOG_BYTES, LOG_KEEP old ones kept; no key or token in
-# them). See docs/deploy.md.
+# them). deploy/cli.sh runs the command line against this store. See docs/deploy.md, which
+# names every variable read here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PROCESSES=${PROCESSES:-$(nproc)}
@@ -53,6 +54,7 @@ stop() {
 }
 trap stop EXIT
 trap 'exit 143' INT TERM  # (stop runs on the way out)
+PG_QUIET="-c log_error_verbosity=terse -c log_min_error_statement=panic"  # (deploy/cli.sh too)
 if [ -z "${MEHANIZMI_DATABASE_URL:-}" ]; then  # a server of our own, its data kept
   data=${MEHANIZMI_PGDATA:-data/postgres}
   mkdir -p "$data"
@@ -63,9 +65,11 @@ if [ -z "${MEHANIZMI_DATABASE_URL:-}" ]; then  # a server of our own, its data k
       echo "the postgres user cannot write $data: set MEHANIZMI_PGDATA to a folder it can reach" >&2; exit 1; }
   fi
   [ -f "$data/PG_VERSION" ] || "${as_postgres[@]}" "$PG_BIN/initdb" -D "$data" -A trust -U postgres >/dev/null
-  # its socket and its log in its own folder (mode 700): the same path at every start
+  # its socket and its log in its own folder (mode 700): the same path at every start; an
+  # error logged without its DETAIL or statement (a unique collision's DETAIL names the
+  # student's token)
   "${as_postgres[@]}" "$PG_BIN/pg_ctl" -D "$data" -l "$data/server.log" -w \
-    -o "-k $data -c listen_addresses=''" start >/dev/null
+    -o "-k $data -c listen_addresses='' $PG_QUIET" start >/dev/null
   PGDATA=$data
   export MEHANIZMI_DATABASE_URL="postgresql+psycopg://postgres@/postgres?host=$data"
 fi
@@ -74,7 +78,7 @@ serve() {  # one app process on port $1, started again if it dies (its users rec
   local port=$1 child=""
   trap 'kill $child 2>/dev/null; wait $child 2>/dev/null; exit 0' TERM
   while true; do
-    STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/python scripts/serve.py "$APP" \
+    MEHANIZMI_PROXY_HOST="$HOST" STREAMLIT_SERVER_COOKIE_SECRET="$SECRET" .venv/bin/python scripts/serve.py "$APP" \
       --server.port "$port" --server.address 127.0.0.1 --server.headless true \
       > >(logged "app-$port.log") 2>&1 &
     child=$!

@@ -415,8 +415,10 @@ def test_students_are_split_in_bands_of_a_given_value():
     assert set(summary.bands({"a": 5.0, "b": 5.0}).values()) == {(5.0, 5.0)}
 
 
-def test_the_sqlite_store_is_readable_by_its_owner_alone(tmp_path):
-    """It holds the students' tokens: made 600 before SQLite first opens it, its WAL too."""
+def test_the_sqlite_store_is_readable_by_its_owner_alone(tmp_path, monkeypatch):
+    """It holds the students' tokens: made 600 before SQLite first opens it, its WAL too, in
+    a folder made 700 for it; the default data folder is made 700 too."""
+    os.umask(0o022)
     path = tmp_path / "private" / "class.db"
     url = f"sqlite:///{path}"
     code, _ = store.create("zbirka-3.1", "plans", url=url)
@@ -424,6 +426,11 @@ def test_the_sqlite_store_is_readable_by_its_owner_alone(tmp_path):
     made = [p for p in path.parent.iterdir() if p.name.startswith("class.db")]
     assert path in made and all(p.stat().st_mode & 0o077 == 0 for p in made), \
         {p.name: oct(p.stat().st_mode) for p in made}
+    assert path.parent.stat().st_mode & 0o077 == 0
+    monkeypatch.setattr(store, "DATA", tmp_path / "data")
+    monkeypatch.delenv("MEHANIZMI_DATABASE_URL", raising=False)
+    assert store.database_url().endswith("data/mehanizmi.db")
+    assert (tmp_path / "data").stat().st_mode & 0o777 == 0o700
 
 
 def test_the_command_line_ends_quietly_on_a_closed_pipe_and_refuses_a_huge_answers_file(tmp_path):

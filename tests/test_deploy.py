@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import shutil
 import stat
 import subprocess
@@ -67,3 +68,33 @@ def test_a_piped_log_is_rotated_at_its_cap_private_and_without_keys(tmp_path):
     text = "".join(f.read_text() for f in files)
     assert "s3cret" not in text and "tok" not in text and "key=…" in text
     assert f"{1999:05d} GET /class?class=ABC123&key=…&student=…" in log.read_text()
+
+
+def test_every_variable_the_deploy_scripts_read_is_documented():
+    """docs/deploy.md's table names each variable deploy/start.sh and deploy/cli.sh read
+    (``FIRST_APP_PORT`` lived in the script alone)."""
+    read = set()
+    for script in ("start.sh", "cli.sh"):
+        read |= set(re.findall(r"\$\{([A-Z][A-Z_]+):-", (ROOT / "deploy" / script).read_text()))
+    table = (ROOT / "docs" / "deploy.md").read_text().split("## What the script reads", 1)[1]
+    documented = set(re.findall(r"^\| `([A-Z_]+)`(?:, `([A-Z_]+)`)?", table, re.M))
+    named = {n for pair in documented for n in pair if n}
+    assert {"PROCESSES", "FIRST_APP_PORT", "MEHANIZMI_PGDATA"} <= read
+    assert read <= named, read - named
+
+
+@pytest.mark.parametrize("line, hidden", [
+    ("GET /class?class=AB&key=K1 HTTP/1.1", "K1"),
+    ("GET /class?class=X%26key%3DK2&y=1", "K2"),
+    ("GET /?%6Bey=K3", "K3"),
+    ("GET /?%6b%65%79%3dK4", "K4"),
+    ("referrer: /velocity_plans?class=A&student%253DT5%2526lang%3Dsr", "T5"),
+    ("POST id_token=T6&state=s", "T6"),
+    ("x=1%26%73tudent%3dT7", "T7"),
+    ("connect() failed, client: 192.168.1.20, server: , request: \"GET / HTTP/1.1\"", "192.168.1.20"),
+])
+def test_every_form_of_a_secret_is_redacted(line, hidden):
+    from deploy.logpipe import redacted
+
+    kept = redacted(line)
+    assert hidden not in kept and "…" in kept

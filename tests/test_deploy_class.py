@@ -94,12 +94,14 @@ def test_a_student_behind_nginx_resumes_on_either_process_from_postgresql(deploy
         killed = app_pid(deployed.ports[0])
         os.kill(killed, signal.SIGKILL)  # a process falls over: started again, nothing lost
         planted = _while_down(proxy, code, key, token)
+        _collide(url, token)
         time.sleep(1.5)
         healthy(apps[0])
         assert app_pid(deployed.ports[0]) not in (None, killed)
         student.reload()  # through nginx, to whichever process: the progress from the store
         student.get_by_text("Korak 2 od").first.wait_for(timeout=60_000)
         browser.close()
+    _the_command_line_reaches_the_deployment(deployed, code, key)
     rows = store.export(code, key, url=url)
     assert [(r["nickname"], r["diagnosis"], r["try"]) for r in rows] == [("ana", "ok", 1)]
     _backup_and_restore_as_the_docs_say(deployed, lambda: store.delete(code, key, url=url))
@@ -126,7 +128,8 @@ def _backup_and_restore_as_the_docs_say(deployed, meanwhile) -> None:
         done = subprocess.run(["bash", "-c", line], cwd=folder, capture_output=True, text=True)
         assert done.returncode == 0, (line, done.stderr)
         if n == 0:
-            assert (Path(folder) / "mehanizmi.dump").stat().st_size > 1000
+            dump = (Path(folder) / "mehanizmi.dump").stat()
+            assert dump.st_size > 1000 and stat.S_IMODE(dump.st_mode) == 0o600  # (it holds tokens)
             meanwhile()
     shutil.rmtree(folder, ignore_errors=True)
 
@@ -136,9 +139,15 @@ def _while_down(proxy: str, code: str, key: str, token: str) -> list[str]:
     an app process is down (each route cookie hashes to one process: half of them to the
     one down, which nginx logs as a failed upstream with the request and its referrer)."""
     planted = [f"plantedkey{secrets.token_hex(8)}", f"plantedtoken{secrets.token_hex(8)}"]
+    encoded = {f"planted{n}{secrets.token_hex(6)}": form for n, form in enumerate((
+        "class={code}%26key%3D{secret}", "%6Bey={secret}", "class={code}&student%253D{secret}",
+        "x=1%26%73tudent%3d{secret}", "id_token={secret}"))}
+    planted += list(encoded)
+    queries = [f"class={code}&key={planted[0]}&student={planted[1]}",
+               *(form.format(code=code, secret=secret) for secret, form in encoded.items())]
     for k in range(16):
         request = urllib.request.Request(
-            f"{proxy}/class?class={code}&key={planted[0]}&student={planted[1]}",
+            f"{proxy}/class?{queries[k % len(queries)]}",
             headers={"Cookie": f"mehanizmi_route=r{k}",
                      "Referer": f"{proxy}/velocity_plans?class={code}&key={key}&student={token}"})
         try:
@@ -146,6 +155,27 @@ def _while_down(proxy: str, code: str, key: str, token: str) -> list[str]:
         except OSError:
             pass  # (a 502 is what nginx answers for a process that is down)
     return planted
+
+
+def _collide(url: str, token: str) -> None:
+    """A unique collision naming the student's token (as two checks of one step at once
+    made): PostgreSQL refuses it, and logs the error without its DETAIL."""
+    import sqlalchemy as sa
+
+    with pytest.raises(sa.exc.IntegrityError, match="unique"), store.engine(url).begin() as db:
+        first = dict(db.execute(sa.select(store.checks).where(store.checks.c.student == token)).one()._mapping)
+        del first["id"]
+        db.execute(store.checks.insert().values({**first, "check_id": store.new_check()}))
+
+
+def _the_command_line_reaches_the_deployment(deployed, code: str, key: str) -> None:
+    """deploy/cli.sh: the command line against the deployment's own PostgreSQL, with no
+    variable set (``class export`` said "No class has the code" against the SQLite file)."""
+    env = {k: v for k, v in os.environ.items() if k != "MEHANIZMI_DATABASE_URL"}
+    env["MEHANIZMI_PGDATA"] = str(deployed.pgdata)
+    done = subprocess.run(["bash", "deploy/cli.sh", "class", "export", code, "--key", key],
+                          cwd=ROOT, env=env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0 and "ana" in done.stdout, done.stderr
 
 
 def _logs_kept_private_and_without_secrets(deployed, key: str, tokens: list[str]) -> None:
@@ -160,7 +190,9 @@ def _logs_kept_private_and_without_secrets(deployed, key: str, tokens: list[str]
     assert stat.S_IMODE(deployed.pgdata.stat().st_mode) == 0o700
     access = (logs / "access.log").read_text()
     assert " /class " in access and "upstream=" in access  # what an administrator reads
-    assert "key=…" in (logs / "nginx.log").read_text()  # the failed requests, said redacted
+    nginx = (logs / "nginx.log").read_text()
+    assert "key=…" in nginx and "key%3D…" in nginx  # the failed requests, said redacted
+    assert "client: …" in nginx and "client: 127" not in nginx  # and without their address
     logged = [*logs.iterdir(), deployed.pgdata / "server.log"]
     stored = [path for path in deployed.pgdata.rglob("*") if path.is_file()]
     for paths, secrets_ in ((logged, [key, *tokens]), (stored, [key])):

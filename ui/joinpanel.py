@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import io
 import ipaddress
+import os
 import socket
 from urllib.parse import urlsplit, urlunsplit
 
@@ -50,22 +51,37 @@ def is_local(host: str) -> bool:
         return False
 
 
-def join_base(url: str) -> str:
-    """The class page's address for phones: ``url`` itself, or with a local host replaced by
-    this computer's network address (the lecturer is told either way)."""
+def listening() -> str:
+    """The address phones would reach the app on: the proxy's (deploy/start.sh names it in
+    ``MEHANIZMI_PROXY_HOST``), else this process's own (Streamlit's ``server.address``;
+    every interface when unset)."""
+    return os.environ.get("MEHANIZMI_PROXY_HOST") or st.get_option("server.address") or "0.0.0.0"
+
+
+def phones_base(url: str, listens: str, address: str | None) -> tuple[str, tuple[str, ...]]:
+    """The class page's address for phones, and what the lecturer is told about it: ``url``
+    itself when its host is reachable; with a local host replaced by this computer's network
+    ``address`` when the server listens there; ``url`` with a warning when it cannot be."""
     parts = urlsplit(url)
-    host = parts.hostname or ""
-    if not is_local(host):
-        return url
-    address = network_address()
+    if not is_local(parts.hostname or ""):
+        return url, ()
+    if is_local(listens):  # (nginx on 127.0.0.1: nothing answers on the network address)
+        return url, ("class.localhost", "class.localhost_listens")
     if address is None:
-        st.warning(t("class.localhost", host=host) + " " + t("class.localhost_none", host=host),
-                   icon=":material/wifi_off:")
-        return url
-    st.warning(t("class.localhost", host=host) + " " + t("class.localhost_offer"),
-               icon=":material/wifi:")
+        return url, ("class.localhost", "class.localhost_none")
     netloc = address + (f":{parts.port}" if parts.port else "")
-    return urlunsplit(parts._replace(netloc=netloc))
+    return urlunsplit(parts._replace(netloc=netloc)), ("class.localhost", "class.localhost_offer")
+
+
+def join_base(url: str) -> str:
+    """The class page's address for phones (``phones_base``), the lecturer told why."""
+    listens = listening()
+    base, said = phones_base(url, listens, network_address())
+    if said:
+        host = urlsplit(url).hostname or ""
+        icon = ":material/wifi:" if said[-1] == "class.localhost_offer" else ":material/wifi_off:"
+        st.warning(" ".join(t(key, host=host, listens=listens) for key in said), icon=icon)
+    return base
 
 
 def join_panel(code: str, key: str) -> None:
