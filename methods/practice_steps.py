@@ -264,6 +264,7 @@ def _polygon(vectors, sheet: str, unit: str, scale: float, closing: complex, pla
 # the kind of scene each method practises on
 KINDS = {"compass": Scene, "plans": Scene, "forces": Scene, "lever": Scene,
          "willis": GearTrain, "balance": Rotor}
+KIND_NAMES = {Scene: "linkage", GearTrain: "gear train", Rotor: "rotor"}  # (said in errors)
 
 
 def steps_for(scene, method: str, at: float | None = None) -> list[Step]:
@@ -273,8 +274,8 @@ def steps_for(scene, method: str, at: float | None = None) -> list[Step]:
     if kind is None:
         raise SceneError(f"unknown method {method!r}: choose one of {', '.join(KINDS)}")
     if not isinstance(scene, kind):
-        raise SceneError(f"the {method} method needs a {kind.__name__.lower()} scene; this is a "
-                         f"{type(scene).__name__.lower()}")
+        raise SceneError(f"the {method} method needs a {KIND_NAMES[kind]}; this is a "
+                         f"{KIND_NAMES.get(type(scene), type(scene).__name__.lower())}")
     if method == "compass":
         motion = solve(scene, cycle_values(scene, 12), order=0)
         return compass(motion, plan_scales(scene, None)["L"])

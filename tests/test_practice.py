@@ -141,8 +141,8 @@ def test_the_command_line_lists_the_steps_and_grades_answers(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("args, says", [
-    (["practice", "zbirka-3.1", "--method", "willis"], "needs a geartrain scene"),
-    (["practice", "zbirka-6.4", "--method", "plans"], "needs a scene scene"),
+    (["practice", "zbirka-3.1", "--method", "willis"], "needs a gear train; this is a linkage"),
+    (["practice", "zbirka-6.4", "--method", "plans"], "needs a linkage; this is a gear train"),
     (["practice", "no-such-task", "--method", "plans"], "no-such-task"),
 ])
 def test_a_scene_that_cannot_be_practised_gets_a_message_and_code_2(args, says, capsys):
