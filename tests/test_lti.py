@@ -49,6 +49,7 @@ class Platform:
         self.scores: list[tuple[str, dict, str]] = []  # (path, body, authorization)
         self.assertions: list[dict] = []
         self.lineitems: list[dict] = []  # the container's line items (made by the tool's POST)
+        self.claims: dict = {}  # what the next launches claim besides the defaults
         self.down = False
         self.tool_jwks: str | None = None  # the tool's public keyset URL (else its key here)
         platform = self
@@ -123,6 +124,7 @@ class Platform:
                 AGS: {"lineitem": self.url("/lineitems/5/lineitem?type_id=3"),
                       "scope": [grades.SCOPE]},
                 CLAIM + "launch_presentation": {"locale": "sr", "document_target": "window"}}
+        body.update(self.claims)
         body.update(claims)
         return jwt.encode(body, key or self.key, algorithm="RS256", headers={"kid": "p1"})
 

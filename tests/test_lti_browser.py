@@ -18,7 +18,9 @@ from lti import store as lti
 from mechanisms import load_preset
 
 from .test_browser import keep, wait_idle
-from .test_lti import Platform
+from lti.launch import CLAIM, DEEP
+
+from .test_lti import INSTRUCTOR, Platform
 
 pytestmark = pytest.mark.browser
 
@@ -72,3 +74,26 @@ def test_a_click_in_moodle_opens_practice_and_the_check_reaches_the_gradebook(se
     assert body["userId"] == "learner-1" and body["scoreGiven"] == 1
     assert body["scoreMaximum"] == len(steps_for(load_preset("zbirka-3.1"), "plans"))
     assert page.locator("[data-testid='stException']").count() == 0
+
+
+def test_the_picker_s_methods_follow_the_task(served, browser):
+    """Deep linking in chromium: the method list holds each task's methods with steps — a
+    gear train offers Willis alone, a rotor balancing — and the picked pair is returned."""
+    app_url, platform = served
+    platform.claims = {CLAIM + "message_type": "LtiDeepLinkingRequest", CLAIM + "roles": [INSTRUCTOR],
+                       DEEP + "deep_linking_settings": {"deep_link_return_url": platform.url("/deep-return")},
+                       CLAIM + "launch_presentation": {"locale": "en"}}
+    try:
+        page = browser.new_page()
+        page.goto(f"{app_url}/lti/login?iss={platform.issuer}&login_hint=u-1&client_id={platform.client_id}")
+        page.get_by_text("What the student practises").wait_for(timeout=30_000)
+        method = page.locator("select[name=method]")
+        page.select_option("select[name=task]", "zbirka-6.1")
+        assert method.locator("option").evaluate_all("o => o.map(x => x.value)") == ["willis"]
+        page.select_option("select[name=task]", "zbirka-7.1")
+        assert method.locator("option").evaluate_all("o => o.map(x => x.value)") == ["balance"]
+        page.select_option("select[name=task]", "zbirka-3.1")
+        values = method.locator("option").evaluate_all("o => o.map(x => x.value)")
+        assert values == ["compass", "plans", "forces", "lever"] and method.input_value() == "plans"
+    finally:
+        platform.claims = {}

@@ -31,7 +31,7 @@ $config->lti_coursevisible = LTI_COURSEVISIBLE_ACTIVITYCHOOSER;
 $config->lti_launchcontainer = LTI_LAUNCH_CONTAINER_WINDOW;
 $config->lti_sendname = LTI_SETTING_NEVER;
 $config->lti_sendemailaddr = LTI_SETTING_NEVER;
-$config->lti_acceptgrades = LTI_SETTING_ALWAYS;
+$config->lti_acceptgrades = LTI_SETTING_DELEGATE;  // (each activity says: a teacher's choice)
 $config->ltiservice_gradesynchronization = 2;
 $typeid = lti_add_type($type, $config);
 $tool = lti_get_type($typeid);
@@ -50,9 +50,19 @@ $generator->enrol_user($student->id, $course->id, 'student');
 $activity = $generator->create_module('lti', [
     'course' => $course->id, 'name' => 'Vežba: plan brzina i ubrzanja, 3.1', 'typeid' => $typeid,
     'toolurl' => "$base/lti/launch", 'instructorcustomparameters' => "task=zbirka-3.1\nmethod=plans",
-    'grade' => (int) $steps, 'launchcontainer' => LTI_LAUNCH_CONTAINER_WINDOW,
+    'grade' => (int) $steps, 'instructorchoiceacceptgrades' => 1,
+    'launchcontainer' => LTI_LAUNCH_CONTAINER_WINDOW,
     // as a teacher's form leaves them (the test generator's own defaults would send a key
     // of its own as the token's audience, and names and e-mails)
+    'resourcekey' => '', 'password' => '', 'instructorchoicesendname' => 0,
+    'instructorchoicesendemailaddr' => 0]);
+
+// an activity as a teacher types it without deep linking: the custom parameters, and no
+// grade of its own (Moodle then sends only its line-items container; the tool makes one)
+$typed = $generator->create_module('lti', [
+    'course' => $course->id, 'name' => 'Vežba upisana ručno: plan brzina, 3.1', 'typeid' => $typeid,
+    'toolurl' => "$base/lti/launch", 'instructorcustomparameters' => "task=zbirka-3.1\nmethod=plans",
+    'grade' => 0, 'instructorchoiceacceptgrades' => 0, 'launchcontainer' => LTI_LAUNCH_CONTAINER_WINDOW,
     'resourcekey' => '', 'password' => '', 'instructorchoicesendname' => 0,
     'instructorchoicesendemailaddr' => 0]);
 
@@ -61,4 +71,5 @@ echo json_encode([
     'auth_url' => "$CFG->wwwroot/mod/lti/auth.php", 'token_url' => "$CFG->wwwroot/mod/lti/token.php",
     'jwks_url' => "$CFG->wwwroot/mod/lti/certs.php", 'course' => $course->id,
     'cmid' => $activity->cmid, 'instance' => $activity->id, 'student' => $student->username,
-    'teacher' => $teacher->username, 'student_id' => $student->id]), "\n";
+    'teacher' => $teacher->username, 'student_id' => $student->id,
+    'typed_cmid' => $typed->cmid, 'typed_instance' => $typed->id]), "\n";
