@@ -296,6 +296,11 @@ async def deeplink(request: Request) -> Response:
         "<noscript><button type='submit'>OK</button></noscript></form></body></html>")
 
 
+async def too_large(request: Request) -> Response:
+    """What nginx shows for an LTI form over its limit (deploy/nginx.conf.in's error page)."""
+    return refused(Text("lti.too_large", kb=MAX_BODY // 1024), 413)
+
+
 async def posted_only(request: Request) -> Response:
     """A launch or deep-linking address opened as a page (GET): said in words, 405 — not
     the app's blank page."""
@@ -304,6 +309,8 @@ async def posted_only(request: Request) -> Response:
 
 ROUTES = [Route("/lti/jwks", jwks, methods=["GET"]),
           Route("/lti/login", answered(login), methods=["GET", "POST"]),
+          Route("/lti/login", posted_only, methods=["PUT", "DELETE", "PATCH"]),
+          Route("/lti/too-large", too_large, methods=["GET", "POST"]),
           Route("/lti/launch", answered(launch), methods=["POST"]),
           Route("/lti/launch", posted_only, methods=["GET", "HEAD", "PUT", "DELETE", "PATCH"]),
           Route("/lti/deeplink", answered(deeplink), methods=["POST"]),

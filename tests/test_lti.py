@@ -287,6 +287,14 @@ def test_login_states_are_bounded_per_platform(tool, monkeypatch):
     assert oldest.status_code == 401 and "ten minutes" in oldest.text
 
 
+@pytest.mark.parametrize("method, path, status", [("PUT", "/lti/login", 405), ("DELETE", "/lti/launch", 405),
+                                                  ("GET", "/lti/too-large", 413)])
+def test_every_other_answer_of_the_routes_is_in_words(tool, method, path, status):
+    client, _, _ = tool
+    answer = client.request(method, path)
+    assert answer.status_code == status and answer.text.count("<p>") == 2
+
+
 def test_a_replayed_launch_is_refused(tool):
     client, platform, db = tool
     asked = login(client, platform)
