@@ -171,7 +171,9 @@ with controls:
     seed({"at": driver_start(base), "tol": 1e-10, "upto": 99, "back": 5.0},
          st.session_state["scene"])
     position = st.container()  # φ₂ (or s): drawn by the fragment below
-    tol = st.select_slider(t("assur.tol"), options=[*TOLERANCES[:3], 1e-10, TOLERANCES[3]],
+    tolerances = [*TOLERANCES[:3], 1e-10, TOLERANCES[3]]
+    bound_link("tol", t("assur.tol"), options=tolerances)
+    tol = st.select_slider(t("assur.tol"), options=tolerances,
                            key="tol", format_func=lambda v: sci(v, 0), bind="query-params")
     download = st.container()
     answers = st.container()

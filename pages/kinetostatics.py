@@ -33,12 +33,12 @@ from ui.firstpaint import waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
-from ui.numbers import bound_link, last_value, number_field
+from ui.numbers import bound_link, last_value, link_switch, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_speed, driver_start, scene_picker
 from ui.selfcheck import answer_box, named
-from ui.url import seed, url_toggle
+from ui.url import seed
 
 page_title("pages/kinetostatics.py")
 practice.class_only("pr_forces", "pr_lever")  # a seated student: the class's practice alone
@@ -81,8 +81,8 @@ def task_values(base: Scene) -> dict[str, object]:
 
 def load_inputs(base: Scene, scene: Scene) -> Scene:
     """Masses, radii of gyration, forces and moments (all kept in the URL)."""
-    inertia = url_toggle(t("forces.inertia"), "inertia")
-    gravity = url_toggle(t("forces.gravity"), "gravity")
+    inertia = link_switch(t("forces.inertia"), "inertia")
+    gravity = link_switch(t("forces.gravity"), "gravity")
     with st.expander(t("forces.loads"), expanded=False):
         forces, angles = [], []
         for i, f in enumerate(base.forces):

@@ -24,11 +24,11 @@ from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
-from ui.numbers import as_given, bound_link, last_value, number_field
+from ui.numbers import as_given, bound_link, last_value, link_option, number_field
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import answer_box, named
-from ui.url import seed, url_choice
+from ui.url import seed
 
 
 def legend() -> tuple[str, str]:
@@ -84,14 +84,14 @@ with controls:
     base = scene_picker("rotor")
     seed(defaults(base), st.session_state["scene"])
     modes = {"dynamic": "rotor.mode_dynamic", "static": "rotor.mode_static"}
-    url_choice(st.radio, t("rotor.mode"), list(modes), "mode", default=base.mode,
+    link_option(st.radio, t("rotor.mode"), list(modes), "mode", default=base.mode,
                format_func=lambda m: t(modes[m]), horizontal=True)
     givens = {"mass": "rotor.given_mass", "radius": "rotor.given_radius"}
     typed: dict[str, float] = {}
     for plane in PLANES[:1] if st.session_state["mode"] == "static" else PLANES:
         st.markdown(f"**{t('rotor.plane', plane=plane)}**")
         typed[f"x{plane}"] = number_field(t("rotor.plane_x"), f"x{plane}", url=True)
-        given = url_choice(st.radio, t("rotor.given"), list(givens), f"given{plane}",
+        given = link_option(st.radio, t("rotor.given"), list(givens), f"given{plane}",
                            format_func=lambda g: t(givens[g]), horizontal=True)
         unit_label = "kg" if given == "mass" else "mm"
         typed[f"value{plane}"] = number_field(f"{t(givens[given])} [{unit_label}]",
@@ -119,7 +119,7 @@ with controls:
 
 def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> None:
     """The moment polygon about the chosen plane, closed by the other plane's correction."""
-    reference = url_choice(st.radio, t("rotor.reference"), ["II", "I"], "ref", horizontal=True)
+    reference = link_option(st.radio, t("rotor.reference"), ["II", "I"], "ref", horizontal=True)
     other = "I" if reference == "II" else "II"
     x_ref = rotor.planes[reference]
     vs = [u * (m.x - x_ref) * MM for u, m in zip(us, rotor.masses)]  # kg·mm²

@@ -45,11 +45,11 @@ from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
-from ui.numbers import bound_link, bound_slider
+from ui.numbers import bound_link, bound_slider, link_option
 from ui.present import look
 from ui.scenes import length_range, length_slider, scene_download, scene_picker
 from ui.selfcheck import answer_box, computed, named
-from ui.url import seed, url_choice
+from ui.url import seed
 
 RESOLUTIONS = (12, 72, 360, 3600)
 MAX_FRAMES = 120
@@ -342,7 +342,7 @@ with controls:
     steps = st.select_slider(t("traj.resolution"), RESOLUTIONS, value=360, key="res",
                              bind="query-params")
     views = {"steps": "traj.view_steps", "smooth": "traj.view_smooth", "compass": "traj.view_compass"}
-    view = url_choice(st.radio, t("traj.view"), list(views), "view",
+    view = link_option(st.radio, t("traj.view"), list(views), "view",
                       format_func=lambda v: t(views[v]), horizontal=True)
     movable = [p for p in base.point_names if p not in base.frame]
     points = st.multiselect(t("traj.points"), movable, key="points",

@@ -25,7 +25,7 @@ import streamlit as st
 
 from mechanisms.sketch import COLUMNS
 from ui.i18n import current, t
-from ui.numbers import Refused, literal, parse, refusal, shown
+from ui.numbers import Refused, check, literal, refusal, shown
 from ui.url import table_refused, table_to_url, url_table
 
 TEXT_COLUMNS = {"point", "label", "first", "second", "through", "type", "form", "side"}
@@ -86,7 +86,7 @@ def _cell(name: str, value, language: str):
     if not value.strip():
         return None
     try:
-        return parse(value, language)
+        return check(value, language)
     except Refused:
         return value
 
@@ -104,7 +104,7 @@ def refused(rows: list[dict], language: str,
         for name, value in row.items():
             if is_number_column(name) and isinstance(value, str) and value.strip():
                 try:
-                    parse(value, language)
+                    check(value, language)  # (one number, within the loader's bounds)
                 except Refused as why:
                     found.append((i, name, why))
             elif name in required(row) and _empty(value):
@@ -148,8 +148,7 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     table, written the new language's way."""
     language = current()
     start = url_table(key, default, scene, rows_fixed)
-    if (text := table_refused(key)) is not None:
-        st.warning(t("link.table_refused", text=literal(text)), icon=":material/link_off:")
+    link_said = st.container()  # a refused link table, said while the table is the scene's own
     memo = st.session_state.get(f"_{key}_typed")
     if memo is None or memo["scene"] != scene:
         memo = {"scene": scene, "language": language, "text": _written(start, numbers, language),
@@ -177,6 +176,11 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
         st.session_state[f"_{key}_typed"] = memo
         st.rerun()  # the editor again from what was typed, the marks where they are now
     st.session_state[f"_{key}_typed"] = memo
+    if (text := table_refused(key)) is not None:
+        if memo["good"].equals(start):
+            link_said.warning(t("link.table_refused", text=literal(text)), icon=":material/link_off:")
+        else:
+            table_refused(key, kept=False)
     table_to_url(key, memo["good"], default)
     return memo["good"]
 
@@ -225,4 +229,4 @@ def _number(value, language: str) -> float:
     """A cell of a table of numbers: blank is NaN (the row is left out), text is parsed."""
     if _blank_cell(value) or (isinstance(value, str) and not value.strip()):
         return math.nan
-    return parse(value, language) if isinstance(value, str) else float(value)
+    return check(value, language) if isinstance(value, str) else float(value)

@@ -180,6 +180,10 @@ def language_picker() -> str:
     _RUN.language = url_choice(st.sidebar.selectbox, "Language · Jezik · Језик", list(LANGUAGES),
                                "lang", default=default_language(), format_func=LANGUAGES.get,
                                label_visibility="collapsed")
+    kept = st.session_state.get("_link_refused_lang")
+    if kept is not None and kept[1] == _RUN.language:  # ?lang=xx: said until another is picked
+        st.sidebar.warning(t("link.refused", why=t("num.unknown", field="lang",
+                                                   text=f"`{kept[0].text}`")), icon=":material/link_off:")
     return _RUN.language
 
 

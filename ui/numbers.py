@@ -19,16 +19,20 @@ changes it.
 
 from __future__ import annotations
 
+import contextlib
+import math
 import re
 
 import numpy as np
 import streamlit as st
+from streamlit.errors import StreamlitAPIException
 
+from mechanisms.reader import LARGEST
 from mechanisms.typed import NUMBER, Refused, comma_is_decimal, parse  # noqa: F401 (the pages' parser)
 from ui.i18n import current, t
-from ui.url import link_default, url_set
+from ui.url import link_default, url_choice, url_set, url_toggle
 
-REASONS = ("empty", "not_number", "comma", "integer", "below", "above")  # num.<reason>
+REASONS = ("empty", "not_number", "comma", "integer", "below", "above", "repeated", "unknown")  # num.<reason>
 SHOWN_MAX = 40  # characters of a typed text repeated in a message
 
 
@@ -80,8 +84,12 @@ def literal(text: str) -> str:
 
 def check(text: str, language: str, *, minimum: float | None = None,
           maximum: float | None = None, integer: bool = False) -> float:
-    """``parse`` and the field's range: a value outside it is refused, not clamped."""
+    """``parse`` and the field's range: a value outside it is refused, not clamped. Every
+    range lies within the scene loader's (±``LARGEST``): no solver or scale is handed a
+    number whose square overflows (ω = 1e154 on the rotor page was an OverflowError)."""
     value = parse(text, language, integer=integer)
+    minimum = -LARGEST if minimum is None else max(minimum, -LARGEST)
+    maximum = LARGEST if maximum is None else min(maximum, LARGEST)
     if minimum is not None and value < minimum:
         raise Refused("below", text, minimum)
     if maximum is not None and value > maximum:
@@ -116,8 +124,10 @@ def number_field(label: str, key: str, value: float | None = None, *,
         value, given = float(given), None  # seeded by the page (ui.url.seed)
     elif given is None and url and key in st.query_params:
         try:  # read as a typed value is, range and all (either decimal sign)
-            value = check(st.query_params[key], "sr", minimum=minimum, maximum=maximum,
-                          integer=integer)
+            linked = st.query_params.get_all(key)
+            if len(linked) > 1:
+                raise Refused("repeated", " & ".join(linked))
+            value = check(linked[0], "sr", minimum=minimum, maximum=maximum, integer=integer)
         except Refused as refused:  # a hand-edited link: the page's own value, said
             value = link_default(key, value)
             said_of_link(key, refused, value)
@@ -154,25 +164,53 @@ def number_field(label: str, key: str, value: float | None = None, *,
 
 
 def bound_link(key: str, label: str, low: float | None = None, high: float | None = None,
-               options: list | None = None) -> None:
+               options: list | None = None, *, integer: bool | None = None) -> None:
     """Before a widget Streamlit binds to the link (``bind="query-params"``: φ₂, ω₂, a
-    step): a link value that is not one number in ``[low, high]`` (or not one of
-    ``options``) is said in words and dropped, and the page's own value is used — Streamlit
-    would silently put the widget at its first value instead (φ₂ = 0 for ``?at=abc``)."""
+    step): the link's value is read here, by the app's one parser, and handed to the widget
+    as its value with the link rewritten in the plain form Streamlit's binding reads
+    ("1,5" and "−3" would put a slider at its minimum). A value that is not one number in
+    ``[low, high]`` (or not one of ``options``), or a key the link gives twice, is said in
+    words and dropped, and the page's own value is used."""
     read = f"_link_read_{key}"  # the link is read when the page opens, not after
-    text = st.query_params.get(key)
-    if text is not None and not st.session_state.get(read):
-        st.session_state[read] = True
+    given = st.query_params.get_all(key) if not st.session_state.get(read) else []
+    st.session_state[read] = True  # (later runs: the widget's value, the link written from it)
+    if given:
+        if integer is None:
+            integer = all(isinstance(v, int) for v in (options or [low, high]) if v is not None)
         try:
-            value = check(text, "sr", minimum=low, maximum=high)
-            if options is not None and value not in options:
-                raise Refused("not_number", text)
+            if len(given) > 1:
+                raise Refused("repeated", " & ".join(given))
+            value = check(given[0], "sr", minimum=low, maximum=high, integer=integer)
+            if options is not None:
+                value = next((o for o in options if math.isclose(o, value, rel_tol=1e-9)), None)
+                if value is None:
+                    raise Refused("unknown", given[0])
+            used = int(value) if integer else float(value)
+            st.session_state[key] = used
+            with contextlib.suppress(StreamlitAPIException):  # (bound already: it writes it)
+                st.query_params[key] = str(used) if integer else f"{used:.15g}"
         except Refused as refused:
             st.query_params.pop(key, None)
             if (own := link_default(key)) is not None:
                 st.session_state[key] = own
             said_of_link(key, refused, st.session_state.get(key))
     link_note(key, label, st.session_state.get(key))
+
+
+def link_switch(label: str, key: str, **kwargs) -> bool:
+    """A switch kept in the link (``url_toggle``), a link's value that is not true or false
+    said in words while the switch is as the page has it."""
+    value = url_toggle(label, key, **kwargs)
+    link_note(key, label, value)
+    return value
+
+
+def link_option(widget, label: str, options, key: str, default: str | None = None, **kwargs) -> str:
+    """A choice kept in the link (``url_choice``), with a link's unknown value said in words
+    for as long as the page shows its own instead."""
+    value = url_choice(widget, label, options, key, default, **kwargs)
+    link_note(key, label, value)
+    return value
 
 
 def said_of_link(key: str, refused: Refused, value) -> None:
@@ -187,6 +225,8 @@ def link_note(key: str, label: str, value, where=None) -> None:
     kept = st.session_state.get(f"_link_refused_{key}")
     if kept is None:
         return
+    if kept[1] is None and value is not None:  # (the widget's own first value, taken now)
+        kept = st.session_state[f"_link_refused_{key}"] = (kept[0], value)
     if kept[1] != value:  # the person has set the field since: the link is behind them
         del st.session_state[f"_link_refused_{key}"]
         return

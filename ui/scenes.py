@@ -19,8 +19,7 @@ from mechanisms.writer import to_text
 from ui.cache import preset
 from ui.chapters import page_for
 from ui.i18n import current, message, note_of, source_of, t, title_of
-from ui.numbers import bound_link, bound_slider
-from ui.url import url_choice
+from ui.numbers import bound_link, bound_slider, link_option
 
 UPLOADED = "upload"
 
@@ -158,7 +157,7 @@ def scene_picker(kind: str = "linkage", default: str | None = None):
         st.error(t("scene.bad_link", reason=message(st.session_state["link_error"])))
     if st.session_state.get("code_error"):
         st.error(t("var.bad_code", reason=message(st.session_state["code_error"])))
-    choice = url_choice(st.selectbox, t("scene.pick"), options, "scene", default=default,
+    choice = link_option(st.selectbox, t("scene.pick"), options, "scene", default=default,
                         format_func=label, on_change=_forget_errors)
     if linked is not None and choice == linked[0]:
         scene = linked[1]

@@ -8,11 +8,13 @@ editor's rows) travel as compact rows of numbers.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 
 import pandas as pd
 import streamlit as st
+
+from mechanisms.reader import LARGEST
+from mechanisms.typed import Refused, parse
 
 
 def url_set(key: str, text: str) -> None:
@@ -24,11 +26,17 @@ def url_set(key: str, text: str) -> None:
 
 def url_choice(widget: Callable, label: str, options: Sequence[str], key: str,
                default: str | None = None, **kwargs) -> str:
-    """``widget`` (st.selectbox, st.radio, …) seeded from ``?key=`` and writing it back."""
-    default = options[0] if default is None else default
+    """``widget`` (st.selectbox, st.radio, …) seeded from ``?key=`` and writing it back. A
+    link's value that is not one of ``options`` (or given twice) gives way to ``default``,
+    and is kept to be said (``ui.numbers.link_choice``: this module speaks no language)."""
+    default = link_default(key, options[0]) if default is None else default  # (seed's, if seeded)
     if key not in st.session_state or st.session_state[key] not in options:
-        wanted = st.query_params.get(key)
+        given = st.query_params.get_all(key)
+        wanted = given[0] if len(given) == 1 else None
         st.session_state[key] = wanted if wanted in options else default
+        if given and wanted not in options:
+            st.session_state[f"_link_refused_{key}"] = (
+                Refused("repeated" if len(given) > 1 else "unknown", " & ".join(given)[:80]), default)
     value = widget(label, options, key=key, **kwargs)
     url_set(key, value)
     return value
@@ -39,7 +47,13 @@ def url_toggle(label: str, key: str, **kwargs) -> bool:
     bound switch set back to its default from a button (the book's "As in the book") kept
     the URL's old value and so its old state."""
     if key not in st.session_state and key in st.query_params:
-        st.session_state[key] = st.query_params[key] == "true"
+        given = st.query_params.get_all(key)
+        if len(given) == 1 and given[0] in ("true", "false"):
+            st.session_state[key] = given[0] == "true"
+        else:  # (said by ui.numbers.link_switch while the switch is as the page has it)
+            st.session_state[f"_link_refused_{key}"] = (
+                Refused("repeated" if len(given) > 1 else "unknown", " & ".join(given)[:80]),
+                kwargs.get("value", False))
     value = st.toggle(label, key=key, **kwargs)
     url_set(key, "true" if value else "false")
     return value
@@ -80,25 +94,29 @@ def url_table(key: str, default: pd.DataFrame, scene: str, rows_fixed: bool = Tr
     if first or st.session_state[memo][0] != scene:
         start = default
         text = st.query_params.get(key) if first else None
+        st.session_state.pop(f"_{key}_link_refused", None)  # (another scene: its own table)
         if text:
             try:
-                rows = [[float(v) for v in row.split(",")] for row in text.split(";")]
+                rows = [[parse(v, "en") for v in row.split(",")] for row in text.split(";")]
                 if any(len(row) != len(default.columns) for row in rows):
                     raise ValueError(text)
                 table = pd.DataFrame(rows, columns=default.columns).astype(default.dtypes)
-                if not table.map(math.isfinite).all().all() or (
+                if not table.map(lambda v: abs(v) <= LARGEST).all().all() or (
                         rows_fixed and len(table) != len(default)):
                     raise ValueError(text)
                 start = table
-            except (ValueError, TypeError):  # a hand-edited link: the scene's own table, said
+            except (Refused, ValueError, TypeError):  # a hand-edited link: the scene's own table, said
                 st.session_state[f"_{key}_link_refused"] = text
         st.session_state[memo] = (scene, start)
     return st.session_state[memo][1]
 
 
-def table_refused(key: str) -> str | None:
-    """The link's text for the table ``key`` when it was refused (said once, by the page)."""
-    return st.session_state.pop(f"_{key}_link_refused", None)
+def table_refused(key: str, kept: bool = True) -> str | None:
+    """The link's text for the table ``key`` when it was refused: said by the page on every
+    run while the table is still the scene's own, forgotten (``kept=False``) once edited."""
+    if not kept:
+        return st.session_state.pop(f"_{key}_link_refused", None)
+    return st.session_state.get(f"_{key}_link_refused")
 
 
 def table_to_url(key: str, table: pd.DataFrame, default: pd.DataFrame) -> None:
