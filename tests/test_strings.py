@@ -48,8 +48,10 @@ def used_keys() -> set[str]:
     places = set(re.findall(r'fail\("([^"]+)"', text))  # a scene file's keys: "driver.type"
     files = {k for k in keys if k.endswith((".py", ".toml", ".js", ".json", ".db"))}
     results = {k for k in keys if k.split(".")[0] in RESULT_HEADS}  # a result's key, not a message's
-    return (keys - places - files - results) | rules | message_families()
+    return (keys - places - files - results - LIBRARY_NAMES) | rules | message_families()
 
+
+LIBRARY_NAMES = {"http.request", "server.address"}  # ASGI's message type, Streamlit's option
 
 # the heads of a result's key (reports.values: "driving.torque", "members.3.omega"), which no
 # message key shares
