@@ -140,7 +140,8 @@ def parse_gears(raw: dict, source: str, default_id: str) -> GearTrain:
             radii = spec["radii"]
             if not isinstance(radii, list) or len(radii) != 2:
                 raise r.fail(f"{where}.radii", "two_radii")
-            radii = tuple(r.number({"r": v}, "r", f"{where}.radii", positive=True) for v in radii)
+            radii = tuple(r.number({f"radii[{k}]": v}, f"radii[{k}]", where, positive=True)
+                          for k, v in enumerate(radii))
         elif "teeth" in spec:
             module = r.number(spec, "module", where, default=0.001, positive=True)
             teeth = spec["teeth"]

@@ -117,6 +117,16 @@ def build_document(raw: dict, source: str = "<scene>", default_id: str = "scene"
     return _build(raw, Reader(source), default_id)
 
 
+def as_loaded(scene, source: str = "<table>"):
+    """``scene`` (made from a page's table) held to the rules a scene file is: written as
+    the download writes it and read back by the loader, which raises its SceneError where
+    the file would be refused. So a table is checked by the one validator, and no scene
+    the loader refuses is solved, drawn or written."""
+    from .writer import to_text
+
+    return parse_document(to_text(scene), source, scene.id)
+
+
 def parse_scene(data: bytes | str, source: str = "<scene>", default_id: str = "scene") -> Scene:
     """Parse and validate a linkage scene (bytes from an upload or a file)."""
     return _build(_read_toml(data, source), Reader(source), default_id)

@@ -293,7 +293,7 @@ def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerato
             solved = builder.drawing(scene)
             st.session_state["build_last"] = doc, solved
         except (SceneError, StructureError, Unsolvable) as exc:
-            problem = message(exc)
+            problem = message(builder.in_tables(exc, doc))
     last_doc, last = st.session_state.get("build_last", (None, None))
 
     with drawing_col:

@@ -7,6 +7,7 @@ import streamlit as st
 
 from figures.gears import schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
+from mechanisms.loader import as_loaded
 from methods import practice_steps
 from methods.gear_steps import speed_steps, stage_latex, total_ratio
 from methods.scales import nice_scale
@@ -58,8 +59,20 @@ def scale_inputs() -> tuple[float, float, float]:
 
 
 def meshes_table(base: GearTrain) -> pd.DataFrame:
+    """The meshes as the table shows them: a ring (internal teeth) a yes/no cell — the ring
+    is the larger gear of its mesh (the second where both are alike), as in every task."""
     return pd.DataFrame([{"a": m.members[0], "b": m.members[1], "R_a [m]": m.radii[0],
-                          "R_b [m]": m.radii[1], "ring": m.internal or 0} for m in base.meshes])
+                          "R_b [m]": m.radii[1], "ring": m.internal is not None} for m in base.meshes])
+
+
+def meshes_of(table: pd.DataFrame, base: GearTrain) -> tuple[Mesh, ...]:
+    """The table's meshes (a ticked ring: its larger gear has the internal teeth)."""
+    def ring(a: int, b: int, ra: float, rb: float, ticked: bool) -> int | None:
+        return (a if ra > rb else b) if ticked else None
+    return tuple(Mesh((int(r["a"]), int(r["b"])), (float(r["R_a [m]"]), float(r["R_b [m]"])),
+                      ring(int(r["a"]), int(r["b"]), float(r["R_a [m]"]), float(r["R_b [m]"]),
+                           bool(r["ring"])), old.bevel)
+                 for (_, r), old in zip(table.iterrows(), base.meshes))
 
 
 controls, main = page_columns()
@@ -85,10 +98,11 @@ with main:
         table = typed_table("meshes", own, base.id, ("R_a [m]", "R_b [m]"),
                             name=t("gears.meshes_short"), width="stretch",
                             disabled=["a", "b"], column_config={
-                                "ring": st.column_config.NumberColumn(t("gears.ring"))})
-    meshes = tuple(Mesh((int(r["a"]), int(r["b"])), (float(r["R_a [m]"]), float(r["R_b [m]"])),
-                        int(r["ring"]) or None, old.bevel)
-                   for (_, r), old in zip(table.iterrows(), base.meshes))
+                                "ring": st.column_config.CheckboxColumn(t("gears.ring"),
+                                                                        help=t("gears.ring_help"))},
+                            loader=lambda rows: as_loaded(base.with_(meshes=meshes_of(rows, base))),
+                            fields={"radii[0]": "R_a [m]", "radii[1]": "R_b [m]", "internal": "ring"})
+    meshes = meshes_of(table, base)
     train: GearTrain = base.with_(inputs=tuple(inputs), meshes=meshes)
     for note in geometry_notes(train):
         st.info(message(note))

@@ -10,6 +10,7 @@ import streamlit as st
 
 from figures.balancing import end_view_figure, rotor_3d_figure
 from figures.polygon import polygon_figure, polygon_svg
+from mechanisms.loader import as_loaded
 from mechanisms.rotor import PLANES, Correction, Mass, Rotor
 from methods import practice_steps
 from methods.scales import polygon_scale
@@ -62,10 +63,14 @@ def table_of(base: Rotor) -> pd.DataFrame:
                          for m in base.masses], columns=COLUMNS)
 
 
+def masses_of(table: pd.DataFrame) -> tuple[Mass, ...]:
+    """The table's masses in the scene's units (m, rad)."""
+    return tuple(Mass(float(m), float(r) / MM, math.radians(float(a)), float(x) / MM)
+                 for m, r, a, x in table.dropna()[list(COLUMNS)].itertuples(index=False))
+
+
 def rotor_from_inputs(base: Rotor, table: pd.DataFrame, typed: dict[str, float]) -> Rotor:
-    rows = table.dropna()
-    masses = tuple(Mass(float(m), float(r) / MM, math.radians(float(a)), float(x) / MM)
-                   for m, r, a, x in rows[list(COLUMNS)].itertuples(index=False))
+    masses = masses_of(table)
     mode = st.session_state["mode"]
     planes = PLANES if mode == "dynamic" else PLANES[:1]
     corrections = {}
@@ -103,7 +108,9 @@ with main, st.container(key="later_masses"):  # on a phone, after the polygons (
     st.markdown(f"**{t('rotor.masses')}**")
     own = table_of(base)
     table = typed_table("masses", own, base.id, COLUMNS, name=t("rotor.masses_short"),
-                        rows_fixed=False, num_rows="dynamic", width="stretch")
+                        rows_fixed=False, num_rows="dynamic", width="stretch",
+                        loader=lambda rows: as_loaded(base.with_(masses=masses_of(rows))),
+                        fields=dict(zip(("mass", "radius", "angle", "x"), COLUMNS)))
     rotor = rotor_from_inputs(base, table, typed)
     try:
         result = balance(rotor)

@@ -279,3 +279,47 @@ def test_a_joint_dragged_onto_the_other_end_of_its_member_is_refused_with_the_ru
     positions, rotations = pose(build_scene(doc))
     with pytest.raises(SceneError, match="members.2.length must be > 0"):
         build_scene(drag(doc, positions, rotations, "A", 0j))
+
+
+def _mutations():
+    """A refusal of each of the builder's tables, and of the driver (issue 68: the messages
+    said "frame.D", "members.2.mass", "pairs[0].members navodi član 25")."""
+    def change(path, value):
+        def made(doc):
+            target = doc
+            for part in path[:-1]:
+                target = target[part]
+            target[path[-1]] = value
+        return made
+    return {"frame emptied": change(("frame",), {}),
+            "a frame point": change(("frame", "D"), "x"),
+            "a member's mass": change(("members", "2", "mass"), -1),
+            "a member's length": change(("members", "3", "length"), "x"),
+            "a pair's members": change(("pairs", 0, "members"), [1, 25]),
+            "a pair's kind": change(("pairs", 1, "type"), "weld"),
+            "a member's point": change(("members", "3", "extra"), {"M": "x"}),
+            "a force": change(("forces",), [{"member": 3, "point": "B", "magnitude": "x", "angle": 0}]),
+            "a moment": change(("moments",), [{"member": 9, "value": 1.0}]),
+            "the driver": change(("driver", "type"), "x")}
+
+
+@pytest.mark.parametrize("name", list(_mutations()))
+@pytest.mark.parametrize("language", ["en", "sr"])
+def test_a_refusal_of_the_tables_names_the_table_row_and_column_never_a_file_key(name, language):
+    import copy
+    import re
+
+    from mechanisms.sketch import template
+    from ui.builder import in_tables
+    from ui.i18n import message, t
+
+    doc = copy.deepcopy(template("four-bar"))
+    _mutations()[name](doc)
+    with pytest.raises(SceneError) as refused:
+        build_scene(doc, source="tables")
+    said = message(in_tables(refused.value, doc), language)
+    assert not re.search(r"\b(frame|members|pairs|forces|moments|driver|extra)\b[.\[]|\[\d+\]", said), said
+    tabs = [t(f"build.tab_{n}", language) for n in ("frame", "members", "extra", "pairs", "forces", "moments")]
+    assert any(tab in said for tab in tabs) or t("build.driver_type", language) in said, said
+    if "row" in said or "red " in said:
+        assert not re.search(r"(row|red) 0\b", said), said  # rows as numbered on screen, from 1

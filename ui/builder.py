@@ -10,6 +10,7 @@ while typing leaves both alone. The document the tables show now is saved every 
 from __future__ import annotations
 
 import dataclasses
+import re
 from collections.abc import Mapping
 
 import numpy as np
@@ -95,6 +96,63 @@ def start(doc: dict) -> None:
     replace(doc)
 
 
+# a loader key's field → the builder table's column it is typed in (build.col_<column>)
+FIELD_COLUMNS = {"points": "first", "centre": "centre_along", "members": "p", "guide": "p",
+                 "slider": "q", "mass": "mass", "length": "length", "gyration": "gyration",
+                 "label": "label", "point": "point", "through": "through", "angle": "angle",
+                 "slider_angle": "slider_angle", "type": "type", "magnitude": "magnitude",
+                 "member": "member", "value": "value", "follows_member": "follows_member"}
+KEY = re.compile(r"^(?P<table>frame|members|pairs|forces|moments)"
+                 r"(?:\.(?P<name>[^.\[\]]+)|\[(?P<index>\d+)\])?(?P<rest>(?:\.[^.]+)*)$")
+
+
+def in_tables(said: BaseException | Text | str, doc: Mapping) -> Text | str:
+    """A loader's refusal of the tables told at the cell the student typed it in — the
+    table as its tab is named, the row as numbered on screen, the column as headed — not by
+    the file's key ("frame.D", "members.2.mass", "pairs[0].members")."""
+    said = text_of(said) if isinstance(said, BaseException) else said
+    if not isinstance(said, Text) or said.key != "scene.at":
+        return said
+    key = str(said.values.get("key", ""))
+    if key == "driver" or key.startswith("driver."):  # (the driver's own fields, above the tables)
+        return Text("build.at", where=Text("build.driver_type"), rule=said.values["rule"])
+    found = KEY.match(key)
+    if found is None:
+        return said
+    table, name, index, rest = found["table"], found["name"], found["index"], found["rest"]
+    fields = [f for f in rest.split(".") if f]
+    if table == "members" and fields[:1] == ["extra"] and len(fields) > 1:  # a member's point
+        table, row = "extra", _row_of(doc, "extra", (name, fields[1]))
+        fields = fields[2:]
+    else:
+        row = int(index) + 1 if index is not None else _row_of(doc, table, name)
+    column = next((FIELD_COLUMNS[f] for f in fields if f in FIELD_COLUMNS), None)
+    rule = said.values["rule"]
+    if isinstance(rule, Text) and rule.key in ("scene.frame_table", "scene.frame_missing"):
+        rule = Text("build.frame_empty")  # (the file's "O = [0, 0]" is no help in a table)
+    where = Text("build.where", table=Text(f"build.tab_{table}"))
+    if row is not None:
+        where = Text("build.where_row", table=Text(f"build.tab_{table}"), row=row)
+    if row is not None and column is not None:
+        where = Text("build.where_cell", table=Text(f"build.tab_{table}"), row=row,
+                     column=Text(f"build.col_{column}"))
+    return Text("build.at", where=where, rule=rule)
+
+
+def _row_of(doc: Mapping, table: str, name) -> int | None:
+    """The row (from 1, as shown) of a frame point, a member or a member's point."""
+    if table == "frame":
+        names = list(doc.get("frame", {}))
+    elif table == "members":
+        names = [str(n) for n in doc.get("members", {})]
+    elif table == "extra":
+        names = [(str(n), p) for n, spec in doc.get("members", {}).items()
+                 for p in spec.get("extra", {})]
+    else:
+        return None
+    return names.index(name) + 1 if name in names else None
+
+
 def start_from(scene: Scene) -> None:
     """Start from a scene (a preset, an uploaded file), drawn where it solves; one that does
     not solve at its instant still fills the tables, with the reason shown."""
@@ -150,7 +208,7 @@ def _solves(doc: dict) -> Text | str | None:
     try:
         drawing(build_scene(doc))
     except (SceneError, StructureError, Unsolvable) as exc:
-        return text_of(exc)
+        return in_tables(exc, doc)
     return None
 
 

@@ -17,16 +17,19 @@ builder, where these take 0.4–0.5 ms (measured on the four-bar template's memb
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 
 import numpy as np
 import pandas as pd
 import streamlit as st
 
+from mechanisms import SceneError
+from mechanisms.messages import Text, text_of
 from mechanisms.sketch import COLUMNS
-from ui.i18n import current, t
+from ui.i18n import current, message, t
 from ui.numbers import Refused, check, literal, refusal, shown
-from ui.url import table_refused, table_to_url, url_table
+from ui.url import refuse_table, table_refused, table_to_url, url_table
 
 TEXT_COLUMNS = {"point", "label", "first", "second", "through", "type", "form", "side"}
 WHOLE_COLUMNS = {"member", "p", "q"}  # member numbers: the editor's own whole-number cells
@@ -137,7 +140,8 @@ def _blank_cell(value) -> bool:
 
 def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[str], *,
                 name: str, rows_fixed: bool = True, column_config: dict | None = None,
-                **editor) -> pd.DataFrame:
+                loader: Callable[[pd.DataFrame], None] | None = None,
+                fields: Mapping[str, str] | None = None, **editor) -> pd.DataFrame:
     """An editor of a table of numbers kept in the link (ui.url.url_table): the ``numbers``
     columns typed as text and read by ui.numbers, every row whole or refused by the one
     rule (``refused``: every cell not disabled is needed). A refused cell is named above the
@@ -145,9 +149,17 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     the page goes on with the last table that read whole, so no result and no link changes.
     When a cell is refused or mended the editor starts again from exactly what was typed
     (with the marks where they are now), and when the language changes from that last whole
-    table, written the new language's way."""
+    table, written the new language's way.
+
+    ``loader`` holds a table that reads whole to the rules a scene file is held to (it
+    raises the loader's SceneError for the scene the table makes): a refusal is said at its
+    cell — ``fields`` maps the loader's field (``mass``, ``radii[1]``) to the column — and
+    the table is not taken, so no scene the loader refuses is solved, drawn or written."""
     language = current()
     start = url_table(key, default, scene, rows_fixed)
+    if loader is not None and start is not default and (
+            cell := _loader_cell(loader, start, fields or {})) is not None:
+        start = refuse_table(key, default, scene, _at_cell(name, cell, headers(start, column_config)))
     link_said = st.container()  # a refused link table, said while the table is the scene's own
     memo = st.session_state.get(f"_{key}_typed")
     if memo is None or memo["scene"] != scene:
@@ -165,12 +177,19 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     needed = [c for c in edited.columns if c not in set(editor.get("disabled") or ())]
     rows = [dict(zip(edited.columns, values)) for values in edited.itertuples(index=False)]
     problems = refused(rows, language, lambda row: needed)
+    headed = headers(edited, config)
     for i, column, why in problems:
-        place.error(refusal(f"{name} · {t('table.row', row=i + 1)} · {column}", why),
+        place.error(refusal(f"{name} · {t('table.row', row=i + 1)} · {headed[column]}", why),
                     icon=":material/error:")
+    now = marks(rows, language, headed, lambda row: needed)
     if not problems:
-        memo["good"] = _read(rows, numbers, language, default)
-    now = marks(rows, language, {c: c for c in edited.columns}, lambda row: needed)
+        candidate = _read(rows, numbers, language, default)
+        cell = _loader_cell(loader, candidate, fields or {}) if loader else None
+        if cell is None:
+            memo["good"] = candidate
+        else:  # the loader's refusal, at its cell (and in the row's ⚠ mark)
+            place.error(_at_cell(name, cell, headed), icon=":material/error:")
+            now = [headed.get(cell[1], cell[1]) if r == cell[0] else "" for r in range(len(rows))]
     if now != memo["marks"] and (any(now) or any(memo["marks"])):
         memo.update(text=edited, marks=now, version=memo["version"] + 1)
         st.session_state[f"_{key}_typed"] = memo
@@ -178,11 +197,45 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     st.session_state[f"_{key}_typed"] = memo
     if (text := table_refused(key)) is not None:
         if memo["good"].equals(start):
-            link_said.warning(t("link.table_refused", text=literal(text)), icon=":material/link_off:")
+            said = (t("link.table_refused_why", text=literal(text[0]), why=text[1])
+                    if isinstance(text, tuple) else t("link.table_refused", text=literal(text)))
+            link_said.warning(said, icon=":material/link_off:")
         else:
             table_refused(key, kept=False)
     table_to_url(key, memo["good"], default)
     return memo["good"]
+
+
+def headers(table: pd.DataFrame, config: dict | None) -> dict[str, str]:
+    """Each column's header as the table shows it (its config's label, else its name)."""
+    return {c: ((config or {}).get(c) or {}).get("label") or c for c in table.columns}
+
+
+def _at_cell(name: str, cell: tuple[int, str, Text | str], headed: Mapping[str, str]) -> str:
+    """A loader's refusal said at its cell: "Masses · row 1 · m [kg]: must be >= 0 …"."""
+    row, column, rule = cell
+    return f"{name} · {t('table.row', row=row + 1)} · {headed.get(column, column)}: {message(rule)}"
+
+
+CELL = re.compile(r"^\w+\[(?P<row>\d+)\](?:\.(?P<field>\w+))?(?:(?:\[|\.)(?P<index>\d+)\]?)?")
+
+
+def _loader_cell(loader: Callable[[pd.DataFrame], None], table: pd.DataFrame,
+                 fields: Mapping[str, str]) -> tuple[int, str, Text | str] | None:
+    """Where the loader refuses the scene ``table`` makes: (row, column, why), or None."""
+    try:
+        loader(table)
+    except SceneError as exc:
+        said = text_of(exc)
+        if not isinstance(said, Text) or said.key != "scene.at":
+            return 0, "", said
+        found = CELL.match(str(said.values.get("key", "")))
+        if found is None:
+            return 0, "", said.values["rule"]
+        field = found["field"] or ""
+        column = fields.get(f"{field}[{found['index']}]") or fields.get(field, field)
+        return int(found["row"]), column, said.values["rule"]
+    return None
 
 
 def forget_table(key: str) -> None:

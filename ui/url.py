@@ -111,9 +111,19 @@ def url_table(key: str, default: pd.DataFrame, scene: str, rows_fixed: bool = Tr
     return st.session_state[memo][1]
 
 
-def table_refused(key: str, kept: bool = True) -> str | None:
-    """The link's text for the table ``key`` when it was refused: said by the page on every
-    run while the table is still the scene's own, forgotten (``kept=False``) once edited."""
+def refuse_table(key: str, default: pd.DataFrame, scene: str, why: str) -> pd.DataFrame:
+    """The link's table for ``key`` refused after all (the scene it makes breaks a scene
+    file's rules, ``why``): the scene's own table from now on, the link's text and why kept
+    to be said."""
+    st.session_state[f"_{key}_link_refused"] = (st.query_params.get(key, ""), why)
+    st.session_state[f"_{key}_start"] = (scene, default)
+    return default
+
+
+def table_refused(key: str, kept: bool = True) -> str | tuple[str, str] | None:
+    """The link's text for the table ``key`` when it was refused (and why, when the loader
+    refused the scene it made): said by the page on every run while the table is still the
+    scene's own, forgotten (``kept=False``) once edited."""
     if not kept:
         return st.session_state.pop(f"_{key}_link_refused", None)
     return st.session_state.get(f"_{key}_link_refused")
