@@ -89,6 +89,7 @@ def type_cell(page, header: str, row: int, column: int, text: str, redraws: bool
     seen = []  # what each try's focused element held, for the failure's message
     for _ in range(5):
         page.wait_for_timeout(300)  # the tab's content laid out
+        grid.scroll_into_view_if_needed()  # (a button below it may have left it off screen)
         box = grid.bounding_box()
         page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * row + 17)
         if not grid.evaluate("g => g.contains(document.activeElement)"):

@@ -103,3 +103,23 @@ def test_a_loader_refusal_maps_to_the_row_and_column_of_the_table():
     cell = _loader_cell(lambda rows: as_loaded(gears_with(scene, rows.to_numpy().tolist())), table,
                         {"radii[0]": "R_a [m]", "radii[1]": "R_b [m]"})
     assert cell is not None and cell[:2] == (2, "R_b [m]")
+
+
+GIVEN = [(key, column) for key, spec in TABLES.items() for column in spec[4]] + [("meshes", 4)]
+
+
+@pytest.mark.parametrize("key, column", GIVEN)
+def test_book_vs_exact_notices_every_table_cell_that_differs_from_the_book(key, column):
+    """Each cell a student can change (the ring included: task 6.1's mesh 3–4 without its
+    ring was compared with the book as if the book erred) is named in the book's notice,
+    and the book's printed values are not set beside the changed task's."""
+    path, preset, rows_of, make, _ = TABLES[key]
+    scene = load_preset(preset)
+    rows = rows_of(scene)
+    rows[0][column] = "0" if column == 4 else f"{float(rows[0][column]) * 1.5 + 1:.10g}"
+    at = linked(path, scene=preset, lang="en", **{key: ";".join(",".join(r) for r in rows)})
+    assert not at.exception
+    notice = [i.value for i in at.info if "differs:" in i.value]
+    assert notice and "the book's task" in notice[0], [i.value for i in at.info]
+    if column == 4:
+        assert "a ring in mesh" in notice[0]

@@ -195,6 +195,10 @@ def train_changes(train, base) -> list[str]:
             said.append(_changed(f"ω{str(now.member).translate(SUBSCRIPT)}", now.omega, old.omega,
                                  "s⁻¹"))
     for now, old in zip(train.meshes, base.meshes):
+        if now.internal != old.internal:  # (a ring ticked or not: another train)
+            said.append(t("book.diff_ring", mesh=t("book.mesh", a=now.members[0], b=now.members[1]),
+                          now=t("book.yes") if now.internal else t("book.no"),
+                          book=t("book.yes") if old.internal else t("book.no")))
         for member, a, b in zip(now.members, now.radii, old.radii):
             if a != b:
                 said.append(_changed(f"R ({t('book.mesh', a=now.members[0], b=now.members[1])}, "

@@ -171,7 +171,8 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     config = {c: st.column_config.TextColumn(c) for c in numbers} | (column_config or {})
     data = marked(memo["text"].copy(), memo["marks"], config)
     place = st.container()
-    edited = st.data_editor(data, key=f"{key}-{scene}-{language}-{memo['version']}",
+    resets = st.session_state.get(f"_{key}_resets", 0)  # (*As in the book*: a new editor)
+    edited = st.data_editor(data, key=f"{key}-{scene}-{language}-{memo['version']}-{resets}",
                             column_config=config, hide_index=True, **editor)
     edited = edited.drop(columns=MARK, errors="ignore").reset_index(drop=True)
     needed = [c for c in edited.columns if c not in set(editor.get("disabled") or ())]
@@ -241,8 +242,10 @@ def _loader_cell(loader: Callable[[pd.DataFrame], None], table: pd.DataFrame,
 def forget_table(key: str) -> None:
     """The table ``key`` back to its scene's own rows at the next run (*As in the book*):
     what was typed, kept and put in the link, all dropped."""
-    for name in (f"_{key}_typed", f"_{key}_start"):
+    for name in (f"_{key}_typed", f"_{key}_start", f"_{key}_link_refused"):
         st.session_state.pop(name, None)
+    # a new editor: the old one's edits live in the browser, which sends them again
+    st.session_state[f"_{key}_resets"] = st.session_state.get(f"_{key}_resets", 0) + 1
     st.query_params.pop(key, None)
 
 
