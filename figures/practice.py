@@ -4,6 +4,8 @@ where the student puts the new arrow's tip (or the new point)."""
 
 from __future__ import annotations
 
+import math
+
 from methods.practice import Step
 
 from .arrows import arrow_traces
@@ -28,6 +30,7 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
     step = steps[index]
     fig = RawFigure()
     start = sheet(fig, steps, index, t, look)
+    placed = tip is not None
     if tip is None:
         tip = start + (1.0 + 0.5j)
     if step.kind == "vector":
@@ -39,13 +42,46 @@ def practice_figure(steps: list[Step], index: int, tip: complex | None, title: s
     plane_layout(fig, title, look, x_title="x [cm]", y_title="y [cm]")
     # no drag mode: a swipe scrolls the page, the tip is moved by its handle (ui/plot.js);
     # each step opens at its own view (a zoom of the last one would show an empty sheet);
-    # meta.fine: the browser opens it (and comes back after each drag) around the tip, zoomed
-    # until the step's tolerance is a few screen pixels (ui/plot.js)
+    # meta.fine: the browser opens it (and comes back after each drag) zoomed until the
+    # step's tolerance is a few screen pixels (ui/plot.js): a new step on a window that holds
+    # its tail and its answer (``opening``), a placed tip around the tip
+    centre, room = (tip, 0.0) if placed else opening(step, start)
     fig.merge_layout(dict(shapes=shapes, dragmode=False, uirevision=f"practice-{step.id}",
                           editrevision=revision,
                           meta=dict(fine=dict(tolerance=step.tolerance / (step.scale or 1.0),
-                                              view=revision))))
+                                              view=revision, centre=[centre.real, centre.imag],
+                                              reach=room))))
     return fig
+
+
+GRID = 0.5  # cm of paper: a new step's window is placed on this grid, its reach rounded up
+ROUND = 0.25  # to this
+
+
+def answer_at(step: Step) -> complex:
+    """Where the step's answer is on its sheet (cm of paper): a point, or an arrow's tip."""
+    scale = step.scale or 1.0
+    return complex(step.expected) / scale if step.kind == "point" else \
+        (step.tail + complex(step.expected)) / scale
+
+
+def opening(step: Step, start: complex) -> tuple[complex, float]:
+    """A new step's first window (its centre, and how far it must reach, cm of paper): the
+    tail and the answer's region — the answer with its tolerance and the tip's circle —
+    both in it. Its centre lies on a half-centimetre grid and its reach is rounded up to a
+    quarter, so that the window tells the region of the answer, as the book's figure does,
+    and not the answer itself."""
+    answer = answer_at(step)
+    centre = complex(round((start.real + answer.real) / 2 / GRID) * GRID,
+                     round((start.imag + answer.imag) / 2 / GRID) * GRID)
+    margin = step.tolerance / (step.scale or 1.0) + TIP
+    need = max(abs(start - centre), abs(answer - centre)) + margin
+    return centre, math.ceil(need / ROUND) * ROUND
+
+
+def reach(step: Step, start: complex) -> float:
+    """How far from ``start`` (cm of paper) the sheet must reach for the step's answer."""
+    return abs(answer_at(step) - start) + step.tolerance / (step.scale or 1.0) + 2 * TIP
 
 
 def sheet(fig: RawFigure, steps: list[Step], index: int, t: Text, look: Look = NORMAL) -> complex:
@@ -74,8 +110,10 @@ def sheet(fig: RawFigure, steps: list[Step], index: int, t: Text, look: Look = N
                          mode="markers+text", text=[html(n) if n else "" for _, n in points],
                          textposition="top right", hoverinfo="skip", showlegend=False,
                          marker=dict(size=5 * look.line, color="black"))])
-    # the sheet around the tail: room for any arrow a plan at a 12 cm scale can hold
-    corners = [start + REACH * c for c in (1 + 1j, -1 - 1j)]
+    # the sheet around the tail: room for any arrow a plan at a 12 cm scale can hold, or
+    # for this step's answer where it reaches further
+    room = max(REACH, reach(step, start))
+    corners = [start + room * c for c in (1 + 1j, -1 - 1j)]
     fig.add_raw([scatter(x=[z.real for z in corners], y=[z.imag for z in corners], mode="markers",
                          hoverinfo="skip", showlegend=False, marker=dict(opacity=0))])
     return start

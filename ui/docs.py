@@ -33,8 +33,14 @@ def text_of(name: str, language: str) -> str:
     return KEEP.sub(r"\1", text)
 
 
+def title_of(name: str, language: str) -> str:
+    """The method page's title (its first heading), as a reader names it — not its file."""
+    text = text_of(name, language)
+    return next((line[2:].strip() for line in text.splitlines() if line.startswith("# ")), name)
+
+
 def method_doc(name: str) -> None:
-    """The method page in the reader's language, in a closed expander named after its file."""
+    """The method page in the reader's language, in a closed expander named after its title."""
     language = current()
-    with st.expander(t("app.method_doc", file=path_of(name, language))):
+    with st.expander(t("app.method_doc", title=title_of(name, language))):
         st.markdown(text_of(name, language))

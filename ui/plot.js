@@ -252,15 +252,21 @@ function handle(gd, name) {
 // brings the fine view back around the tip.
 const FINE_PX = 3;
 
+// A new step opens on a window that holds its tail and its answer's region (want.centre and
+// want.reach, cm: on a grid and rounded up, figures/practice.py): at the fine zoom where it
+// fits, else zoomed out just enough to hold it (a phone: the answer in view, not off it).
 function fine(gd, spec) {
   const want = (gd.layout.meta || {}).fine;
   if (!want || gd.__fine === want.view) return;
   gd.__fine = want.view;
   const size = gd._fullLayout._size;
   const tip = (gd.layout.shapes || []).find((s) => s.name === spec.handle);
-  if (!tip || !size || pixel(gd) * FINE_PX <= want.tolerance) return;
-  const perPixel = want.tolerance / FINE_PX;
-  const x = (tip.x0 + tip.x1) / 2, y = (tip.y0 + tip.y1) / 2;
+  if (!tip || !size) return;
+  const room = want.reach || 0;
+  let perPixel = want.tolerance / FINE_PX;
+  perPixel = Math.max(perPixel, (2 * room) / Math.min(size.w, size.h));
+  if (pixel(gd) <= perPixel) return;  // drawn that fine already: left whole
+  const [x, y] = want.centre || [(tip.x0 + tip.x1) / 2, (tip.y0 + tip.y1) / 2];
   const half = [size.w * perPixel / 2, size.h * perPixel / 2];
   gd.__Plotly.relayout(gd, { "xaxis.range": [x - half[0], x + half[0]],
                              "yaxis.range": [y - half[1], y + half[1]] });
