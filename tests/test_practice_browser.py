@@ -107,3 +107,20 @@ def test_on_a_phone_each_step_opens_with_its_tail_and_its_answer_in_view(app_url
             keep(shot)
         if k < len(steps) - 1:
             page.get_by_role("button", name="Next step").click()
+
+
+def test_a_check_of_a_revealed_step_says_it_changes_nothing(app_url, browser):
+    page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=zbirka-3.1", (390, 844))
+    page.get_by_text("Practise", exact=True).click()
+    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
+    wait_idle(page)
+    page.get_by_role("button", name="Show it").click()
+    page.get_by_text("Shown after 0 of 3 tries").wait_for(timeout=30_000)
+    wait_idle(page)
+    inputs = page.locator("[data-testid='stForm'] input")
+    inputs.nth(0).fill("1")
+    inputs.nth(1).fill("10")
+    page.get_by_role("button", name="Check").click()
+    said = page.get_by_text("This step is already done (revealed)")
+    said.wait_for(timeout=30_000)
+    assert said.is_visible() and page.locator("[data-testid='stException']").count() == 0
