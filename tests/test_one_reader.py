@@ -81,3 +81,33 @@ def test_a_key_given_twice_or_an_unknown_choice_is_said_and_stays_said(path):
     for key in keys:
         assert literal(f"{link[key]} & {link[key]}") in said, (path, key, said[:400])
     assert not at.exception
+
+
+@pytest.mark.parametrize("value", ["abc", "1e400", "", "\u22121e12", "zzz"])
+@pytest.mark.parametrize("path", CHAPTERS)
+def test_every_link_value_is_used_exactly_or_said_and_stays_said(path, value):
+    """Text, huge, empty and Unicode-minus values in every parameter of a page's own link at
+    once: each parameter's widget then holds the value exactly as the app's parser reads it,
+    or the page says the value in words — still after the first paint's rerun."""
+    from mechanisms.typed import Refused, parse
+
+    link, shown = own(path)
+    keys = [k for k in link if k in shown and k != "lang"]
+    at = _opened(path, {**link, **{k: value for k in keys}})
+    at.run()
+    assert not at.exception
+    notes = [w.value for w in at.warning if "This link's value was not used" in w.value
+             and (not value or literal(value) in w.value)]  # one per refused key
+    now = values(at)
+    try:
+        number = parse(value, "sr")
+    except Refused:
+        number = None
+    refused = []
+    for key in keys:
+        used = now.get(key)
+        exact = (number is not None and isinstance(used, (int, float)) and not isinstance(used, bool)
+                 and float(used) == number) or used == value
+        if not exact:
+            refused.append(key)
+    assert len(notes) >= len(refused), (path, value, refused, notes)
