@@ -283,3 +283,16 @@ def test_a_serbian_chart_writes_its_numbers_with_a_decimal_comma(app_url, phone)
                           ".js-plotly-plot .ytick text')].map(t => t.textContent)")
     decimals = [text for text in ticks if any(mark in text for mark in ",.")]
     assert decimals and all("," in text and "." not in text for text in decimals), ticks
+
+
+def test_a_serbian_slider_writes_its_value_with_a_decimal_comma_and_a_link_s_comma_is_read(app_url, phone):
+    """Issue 68: Serbian sliders printed "3.58" and "1.50"; ?omega=1,5 put ω₂ at −50."""
+    page = phone(f"{app_url}/velocity_plans?lang=sr&scene=zbirka-3.1&omega=1,5&at=33,5")
+    page.wait_for_function("() => [...document.querySelectorAll(\"[data-testid='stSliderThumbValue']\")]"
+                           ".some(e => e.textContent.includes('1,50'))", timeout=30_000)
+    shown = page.evaluate("() => [...document.querySelectorAll(\"[data-testid='stSliderThumbValue'], "
+                          "[data-testid='stSliderTickBar']\")].map(e => e.textContent)")
+    assert any("33,50" in s for s in shown) and not any("." in s for s in shown), shown
+    english = phone(f"{app_url}/velocity_plans?lang=en&scene=zbirka-3.1&omega=1.5")
+    english.wait_for_function("() => [...document.querySelectorAll(\"[data-testid='stSliderThumbValue']\")]"
+                              ".some(e => e.textContent.includes('1.50'))", timeout=30_000)
