@@ -102,9 +102,10 @@ def consecutive_ports() -> int:
     raise RuntimeError("no two free ports in a row")
 
 
-def start_deploy(processes: int = 2, app: str = "asgi.py") -> Deploy:
+def start_deploy(processes: int = 2, app: str = "asgi.py", cpus: set[int] | None = None) -> Deploy:
     """deploy/start.sh serving ``app`` with its own PostgreSQL in a temporary folder; returns
-    when nginx and every process answer."""
+    when nginx and every process answer. ``cpus``: the cores it runs on (its processes
+    inherit them), the simulated phones being kept off them."""
     pgdata = Path(tempfile.mkdtemp(prefix="mz-deploy-pg-"))
     logs = Path(tempfile.mkdtemp(prefix="mz-deploy-logs-"))
     if os.getuid() == 0:
@@ -115,7 +116,8 @@ def start_deploy(processes: int = 2, app: str = "asgi.py") -> Deploy:
            "MEHANIZMI_LOGS": str(logs)}
     env.pop("MEHANIZMI_DATABASE_URL", None)
     script = subprocess.Popen(["bash", "deploy/start.sh"], cwd=ROOT, env=env, text=True,
-                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                              preexec_fn=(lambda: os.sched_setaffinity(0, cpus)) if cpus else None)
     database, lines = "", []
     for line in script.stdout:
         lines.append(line)
@@ -349,24 +351,42 @@ async def _run(deploy: Deploy, students: int, seconds: float, kind: str | None) 
     wall = time.monotonic() - start
     apps_now = [app_pid(p) for p in deploy.ports]
     pg_now = postgres_pids(deploy.pgdata)
-    usage = {"app_cpu_percent": round(100 * (cpu_seconds([p for p in apps_now if p]) - cpu[0]) / wall, 1),
+    app_cpu = cpu_seconds([p for p in apps_now if p]) - cpu[0]
+    stored = store.export(code, key, url=deploy.database)
+    usage = {"app_cpu_percent": round(100 * app_cpu / wall, 1),
+             "app_cpu_ms_per_check": round(1e3 * app_cpu / max(len(stored), 1), 1), "wall": wall,
              "app_memory_mb": [round(memory_mb(p)) for p in apps_now if p],
              "database_cpu_percent": round(100 * (cpu_seconds(pg_now) - cpu[1]) / wall, 1),
              "database_memory_mb": round(sum(memory_mb(p) for p in pg_now))}
-    return report, store.export(code, key, url=deploy.database), usage
+    return report, stored, usage
 
 
 FLOOR = "bench/floor_class_app.py"  # a class's pages with nothing but the store behind them
 
 
-def class_load(students: int, seconds: float, kind: str | None = None, floor: bool = False) -> dict:
+def class_load(students: int, seconds: float, kind: str | None = None, floor: bool = False,
+               clients_cpu: int | None = None) -> dict:
     """The whole run on a deploy of its own (of the floor's pages with ``floor``): the
-    figures as one dict (the JSON line)."""
-    deploy = start_deploy(app=FLOOR if floor else "asgi.py")
+    figures as one dict (the JSON line). ``clients_cpu``: the simulated phones on that core
+    alone and the deployment (app processes, PostgreSQL, nginx) on the others, so that the
+    server's own capacity shows apart from the clients' (both shared two cores before)."""
+    every = os.sched_getaffinity(0)
+    server = every - {clients_cpu} if clients_cpu is not None else None
+    if clients_cpu is not None and (clients_cpu not in every or not server):
+        raise SystemExit(f"--clients-cpu {clients_cpu}: this machine's cores are {sorted(every)}")
+    deploy = start_deploy(app=FLOOR if floor else "asgi.py", cpus=server)
+    if clients_cpu is not None:
+        os.sched_setaffinity(0, {clients_cpu})
+    clients = os.times()
     try:
         report, rows, usage = asyncio.run(_run(deploy, students, seconds, kind))
     finally:
         deploy.stop()
+        if clients_cpu is not None:
+            os.sched_setaffinity(0, every)
+    used = os.times()
+    usage["clients_cpu_percent"] = round(100 * (used.user + used.system - clients.user - clients.system)
+                                         / usage.pop("wall"), 1)
     missing, disagree = compare(report, rows)
     delays = view_delays(report)
     settled = max(report.opened[:students], default=0.0)  # every page open: the class at work
@@ -381,4 +401,5 @@ def class_load(students: int, seconds: float, kind: str | None = None, floor: bo
             "not_saved": report.not_saved, "reconnects": report.reconnects,
             "view_last": report.view[-1][1] if report.view else None,
             "open_p50_ms": ms(report.pages.opening, 0.5), "open_p95_ms": ms(report.pages.opening, 0.95),
-            "seconds": seconds, **usage, "first_errors": report.errors[:5]}
+            "seconds": seconds, "server_cpus": len(server) if server else len(every),
+            "clients_cpu": clients_cpu, **usage, "first_errors": report.errors[:5]}

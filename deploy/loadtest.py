@@ -3,7 +3,7 @@
 
     .venv/bin/python deploy/loadtest.py                      # starts the app itself, 30 sessions, 120 s
     .venv/bin/python deploy/loadtest.py --url http://127.0.0.1:8080 --sessions 40 --seconds 300
-    .venv/bin/python deploy/loadtest.py --class 150 --seconds 120 --json [--fault kill|database] [--floor]
+    .venv/bin/python deploy/loadtest.py --class 150 --seconds 120 --json [--fault kill|database] [--floor] [--clients-cpu 0]
 
 ``--class N`` is a class at once (deploy/classload.py): deploy/start.sh started here (two app
 processes behind nginx, on PostgreSQL), N students checking steps, a lecturer's view open.
@@ -135,6 +135,9 @@ def main(argv: list[str] | None = None) -> int:
                         help="with --class: kill -9 an app process, or stop PostgreSQL for 10 s, "
                              "half-way through")
     parser.add_argument("--json", action="store_true", help="with --class: end with one JSON line")
+    parser.add_argument("--clients-cpu", type=int, metavar="CPU",
+                        help="with --class: the simulated phones on this core alone, the deployment "
+                             "on the others (the server's capacity apart from the clients')")
     parser.add_argument("--floor", action="store_true",
                         help="with --class: the same class on pages that only store and answer a "
                              "check (bench/floor_class_app.py)")
@@ -185,7 +188,7 @@ def _class(args) -> int:
     """``--class N``: the figures, and as the last line the JSON the issue asks for."""
     from deploy.classload import class_load
 
-    found = class_load(args.students, args.seconds, args.fault, args.floor)
+    found = class_load(args.students, args.seconds, args.fault, args.floor, args.clients_cpu)
     if not args.json:
         for name, value in found.items():
             print(f"{name}: {value}")

@@ -227,7 +227,7 @@ def test_a_typed_length_the_loader_refuses_gets_its_message_and_the_drawing_stay
     before = shapes(page)
     open_tab(page, "Members", "second point")
     type_cell(page, "second point", 1, 4, "-0.35", redraws=False)
-    page.get_by_text("the tables: members.3.length must be > 0, got -0.35").wait_for(timeout=30_000)
+    page.get_by_text("Table Members, row 2, column length: must be > 0, got -0.35").wait_for(timeout=30_000)
     assert page.get_by_text("The drawing shows the last mechanism").count() == 1
     assert shapes(page) == before
     assert page.locator("[data-testid='stException']").count() == 0

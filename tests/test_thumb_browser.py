@@ -100,21 +100,27 @@ def test_a_student_practises_task_3_1_by_finger(app_url, phone, tmp_path):
             opened = view(page)
             box = area(page)
             width = opened[0][1] - opened[0][0]  # cm across the sheet's box
-            assert step.tolerance / step.scale * box["w"] / width >= 3 - 1e-6  # in pixels
-            assert abs(complex(sum(opened[0]), sum(opened[1])) / 2 - tip_now(page)) < 1e-6
-            middle = (box["x"] + box["w"] / 2, box["y"] + box["h"] / 2)
-            gesture(cdp, page, [[(middle[0] - 20, middle[1]), (middle[0] - 60, middle[1])],
-                                [(middle[0] + 20, middle[1]), (middle[0] + 60, middle[1])]])
-            page.wait_for_timeout(300)
-            zoomed = view(page)
-            assert zoomed[0][1] - zoomed[0][0] < (opened[0][1] - opened[0][0]) / 2.5  # × 3
-            exact = (step.tail + complex(step.expected)) / step.scale
+            tail = step.tail / step.scale  # the window holds the tail and the answer (issue 68)
+            answer = tail + complex(step.expected) / step.scale
+            for z in (tail, answer):
+                assert opened[0][0] <= z.real <= opened[0][1] and opened[1][0] <= z.imag <= opened[1][1], n
+            assert (step.tolerance / step.scale * box["w"] / width >= 3 - 1e-6  # in pixels, or
+                    or width / 2 <= abs(answer - tail) / 2 + 1.0)  # no coarser than the two need
+            exact = (step.tail + complex(step.expected)) / step.scale  # in the opening view
             handle = on_screen(page, tip_now(page).real, tip_now(page).imag)
             grab = (handle[0] + 14, handle[1] - 8)  # a finger lands beside a 3 px circle
             target = on_screen(page, exact.real, exact.imag)
             gesture(cdp, page, [[grab, (target[0] + 14, target[1] - 8)]])
             page.wait_for_function("() => document.querySelector("
                                    "\"[class*='st-key-num_any_pr_plans_len'] input\").value")
+            wait_idle(page)
+            opened = view(page)  # (after the drag: around the student's tip)
+            middle = (box["x"] + box["w"] / 2, box["y"] + box["h"] / 2)
+            gesture(cdp, page, [[(middle[0] - 20, middle[1]), (middle[0] - 60, middle[1])],
+                                [(middle[0] + 20, middle[1]), (middle[0] + 60, middle[1])]])
+            page.wait_for_timeout(300)
+            zoomed = view(page)
+            assert zoomed[0][1] - zoomed[0][0] < (opened[0][1] - opened[0][0]) / 2.5  # × 3
             assert page.locator("[data-testid='stAlertContentSuccess']").count() == 0
             page.get_by_role("button", name="Proveri").tap()
             page.locator("[data-testid='stAlertContentSuccess']").wait_for(timeout=30_000)

@@ -109,7 +109,7 @@ KEY = re.compile(r"^(?P<table>frame|members|pairs|forces|moments)"
 def in_tables(said: BaseException | Text | str, doc: Mapping) -> Text | str:
     """A loader's refusal of the tables told at the cell the student typed it in — the
     table as its tab is named, the row as numbered on screen, the column as headed — not by
-    the file's key ("frame.D", "members.2.mass", "pairs[0].members")."""
+    the file's key (`frame.D`, `members.2.mass`, `pairs[0].members`)."""
     said = text_of(said) if isinstance(said, BaseException) else said
     if not isinstance(said, Text) or said.key != "scene.at":
         return said
