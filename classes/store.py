@@ -301,6 +301,12 @@ def student(code: str, token: str, url: str | None = None) -> dict:
     return _student(find(code, url), token, url)
 
 
+def seated(code: str, token: str, url: str | None = None) -> tuple[Class, dict]:
+    """The class and the student a check is stored for (``record``'s ``known``)."""
+    found = find(code, url)
+    return found, _student(found, token, url)
+
+
 @_reachable
 def _student(found: Class, token: str, url: str | None) -> dict:
     with engine(url).connect() as db:
@@ -340,22 +346,27 @@ def answer_text(answer) -> str:
 
 
 def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
-           variant: str | None = None, term: str = "", url: str | None = None) -> int:
+           variant: str | None = None, term: str = "", url: str | None = None,
+           known: tuple[Class, dict] | None = None) -> int:
     """Store one check, durably, before its verdict is shown: the try number the store gave
     it (each student's tries of a step numbered 1, 2, … in the order they were stored, in
     the statement that inserts). ``check`` is the check's id (``new_check``): sent again
     (after "not saved", or twice by the network) it is stored once and its number returned;
     every other check is stored, from any tab, phone or command line. In a class of variants
     the student's variant code is kept unless ``variant`` names it. A student sending more
-    than PER_SECOND checks a second waits. NotSaved when the store cannot take it."""
+    than PER_SECOND checks a second waits. NotSaved when the store cannot take it.
+    ``known``: the class and the student (``seated``) as the caller read them before — a
+    page's check then costs the store two round trips, not four; a class deleted or expired
+    since is found out all the same (the insert fails, or the expiry has passed)."""
     text = answer_text(answer)
     if len(step) > 64 or len(term) > 64 or len(variant or "") > 64 or not 0 < len(check) <= 36:
         raise ClassError(Text("class.too_long"))
     try:
-        found = find(code, url)
+        if known is None or known[0].expires < _now():
+            known = seated(code, token, url)
+        found, who = known
         if found.test and diagnosis == REVEALED:
             raise OneTry(Text("class.one_try", step=step))
-        who = _student(found, token, url)
         if variant is None:  # in a class of variants, the student's own
             variant = variant_of(found, who["variant"])
         made = engine(url)
@@ -372,6 +383,7 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
                 stored = _stored_try(made, check)
                 if stored is not None:
                     return stored  # the same check, stored by an earlier sending
+                seated(code, token, url)  # (ClassError: the class or the student gone meanwhile)
                 if found.test:  # a test's step has one try, and it is taken
                     raise OneTry(Text("class.one_try", step=step)) from None
         raise NotSaved("too many checks of this step at once")

@@ -5,6 +5,8 @@ verdict is shown) and how their progress comes back from the store."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import streamlit as st
 
 from classes import store
@@ -12,7 +14,7 @@ from classes.store import ClassError, NotSaved, OneTry, StoreDown
 from classes.steps import practice_link, steps_at
 from classes.summary import tried
 from methods.practice import Step, grade
-from methods.progress import Progress, Rules
+from methods.progress import Progress, Rules, Try
 from ui.boundary import boundary
 from ui.i18n import message, t
 
@@ -176,9 +178,9 @@ def give(state: dict, step: Step, answer) -> None:
         progress.give(step, answer)
         state["mine"][step.id] = verdict
         return
-    check = _stored(state, step, _plain(answer), verdict.diagnosis, verdict.term)
+    made = Try(step.id, verdict.diagnosis, _plain(answer), verdict.term, "", verdict)
+    check = _folded(state, made)
     if check:
-        state["progress"] = resumed(state["seat"], state["steps"], progress.rules)
         state["mine"][step.id] = SETTLED if state["progress"].late(check) else verdict
 
 
@@ -193,9 +195,27 @@ def reveal(state: dict, step: Step) -> None:
         return
     if state["seat"] is None:
         state["progress"].reveal(step)
-    elif _stored(state, step, None, store.REVEALED, ""):
-        state["progress"] = resumed(state["seat"], state["steps"], state["progress"].rules)
+    elif _folded(state, Try(step.id, store.REVEALED)):
         state["mine"].pop(step.id, None)
+
+
+def _folded(state: dict, made: Try) -> str:
+    """A seated student's try stored, then folded into the progress the page holds: by
+    itself when the store numbered it the step's next try (no other device wrote that step
+    meanwhile: the fold is the store's), else by reading the student's tries again (one
+    round trip less a check than reading them every time). The check's id, "" when not
+    stored."""
+    stored = _stored(state, made.step, made.answer, made.diagnosis, made.term)
+    if not stored:
+        return ""
+    check, number = stored
+    progress: Progress = state["progress"]
+    record = progress.record(made.step)
+    if number == len(record.counted) + len(record.late) + 1:
+        progress.add(dataclasses.replace(made, check=check))
+    else:  # another tab, phone or hand-in tried this step meanwhile: the store's order
+        state["progress"] = resumed(state["seat"], state["steps"], progress.rules)
+    return check
 
 
 def verdicts_shown(state: dict) -> bool:
@@ -210,27 +230,30 @@ def verdicts_shown(state: dict) -> bool:
     return state["closed"]
 
 
-def _stored(state: dict, step: Step, answer, diagnosis: str, term: str) -> str:
-    """One check in the store: its id ("" and why said, when it was not taken). The check's
-    id is made here and kept until the store has it: the same answer checked again after
-    "not saved" is that check, stored once; any other is a new try."""
+def _stored(state: dict, step: str, answer, diagnosis: str, term: str) -> tuple[str, int] | None:
+    """One check in the store: its id and try number (None, and why said, when it was not
+    taken). The check's id is made here and kept until the store has it: the same answer
+    checked again after "not saved" is that check, stored once; any other is a new try.
+    The class and the student are read once a seat (``known``), not at every check."""
     pending = state.setdefault("pending", {})
-    which = (step.id, repr(answer), diagnosis)
+    which = (step, repr(answer), diagnosis)
     check = pending.setdefault(which, store.new_check())
     try:
-        store.record(*state["seat"], step.id, answer, diagnosis, check, term=term)
-    except NotSaved:
+        state["known"] = state.get("known") or store.seated(*state["seat"])
+        number = store.record(*state["seat"], step, answer, diagnosis, check, term=term,
+                              known=state["known"])
+    except (NotSaved, StoreDown):
         st.session_state[NOT_SAVED] = t("class.not_saved")
-        return ""
+        return None
     except OneTry as exc:  # a test's step tried already (on another device)
         st.session_state[NOT_SAVED] = message(exc.args[0])
-        return ""
+        return None
     except ClassError as exc:  # the class deleted or expired meanwhile: practice goes on, unstored
         st.session_state[NOT_SAVED] = t("class.gone", why=message(exc.args[0]))
         state["seat"] = None
-        return ""
+        return None
     del pending[which]
-    return check
+    return check, number
 
 
 def _plain(answer):
