@@ -19,7 +19,6 @@ from methods.progress import Progress, verdict_of
 from ui import classroom
 from ui.export import chart
 from ui.firstpaint import finish
-from ui.fragments import rerun_here
 from ui.i18n import current, kept_language, num, t
 from ui.inview import into_view
 from ui.numbers import Refused, number_field, refusal
@@ -140,13 +139,17 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
         verdict = st.container() if drawn else None
     if zero:  # a question to type, not a drag: a tip cannot be left on its tail
         st.info(t("practice.zero_step"), icon=":material/info:")
+    sheet = st.container() if drawn else None  # drawn last, where it shows: above the boxes
     if drawn:
-        _drawing(steps, index, key, state, progress, title)
+        _dragged(step, key, state)  # (before the boxes it fills are drawn)
         unit, factor = shown_unit(step)
         st.caption(t("practice.sheet_scale", scale=num(step.scale * factor, 4), unit=unit))
     st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
                else t("practice.rule_hidden_value" if step.kind == "scalar" else "practice.rule_hidden"))
     _typing(step, key, state)
+    if drawn:  # after the check: the tip where it now is, its prompt brought to the screen
+        with sheet:
+            _drawing(steps, index, key, state, progress, title)
     with verdict or st.container(key=f"{key}_verdict"):
         if not classroom.not_saved():
             _feedback(step, state)
@@ -166,17 +169,22 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
     revision = f"{step.id}-{state['revision']}-{step.scale}"
     record = progress.record(step)
     seen = len(record.counted) + len(record.late)  # a check, a drag or a move: a new focus
-    result = chart(practice_figure(steps, index, tip, title, t, look(), revision),
-                   f"practice-{key}", key=f"{key}_fig", handle="tip",
-                   focus=f".st-key-{key}_prompt|{index}-{seen}-{state['revision']}")
+    chart(practice_figure(steps, index, tip, title, t, look(), revision),
+          f"practice-{key}", key=f"{key}_fig", handle="tip",
+          focus=f".st-key-{key}_prompt|{index}-{seen}-{state['revision']}")
     st.caption(t("practice.drag_hint"))
-    drag = result.drag
+
+
+def _dragged(step: Step, key: str, state: dict) -> None:
+    """The tip the student just let go (the sheet's trigger of this run), read before the
+    boxes are drawn: its place fills them, and the sheet drawn after shows it — one run a
+    drag, and one a check, where each took two (a rerun to redraw; issue 70)."""
+    drag = (st.session_state.get(f"{key}_fig") or {}).get("drag")
     if drag and drag.get("point") == "tip":
         at = complex(float(drag["x"]), float(drag["y"])) * step.scale
         state["tips"][step.id] = at
         _fill(step, key, at - step.tail if step.kind == "vector" else at)
         state["revision"] += 1
-        rerun_here()
 
 
 def _fill(step: Step, key: str, answer: complex) -> None:
@@ -227,8 +235,7 @@ def _typing(step: Step, key: str, state: dict) -> None:
             state["tips"][step.id] = step.tail + answer if step.kind == "vector" else answer
         state["revision"] += 1
         state["checked"] = f"{step.id}-{state['revision']}"  # (ui.inview: show its verdict)
-        classroom.give(state, step, answer)
-    rerun_here()  # the verdict, with the step's prompt and sheet brought to the screen
+        classroom.give(state, step, answer)  # (drawn below it in this same run, and the sheet)
 
 
 def _feedback(step: Step, state: dict) -> None:
