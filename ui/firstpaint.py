@@ -41,6 +41,14 @@ def end_run() -> None:
     st.session_state[SEEN] = st.session_state.get(SEEN, frozenset()) | {st.session_state[PAGE]}
 
 
+def whole() -> None:
+    """This run sends all the page shows (a seated student's practice, nothing left out):
+    its charts ask for no paint and no second run — 300 students opening a class's page at
+    once paid every opening twice (issue 70)."""
+    if PAGE in st.session_state:  # (run through app.py)
+        end_run()
+
+
 def finish() -> NoReturn:
     """The page drew all it shows this visitor (a seated student's practice): its run ends
     here, as a run that finished. ``st.stop()`` alone is not enough: what app.py writes at

@@ -18,7 +18,7 @@ from methods.practice import RULES, Step, Verdict, hint_texts, polar
 from methods.progress import Progress, verdict_of
 from ui import classroom
 from ui.export import chart
-from ui.firstpaint import finish
+from ui.firstpaint import finish, whole
 from ui.i18n import current, kept_language, num, t
 from ui.inview import into_view
 from ui.numbers import Refused, number_field, refusal
@@ -82,6 +82,7 @@ def class_only(*keys: str) -> None:
     ignored = classroom.fixed_link(found, seated[1])
     if ignored:
         st.info(t("class.fixed", names=", ".join(ignored)), icon=":material/lock:")
+    whole()  # (nothing of the page waits for the sheet's paint)
     panel(steps, key, t(sheet) if sheet else "", drawable)
     finish()
 
