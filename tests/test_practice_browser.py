@@ -21,6 +21,13 @@ def drag_tip(page, to: complex) -> None:
     drag_shape(page, "tip", to)
 
 
+def practising(page, switch: str = "Practise") -> None:
+    """Turn practice on (``switch``: its label in the page's language) and wait for the sheet."""
+    page.get_by_text(switch, exact=True).click()
+    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
+    wait_idle(page)
+
+
 def boxes(page, step) -> list[str]:
     """What the step's length and direction boxes hold."""
     return [page.locator(f".st-key-pr_plans_{name}_{step.id.replace('.', '-')} input").input_value()
@@ -29,9 +36,7 @@ def boxes(page, step) -> list[str]:
 
 def test_a_dragged_tip_fills_the_boxes_and_check_grades_it(app_url, browser, tmp_path):
     page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=zbirka-3.1", (1600, 1100))
-    page.get_by_text("Practise", exact=True).click()
-    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
-    wait_idle(page)
+    practising(page)
     steps = steps_for(load_preset("zbirka-3.1"), "plans")
     step = steps[0]
     # the sheet opens around the tip, a tolerance at least 3 pixels wide, with no drag modes
@@ -80,8 +85,7 @@ def test_on_a_phone_each_step_opens_with_its_tail_and_its_answer_in_view(app_url
     Each step now opens around its tail with room for its answer, at the fine zoom where
     that room fits and no coarser than the room needs."""
     page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=zbirka-3.1", (390, 844))
-    page.get_by_text("Practise", exact=True).click()
-    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
+    practising(page)
     steps = [s for s in steps_for(load_preset("zbirka-3.1"), "plans")][:8]
     for k, step in enumerate(steps):
         wait_idle(page)
@@ -111,9 +115,7 @@ def test_on_a_phone_each_step_opens_with_its_tail_and_its_answer_in_view(app_url
 
 def test_a_check_of_a_revealed_step_says_it_changes_nothing(app_url, browser):
     page = open_page(browser, f"{app_url}/velocity_plans?lang=en&scene=zbirka-3.1", (390, 844))
-    page.get_by_text("Practise", exact=True).click()
-    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
-    wait_idle(page)
+    practising(page)
     page.get_by_role("button", name="Show it").click()
     page.get_by_text("Shown after 0 of 3 tries").wait_for(timeout=30_000)
     wait_idle(page)

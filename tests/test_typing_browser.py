@@ -12,6 +12,7 @@ import pytest
 
 from .test_browser import CHROMIUM, FLAGS, check_first_step, keep, open_page, wait_idle
 from .test_builder_browser import open_tab, shapes, type_cell
+from .test_practice_browser import practising
 
 pytestmark = pytest.mark.browser
 
@@ -99,9 +100,7 @@ def test_a_builder_cell_reads_a_comma_and_a_point_and_refuses_the_rest(app_url, 
 
 def test_a_practice_answer_reads_a_comma_and_an_unreadable_one_is_named(app_url, localised):
     page = opened(localised, f"{app_url}/velocity_plans?lang=sr&scene=zbirka-3.1")
-    page.get_by_text("Vežbaj", exact=True).click()
-    page.wait_for_selector(".mehanizmi-plot .shapelayer path", timeout=30_000)
-    wait_idle(page)
+    practising(page, "Vežbaj")
     check_first_step(page)  # typed with decimal commas, in a browser set to English
     wait_idle(page)
 

@@ -182,7 +182,7 @@ def language_picker() -> str:
                                label_visibility="collapsed")
     kept = st.session_state.get("_link_refused_lang")
     if kept is not None and kept[1] == _RUN.language:  # ?lang=xx: said until another is picked
-        st.sidebar.warning(t("link.refused", why=t("num.unknown", field="lang",
+        st.sidebar.warning(t("link.refused", why=t(f"num.{kept[0].reason}", field="lang",
                                                    text=f"`{kept[0].text}`")), icon=":material/link_off:")
     return _RUN.language
 

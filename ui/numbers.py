@@ -30,7 +30,7 @@ from streamlit.errors import StreamlitAPIException
 from mechanisms.reader import LARGEST
 from mechanisms.typed import NUMBER, Refused, comma_is_decimal, parse  # noqa: F401 (the pages' parser)
 from ui.i18n import current, t
-from ui.url import link_default, url_choice, url_set, url_toggle
+from ui.url import link_default, link_value, said_of_link, url_choice, url_set, url_toggle
 
 REASONS = ("empty", "not_number", "comma", "integer", "below", "above", "repeated", "unknown")  # num.<reason>
 SHOWN_MAX = 40  # characters of a typed text repeated in a message
@@ -90,9 +90,9 @@ def check(text: str, language: str, *, minimum: float | None = None,
     value = parse(text, language, integer=integer)
     minimum = -LARGEST if minimum is None else max(minimum, -LARGEST)
     maximum = LARGEST if maximum is None else min(maximum, LARGEST)
-    if minimum is not None and value < minimum:
+    if value < minimum:
         raise Refused("below", text, minimum)
-    if maximum is not None and value > maximum:
+    if value > maximum:
         raise Refused("above", text, maximum)
     return value
 
@@ -124,10 +124,8 @@ def number_field(label: str, key: str, value: float | None = None, *,
         value, given = float(given), None  # seeded by the page (ui.url.seed)
     elif given is None and url and key in st.query_params:
         try:  # read as a typed value is, range and all (either decimal sign)
-            linked = st.query_params.get_all(key)
-            if len(linked) > 1:
-                raise Refused("repeated", " & ".join(linked))
-            value = check(linked[0], "sr", minimum=minimum, maximum=maximum, integer=integer)
+            value = check(link_value(key) or "", "sr", minimum=minimum, maximum=maximum,
+                          integer=integer)
         except Refused as refused:  # a hand-edited link: the page's own value, said
             value = link_default(key, value)
             said_of_link(key, refused, value)
@@ -172,19 +170,18 @@ def bound_link(key: str, label: str, low: float | None = None, high: float | Non
     ``[low, high]`` (or not one of ``options``), or a key the link gives twice, is said in
     words and dropped, and the page's own value is used."""
     read = f"_link_read_{key}"  # the link is read when the page opens, not after
-    given = st.query_params.get_all(key) if not st.session_state.get(read) else []
+    given = key in st.query_params and not st.session_state.get(read)
     st.session_state[read] = True  # (later runs: the widget's value, the link written from it)
     if given:
         if integer is None:
             integer = all(isinstance(v, int) for v in (options or [low, high]) if v is not None)
         try:
-            if len(given) > 1:
-                raise Refused("repeated", " & ".join(given))
-            value = check(given[0], "sr", minimum=low, maximum=high, integer=integer)
+            text = link_value(key) or ""
+            value = check(text, "sr", minimum=low, maximum=high, integer=integer)
             if options is not None:
                 value = next((o for o in options if math.isclose(o, value, rel_tol=1e-9)), None)
                 if value is None:
-                    raise Refused("unknown", given[0])
+                    raise Refused("unknown", text)
             used = int(value) if integer else float(value)
             st.session_state[key] = used
             with contextlib.suppress(StreamlitAPIException):  # (bound already: it writes it)
@@ -211,13 +208,6 @@ def link_option(widget, label: str, options, key: str, default: str | None = Non
     value = url_choice(widget, label, options, key, default, **kwargs)
     link_note(key, label, value)
     return value
-
-
-def said_of_link(key: str, refused: Refused, value) -> None:
-    """Remember that the link's value of ``key`` was refused, to be said while the field
-    holds the value the page used instead (every run: a page's next run would drop a note
-    made once)."""
-    st.session_state[f"_link_refused_{key}"] = (refused, value)
 
 
 def link_note(key: str, label: str, value, where=None) -> None:

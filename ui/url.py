@@ -24,19 +24,38 @@ def url_set(key: str, text: str) -> None:
         st.query_params[key] = text
 
 
+def link_value(key: str) -> str | None:
+    """The link's one value of ``key`` (None when it gives none). A key the link gives more
+    than once is refused (``Refused`` "repeated"), never its last value taken."""
+    given = st.query_params.get_all(key)
+    if len(given) > 1:
+        raise Refused("repeated", " & ".join(given))
+    return given[0] if given else None
+
+
+def said_of_link(key: str, refused: Refused, value) -> None:
+    """Remember that the link's value of ``key`` was refused, to be said while the widget
+    holds the value the page used instead (``ui.numbers.link_note``, every run: a page's next
+    run would drop a note made once; this module speaks no language)."""
+    st.session_state[f"_link_refused_{key}"] = (refused, value)
+
+
 def url_choice(widget: Callable, label: str, options: Sequence[str], key: str,
                default: str | None = None, **kwargs) -> str:
     """``widget`` (st.selectbox, st.radio, …) seeded from ``?key=`` and writing it back. A
     link's value that is not one of ``options`` (or given twice) gives way to ``default``,
-    and is kept to be said (``ui.numbers.link_choice``: this module speaks no language)."""
+    and is kept to be said (``ui.numbers.link_option``)."""
     default = link_default(key, options[0]) if default is None else default  # (seed's, if seeded)
     if key not in st.session_state or st.session_state[key] not in options:
-        given = st.query_params.get_all(key)
-        wanted = given[0] if len(given) == 1 else None
-        st.session_state[key] = wanted if wanted in options else default
-        if given and wanted not in options:
-            st.session_state[f"_link_refused_{key}"] = (
-                Refused("repeated" if len(given) > 1 else "unknown", " & ".join(given)[:80]), default)
+        st.session_state[key] = default
+        try:
+            wanted = link_value(key)
+            if wanted is not None and wanted not in options:
+                raise Refused("unknown", wanted)
+            if wanted is not None:
+                st.session_state[key] = wanted
+        except Refused as refused:
+            said_of_link(key, refused, default)
     value = widget(label, options, key=key, **kwargs)
     url_set(key, value)
     return value
@@ -45,15 +64,16 @@ def url_choice(widget: Callable, label: str, options: Sequence[str], key: str,
 def url_toggle(label: str, key: str, **kwargs) -> bool:
     """A switch kept in the URL as ``?key=true|false``. Not Streamlit's own binding: a
     bound switch set back to its default from a button (the book's "As in the book") kept
-    the URL's old value and so its old state."""
+    the URL's old value and so its old state. Any other link value is kept to be said
+    (``ui.numbers.link_switch``)."""
     if key not in st.session_state and key in st.query_params:
-        given = st.query_params.get_all(key)
-        if len(given) == 1 and given[0] in ("true", "false"):
-            st.session_state[key] = given[0] == "true"
-        else:  # (said by ui.numbers.link_switch while the switch is as the page has it)
-            st.session_state[f"_link_refused_{key}"] = (
-                Refused("repeated" if len(given) > 1 else "unknown", " & ".join(given)[:80]),
-                kwargs.get("value", False))
+        try:
+            wanted = link_value(key)
+            if wanted not in ("true", "false"):
+                raise Refused("unknown", wanted or "")
+            st.session_state[key] = wanted == "true"
+        except Refused as refused:
+            said_of_link(key, refused, kwargs.get("value", False))
     value = st.toggle(label, key=key, **kwargs)
     url_set(key, "true" if value else "false")
     return value
