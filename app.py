@@ -1,5 +1,7 @@
 """Mehanizmi — entry point: ``streamlit run app.py``. Routes to one page per chapter."""
 
+import copy
+
 import streamlit as st
 
 from ui.boundary import boundary
@@ -20,23 +22,22 @@ def home() -> None:
             st.write(t(chapter.summary))
 
 
-PAGES = "navigation_pages"  # the session's pages and their language
+@st.cache_resource(show_spinner=False, max_entries=8)
+def _pages(language: str) -> list[st.Page]:
+    """The app's pages in ``language``, made once per process: making them (each resolves its
+    path and checks its icon) took 3 ms, a tenth of a seated student's opening."""
+    pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
+    pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER, VARIANTS)]
+    pages.append(st.Page("pages/textbook_check.py", title=t("check.title"),
+                         icon=":material/fact_check:"))
+    pages.append(st.Page(CLASSROOM.file, title=t(CLASSROOM.title), icon=CLASSROOM.icon))
+    return pages
 
 
 def navigation_pages() -> list[st.Page]:
-    """The app's pages, made once per session and language: making them (each resolves its
-    path and checks its icon) took 3 ms, a twentieth of a page's rerun. Kept per session,
-    not shared: ``st.navigation`` marks the page it returns as the one this run may run."""
-    kept = st.session_state.get(PAGES)
-    if kept is None or kept[0] != current():
-        pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
-        pages += [st.Page(c.file, title=t(c.title), icon=c.icon)
-                  for c in (*CHAPTERS, BUILDER, VARIANTS)]
-        pages.append(st.Page("pages/textbook_check.py", title=t("check.title"),
-                             icon=":material/fact_check:"))
-        pages.append(st.Page(CLASSROOM.file, title=t(CLASSROOM.title), icon=CLASSROOM.icon))
-        kept = st.session_state[PAGES] = (current(), pages)
-    return kept[1]
+    """The app's pages in the page's language, copied for this run: ``st.navigation`` marks
+    the page it returns as the one this run may run, a mark no two sessions may share."""
+    return [copy.copy(page) for page in _pages(current())]
 
 
 # an emoji, drawn by the browser: a ":material/…:" favicon is fetched from Google's font CDN,

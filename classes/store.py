@@ -198,7 +198,7 @@ def _private(path: Path) -> None:
 def reachable(url: str | None = None) -> bool:
     """Whether the store answers now (a page waiting for it looks every few seconds)."""
     try:
-        with engine(url).connect() as db:
+        with _autocommit(url) as db:
             db.execute(sa.text("SELECT 1"))
     except sa.exc.SQLAlchemyError:
         return False
@@ -252,9 +252,18 @@ def create(scene: str, method: str, at: float | None = None, variants: str | Non
 def find(code: str, url: str | None = None) -> Class:
     """The class a code names (typed in any case, spaces ignored); ClassError if none or
     expired."""
-    code = "".join(code.split()).upper()
-    with engine(url).connect() as db:
+    code = _code(code)
+    with _autocommit(url) as db:
         row = db.execute(sa.select(classes).where(classes.c.code == code)).first()
+    return _class(row, code)
+
+
+def _code(text: str) -> str:
+    return "".join(text.split()).upper()
+
+
+def _class(row, code: str) -> Class:
+    """The class of a ``classes`` row read for ``code``: ClassError if none, deleted or expired."""
     if row is None:
         raise ClassError(Text("class.no_code", code=code))
     if row.deleted is not None:
@@ -265,11 +274,19 @@ def find(code: str, url: str | None = None) -> Class:
                  bool(row.test), aware(row.closed) if row.closed else None)
 
 
+def _autocommit(url: str | None) -> sa.Connection:
+    """A connection whose every statement is a transaction of its own: a read or a check's
+    one insert costs its own round trip, not a BEGIN and a COMMIT (or ROLLBACK) beside it
+    — three where one does. (What must be one transaction of several statements uses
+    ``engine(url).begin()``.)"""
+    return engine(url).connect().execution_options(isolation_level="AUTOCOMMIT")
+
+
 @_reachable
 def opened(code: str, key: str, url: str | None = None) -> Class:
     """The class, for its lecturer: ClassError unless ``key`` is its key."""
     found = find(code, url)
-    with engine(url).connect() as db:
+    with _autocommit(url) as db:
         stored = db.execute(sa.select(classes.c.key_hash).where(classes.c.id == found.id)).scalar()
     if not secrets.compare_digest(stored, _hash(key.strip())):
         raise ClassError(Text("class.wrong_key", code=found.code))
@@ -298,30 +315,43 @@ def join(code: str, nickname: str = "", url: str | None = None) -> str:
 
 def student(code: str, token: str, url: str | None = None) -> dict:
     """A student of this class (ClassError for another class's or an unknown token)."""
-    return _student(find(code, url), token, url)
-
-
-def seated(code: str, token: str, url: str | None = None) -> tuple[Class, dict]:
-    """The class and the student a check is stored for (``record``'s ``known``)."""
-    found = find(code, url)
-    return found, _student(found, token, url)
+    return seated(code, token, url)[1]
 
 
 @_reachable
-def _student(found: Class, token: str, url: str | None) -> dict:
-    with engine(url).connect() as db:
-        row = db.execute(sa.select(students).where(students.c.id == token,
-                                                   students.c.class_id == found.id)).first()
-    if row is None:
+def seated(code: str, token: str, url: str | None = None) -> tuple[Class, dict]:
+    """The class and the student (``record``'s ``known``), read in one statement: a seated
+    page's opening reads nothing else before its tries."""
+    with _autocommit(url) as db:
+        return _seated(db, _code(code), token)
+
+
+@_reachable
+def resume(code: str, token: str, url: str | None = None) -> tuple[Class, dict, list[dict]]:
+    """The class, the student and their checks oldest first (``tries``): what a seated
+    page comes back with, in two statements on one connection."""
+    with _autocommit(url) as db:
+        found, who = _seated(db, _code(code), token)
+        return found, who, _tries(db, token)
+
+
+def _seated(db: sa.Connection, code: str, token: str) -> tuple[Class, dict]:
+    row = db.execute(
+        sa.select(classes, students.c.id.label("token"), students.c.nickname,
+                  students.c.variant.label("seat"))
+        .outerjoin(students, (students.c.class_id == classes.c.id) & (students.c.id == token))
+        .where(classes.c.code == code)).first()
+    found = _class(row, code)
+    if row.token is None:
         raise ClassError(Text("class.no_student", code=found.code))
-    return {"student": row.id, "nickname": row.nickname, "variant": row.variant}
+    return found, {"student": row.token, "nickname": row.nickname, "variant": row.seat}
 
 
 @_reachable
 def roster(found: Class, url: str | None = None) -> dict[str, str]:
     """Every student of the class (``found`` from ``opened``): token → nickname, in the
     order they joined."""
-    with engine(url).connect() as db:
+    with _autocommit(url) as db:
         rows = db.execute(sa.select(students.c.id, students.c.nickname)
                           .where(students.c.class_id == found.id).order_by(students.c.joined)).all()
     return {r.id: r.nickname for r in rows}
@@ -369,18 +399,17 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
             raise OneTry(Text("class.one_try", step=step))
         if variant is None:  # in a class of variants, the student's own
             variant = variant_of(found, who["variant"])
-        made = engine(url)
-        while _recent(made, who["student"]) >= PER_SECOND:
+        while _recent(url, who["student"]) >= PER_SECOND:
             time.sleep(0.2)  # a machine, not a person: slowed
         values = {"check_id": check, "class_id": found.id, "student": who["student"],
                   "step": step, "answer": text, "diagnosis": diagnosis, "term": term or None,
                   "time": _now(), "variant": variant}
         for _ in range(RACES):
             try:
-                with made.begin() as db:
+                with _autocommit(url) as db:  # (one statement: numbered and inserted at once)
                     return db.execute(_numbered(values, first=found.test)).scalar_one()
             except sa.exc.IntegrityError:  # this check sent again, or a number taken meanwhile
-                stored = _stored_try(made, check)
+                stored = _stored_try(url, check)
                 if stored is not None:
                     return stored  # the same check, stored by an earlier sending
                 seated(code, token, url)  # (ClassError: the class or the student gone meanwhile)
@@ -410,25 +439,25 @@ def _numbered(values: dict, first: bool = False):
     return checks.insert().from_select(columns, sa.select(*row)).returning(checks.c["try"])
 
 
-def _stored_try(made: sa.Engine, check: str) -> int | None:
-    with made.connect() as db:
+def _stored_try(url: str | None, check: str) -> int | None:
+    with _autocommit(url) as db:
         return db.execute(sa.select(checks.c["try"]).where(checks.c.check_id == check)).scalar()
 
 
-def _recent(made: sa.Engine, token: str) -> int:
+def _recent(url: str | None, token: str) -> int:
     since = _now() - timedelta(seconds=1)
-    with made.connect() as db:
+    with _autocommit(url) as db:
         return db.execute(sa.select(sa.func.count()).select_from(checks).where(
             checks.c.student == token, checks.c.time >= since)).scalar()
 
 
-@_reachable
 def tries(code: str, token: str, url: str | None = None) -> list[dict]:
     """A student's checks, oldest first: what brings their progress back on a reload."""
-    student(code, token, url)
-    with engine(url).connect() as db:
-        rows = db.execute(sa.select(checks).where(checks.c.student == token)
-                          .order_by(checks.c.id)).all()
+    return resume(code, token, url)[2]
+
+
+def _tries(db: sa.Connection, token: str) -> list[dict]:
+    rows = db.execute(sa.select(checks).where(checks.c.student == token).order_by(checks.c.id)).all()
     return [_row(r, "") for r in rows]
 
 
@@ -442,7 +471,7 @@ def since(found: Class, after: int, url: str | None = None) -> list[dict]:
     """The class's checks stored after the check numbered ``after``, oldest first, each with
     its number (``id``): what a live view fetches each second, only what is new. (``found``
     comes from ``opened``: the lecturer's key was checked.)"""
-    with engine(url).connect() as db:
+    with _autocommit(url) as db:
         rows = db.execute(sa.select(checks, students.c.nickname)
                           .join(students, students.c.id == checks.c.student)
                           .where(checks.c.class_id == found.id, checks.c.id > after)

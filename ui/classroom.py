@@ -61,24 +61,29 @@ DOWN = "down"  # a seat's "why not" while the store cannot be reached (asked aga
 
 
 def _seat() -> tuple | None:
-    """(code, token, the method's practice key, why not) for the link's class and student,
-    looked up in the store once per session and link."""
+    """(code, token, the method's practice key, why not, (class, student)) for the link's
+    class and student, read from the store in one statement once per session and link."""
     code, token = st.query_params.get("class"), st.query_params.get("student")
     if not code or not token:
         return None
     memo = st.session_state.get("_class_seat")
     if memo is None or memo[:2] != (code, token):
         try:
-            method = store.find(code).method
-            store.student(code, token)
+            known = store.seated(code, token)
         except StoreDown:  # asked again on the next run, not kept
-            return (code, token, None, DOWN)
+            return (code, token, None, DOWN, None)
         except ClassError as exc:
-            memo = (code, token, None, message(exc.args[0]))
+            memo = (code, token, None, message(exc.args[0]), None)
         else:
-            memo = (code, token, METHODS[method][1], "")
+            memo = (code, token, METHODS[known[0].method][1], "", known)
         st.session_state["_class_seat"] = memo
     return memo
+
+
+def _known(seated: tuple[str, str]) -> tuple[store.Class, dict] | None:
+    """The class and the student of ``seated`` as the session's seat read them."""
+    memo = st.session_state.get("_class_seat")
+    return memo[4] if memo and memo[:2] == seated else None
 
 
 def wait_for_store(said: str) -> None:
@@ -102,12 +107,11 @@ def resumed(seated: tuple[str, str], steps: list[Step], rules: Rules | None = No
     that would hide what the store holds) until it answers."""
     known = {s.id for s in steps}
     try:
-        checks = store.tries(*seated)
-        rules = rules or store.find(seated[0]).rules
+        found, _, checks = store.resume(*seated)
     except StoreDown:
         wait_for_store(t("class.store_down"))
         st.stop()
-    return Progress.of(tried([c for c in checks if c["step"] in known]), rules)
+    return Progress.of(tried([c for c in checks if c["step"] in known]), rules or found.rules)
 
 
 @st.cache_resource(max_entries=64, show_spinner=False)
@@ -115,23 +119,16 @@ def _steps_at(scene: str, method: str, at: float | None, variant: str | None) ->
     return steps_at(scene, method, at, variant)
 
 
-def class_steps(seated: tuple[str, str]) -> tuple[store.Class, list[Step]] | None:
+def class_steps(seated: tuple[str, str]) -> tuple[store.Class, list[Step]]:
     """The class of a seated student and the steps it practises — the class's scene (or the
     student's variant), method and instant, never the link's or the sliders': every check
-    is graded and stored at the class's instant. Looked up once per session and seat (a
-    class deleted meanwhile keeps its steps: practice goes on, unstored); None, said, for
-    a class gone before; the store down stops the page until it answers."""
+    is graded and stored at the class's instant. Made once per session and seat, from the
+    class and student the seat read (a class deleted meanwhile keeps its steps: practice
+    goes on, unstored)."""
     memo = st.session_state.setdefault("_class_steps", {})
     if seated not in memo:
-        try:
-            found = store.find(seated[0])
-            variant = store.variant_of(found, store.student(*seated)["variant"])
-        except StoreDown:
-            wait_for_store(t("class.store_down"))
-            st.stop()
-        except ClassError as exc:
-            st.error(message(exc.args[0]), icon=":material/error:")
-            return None
+        found, who = _known(seated)
+        variant = store.variant_of(found, who["variant"])
         memo[seated] = (found, _steps_at(found.scene, found.method, found.at, variant))
     return memo[seated]
 
@@ -234,14 +231,13 @@ def _stored(state: dict, step: str, answer, diagnosis: str, term: str) -> tuple[
     """One check in the store: its id and try number (None, and why said, when it was not
     taken). The check's id is made here and kept until the store has it: the same answer
     checked again after "not saved" is that check, stored once; any other is a new try.
-    The class and the student are read once a seat (``known``), not at every check."""
+    The class and the student are the seat's (``_known``), not read again at every check."""
     pending = state.setdefault("pending", {})
     which = (step, repr(answer), diagnosis)
     check = pending.setdefault(which, store.new_check())
     try:
-        state["known"] = state.get("known") or store.seated(*state["seat"])
         number = store.record(*state["seat"], step, answer, diagnosis, check, term=term,
-                              known=state["known"])
+                              known=_known(state["seat"]))
     except (NotSaved, StoreDown):
         st.session_state[NOT_SAVED] = t("class.not_saved")
         return None

@@ -8,7 +8,6 @@ from typing import NamedTuple, TypeVar
 
 import streamlit as st
 from streamlit.delta_generator import DeltaGenerator
-from streamlit.runtime.scriptrunner_utils.script_run_context import get_script_run_ctx
 
 from mechanisms.schema import Scene
 from ui.boundary import boundary
@@ -37,14 +36,6 @@ def fragment(func: F) -> F:
             return func(*args, **kwargs)
 
     return st.fragment(run)  # type: ignore[return-value]
-
-
-def rerun_here() -> None:
-    """Run again only the fragment this run is of (the whole page outside one): a practice
-    check redraws its panel, not the page's plans and charts (half the work of a check
-    under a class's load, deploy/classload.py)."""
-    ctx = get_script_run_ctx()
-    st.rerun(scope="fragment" if ctx is not None and ctx.fragment_ids_this_run else "app")
 
 
 class Places(NamedTuple):

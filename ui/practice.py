@@ -19,6 +19,7 @@ from methods.progress import Progress, verdict_of
 from ui import classroom
 from ui.export import chart
 from ui.firstpaint import finish, whole
+from ui.fragments import fragment
 from ui.i18n import current, kept_language, num, t
 from ui.inview import into_view
 from ui.numbers import Refused, number_field, refusal
@@ -72,10 +73,7 @@ def class_only(*keys: str) -> None:
         finish()
     if seated is None:
         return  # not this page's class, or no such student: the page as it is (its practice switch says why)
-    known = classroom.class_steps(seated)
-    if known is None:
-        return
-    found, steps = known
+    found, steps = classroom.class_steps(seated)
     key, sheet, drawable = SEATED[found.method]
     st.caption(t("class.seated", code=found.code)
                + (" · " + t("class.seated_test") if found.test else ""))
@@ -83,8 +81,16 @@ def class_only(*keys: str) -> None:
     if ignored:
         st.info(t("class.fixed", names=", ".join(ignored)), icon=":material/lock:")
     whole()  # (nothing of the page waits for the sheet's paint)
-    panel(steps, key, t(sheet) if sheet else "", drawable)
+    _seated_panel(steps, key, t(sheet) if sheet else "", drawable)
     finish()
+
+
+@fragment
+def _seated_panel(steps: list[Step], key: str, title: str, drawable: bool) -> None:
+    """A seated student's practice, a fragment: a check, a drag or a move reruns it alone,
+    not app.py's controls and the seat's note around it (a check's run is what a class's
+    server spends most of its time on: docs/performance.md, issue 70)."""
+    panel(steps, key, title, drawable)
 
 
 def hint(step: Step, verdict: Verdict) -> str:
