@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass
 
 import streamlit as st
 
-from ui.i18n import t
+from ui.i18n import current, t
 
 
 @dataclass(frozen=True)
@@ -53,3 +54,31 @@ def page_for(preset_id: str) -> str:
              "4": "assur_groups", "5": "kinetostatics", "6": "planetary_gears",
              "7": "rotor_balancing"}
     return f"pages/{pages.get(chapter, 'trajectories')}.py"
+
+
+def home() -> None:
+    """The home page: every chapter with its summary."""
+    st.title("Mehanizmi")
+    st.write(t("app.intro"))
+    for chapter in (BUILDER, *CHAPTERS, VARIANTS, CLASSROOM):
+        with st.container(border=True):
+            st.page_link(chapter.file, label=t(chapter.title), icon=chapter.icon)
+            st.write(t(chapter.summary))
+
+
+@st.cache_resource(show_spinner=False, max_entries=8)
+def _pages(language: str) -> list[st.Page]:
+    """The app's pages in ``language``, made once per process: making them (each resolves its
+    path and checks its icon) took 3 ms, a tenth of a seated student's opening."""
+    pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
+    pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER, VARIANTS)]
+    pages.append(st.Page("pages/textbook_check.py", title=t("check.title"),
+                         icon=":material/fact_check:"))
+    pages.append(st.Page(CLASSROOM.file, title=t(CLASSROOM.title), icon=CLASSROOM.icon))
+    return pages
+
+
+def navigation_pages() -> list[st.Page]:
+    """app.py's pages in the page's language, copied for this run: ``st.navigation`` marks
+    the page it returns as the one this run may run, a mark no two sessions may share."""
+    return [copy.copy(page) for page in _pages(current())]

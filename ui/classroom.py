@@ -6,6 +6,7 @@ verdict is shown) and how their progress comes back from the store."""
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 
 import streamlit as st
 
@@ -37,6 +38,14 @@ def seat(key: str) -> tuple[str, str] | None:
     and the link names a student of that class; None otherwise (practice is not stored)."""
     memo = _seat()
     return (memo[0], memo[1]) if memo and not memo[3] and memo[2] == key else None
+
+
+def seated_on(page: str) -> bool:
+    """Whether ``page`` (a URL path) is where the link's student practises their class's
+    method: that page shows the class's practice alone, without the projector switch and
+    the sidebar's code box (two widgets fewer in each of a class's openings)."""
+    memo = _seat()
+    return bool(memo and memo[4]) and Path(METHODS[memo[4][0].method][0]).stem == page
 
 
 def waiting_for_store() -> bool:

@@ -284,22 +284,24 @@ def exact_text(step: Step) -> str:
 
 
 def _moves(steps: list[Step], index: int, key: str, state: dict) -> None:
-    cols = st.columns(3)
+    """Previous, Show it, Next: one row that wraps on a narrow screen (one block, where three
+    columns sent four)."""
     progress = state["progress"]
 
     def go(to: int) -> None:
         state["index"] = max(0, min(to, len(steps) - 1))
 
-    cols[0].button(t("practice.previous"), key=f"{key}_prev", on_click=go, args=(index - 1,),
-                   disabled=index == 0, icon=":material/arrow_back:", width="stretch")
+    row = st.container(horizontal=True)
+    row.button(t("practice.previous"), key=f"{key}_prev", on_click=go, args=(index - 1,),
+               disabled=index == 0, icon=":material/arrow_back:", width="stretch")
     if progress.rules.hints:  # (a test gives no "Show it")
-        cols[1].button(t("practice.reveal"), key=f"{key}_reveal",
-                       on_click=lambda: classroom.reveal(state, steps[index]),
-                       disabled=progress.done(steps[index]), icon=":material/visibility:",
-                       width="stretch")
-    cols[2].button(t("practice.next"), key=f"{key}_next", on_click=go, args=(index + 1,),
-                   disabled=index == len(steps) - 1, icon=":material/arrow_forward:",
+        row.button(t("practice.reveal"), key=f"{key}_reveal",
+                   on_click=lambda: classroom.reveal(state, steps[index]),
+                   disabled=progress.done(steps[index]), icon=":material/visibility:",
                    width="stretch")
+    row.button(t("practice.next"), key=f"{key}_next", on_click=go, args=(index + 1,),
+               disabled=index == len(steps) - 1, icon=":material/arrow_forward:",
+               width="stretch")
 
 
 def score(steps: list[Step], progress: Progress, key: str) -> None:
