@@ -4,10 +4,9 @@ import streamlit as st
 
 from ui.boundary import boundary
 from ui.chapters import navigation_pages
-from ui.classroom import seated_on, sidebar_join
+from ui.classroom import forget_opening, seated_on, sidebar_join
 from ui.firstpaint import begin_run, end_run
 from ui.i18n import language_picker
-from ui.layout import frame_css
 from ui.present import projector_switch
 
 # an emoji, drawn by the browser: a ":material/…:" favicon is fetched from Google's font CDN,
@@ -15,7 +14,6 @@ from ui.present import projector_switch
 st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide")
 with boundary():  # no traceback on any page: one sentence, and the server's log
     language_picker()
-    frame_css()
     page = st.navigation(navigation_pages())
     if not seated_on(page.url_path):  # (a seated student's page: the class's practice alone)
         projector_switch()
@@ -25,3 +23,4 @@ with boundary():  # no traceback on any page: one sentence, and the server's log
         page.run()
     finally:  # (st.stop() and a rerun leave run() by an exception)
         end_run()
+        forget_opening()

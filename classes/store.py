@@ -253,13 +253,16 @@ def find(code: str, url: str | None = None) -> Class:
     """The class a code names (typed in any case, spaces ignored); ClassError if none or
     expired."""
     code = _code(code)
-    with _autocommit(url) as db:
-        row = db.execute(sa.select(classes).where(classes.c.code == code)).first()
-    return _class(row, code)
+    return _class(_class_row(code, url), code)
 
 
 def _code(text: str) -> str:
     return "".join(text.split()).upper()
+
+
+def _class_row(code: str, url: str | None):
+    with _autocommit(url) as db:
+        return db.execute(sa.select(classes).where(classes.c.code == code)).first()
 
 
 def _class(row, code: str) -> Class:
@@ -284,11 +287,12 @@ def _autocommit(url: str | None) -> sa.Connection:
 
 @_reachable
 def opened(code: str, key: str, url: str | None = None) -> Class:
-    """The class, for its lecturer: ClassError unless ``key`` is its key."""
-    found = find(code, url)
-    with _autocommit(url) as db:
-        stored = db.execute(sa.select(classes.c.key_hash).where(classes.c.id == found.id)).scalar()
-    if not secrets.compare_digest(stored, _hash(key.strip())):
+    """The class, for its lecturer: ClassError unless ``key`` is its key. One statement (a
+    live view asks it every second)."""
+    code = _code(code)
+    row = _class_row(code, url)
+    found = _class(row, code)
+    if not secrets.compare_digest(row.key_hash, _hash(key.strip())):
         raise ClassError(Text("class.wrong_key", code=found.code))
     return found
 

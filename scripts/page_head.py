@@ -14,6 +14,11 @@ here takes a wait or some script off the way to that chart; none of them saves b
   ``st-key-num_…`` containers, which shows digits, the decimal separator and, on Android,
   a minus. iOS's decimal pad has no minus, so there a field that takes negative values
   (``num_any_``) keeps the full keyboard.
+- The page's frame (``ui/frame.css``: captions dark enough, a phone's order of columns, the
+  builder's sticky drawing) is a style sent once a visit, where it was an element of every
+  run of every page. It closes the body (``FRAME``), not the head: Streamlit's own styles
+  are added to the head as the page draws, and the frame must come after them to win where
+  a selector of each weighs the same, as the element in the page did.
 - Streamlit's front end is told where its server is (``window.__streamlit``). Without it, on
   a page such as ``/kinetostatics`` the front end first asks
   ``/kinetostatics/_stcore/health``, gets a 404, and only then tries the root. That is a
@@ -28,6 +33,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 # read once: every page's HTML carries it
 LOADER = (ROOT / "ui" / "plotly_loader.js").read_text(encoding="utf-8")
+FRAME = f'<style>\n{(ROOT / "ui" / "frame.css").read_text(encoding="utf-8")}</style>'
 KEYBOARD = """new MutationObserver(() => {
   const ios = /iPhone|iPad|iPod/.test(navigator.userAgent);
   for (const box of document.querySelectorAll(

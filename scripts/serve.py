@@ -150,7 +150,8 @@ class PrecompressedStatic:
         return packed
 
     async def _with_head(self, scope, receive, send) -> None:
-        """A page's HTML with scripts/page_head.py's tags in its head."""
+        """A page's HTML with scripts/page_head.py's tags in its head, and its frame's style
+        closing its body."""
         start, data = await self._whole(scope, receive)
         named = {k.lower(): v for k, v in start.get("headers", [])}
         if (start.get("status") == 200 and b"</head>" in data
@@ -158,6 +159,7 @@ class PrecompressedStatic:
                 and not named.get(b"content-encoding")):
             tags = page_head.head(config.get_option("server.baseUrlPath"), _app_static())
             data = data.replace(b"</head>", tags.encode() + b"</head>", 1)
+            data = data.replace(b"</body>", page_head.FRAME.encode() + b"</body>", 1)
             start = _sized(start, data)
         await send(start)
         await send({"type": "http.response.body", "body": data})

@@ -198,6 +198,12 @@ def test_a_page_starts_the_charts_bundle_from_its_head_and_asks_no_wrong_path(ap
     assert page.evaluate("() => Object.keys(window.__mehanizmiPlotly)") == [wanted]
     health = [url for url in asked if "_stcore/health" in url]
     assert health and all(url == f"{app_url}/_stcore/health" for url in health), health
+    # the page's frame is one style closing the body (after Streamlit's own), and it holds
+    from scripts.page_head import FRAME
+    assert html.index(FRAME) > html.index("<body") and html.count(FRAME) == 1
+    caption = page.locator("[data-testid='stCaptionContainer']").first
+    assert caption.evaluate("e => [getComputedStyle(e).opacity, getComputedStyle(e).color]") \
+        == ["1", "rgb(92, 94, 102)"]
 
 
 def test_the_server_sends_the_icon_font_cut_to_the_icons_the_app_can_show(app_url):

@@ -145,3 +145,6 @@ def test_a_page_head_names_the_server_s_path_and_starts_the_charts_bundle(tmp_pa
     assert page_head.LOADER in tags
     assert 'plotly("app/static/plotly-basic-9.9.9.min.js");' in tags
     assert "plotly(" not in page_head.head("", static=tmp_path / "none")  # no bundle published
+    # the page's frame (ui/frame.css) is one style, which the server puts last in the body
+    frame = (page_head.ROOT / "ui" / "frame.css").read_text(encoding="utf-8")
+    assert "stCaptionContainer" in frame and page_head.FRAME == f"<style>\n{frame}</style>"

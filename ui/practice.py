@@ -7,6 +7,7 @@ answer come at the end. The state lives in the session, one run per page and sce
 
 from __future__ import annotations
 
+import functools
 import math
 
 import pandas as pd
@@ -14,6 +15,8 @@ import streamlit as st
 
 from figures.plans import plain
 from figures.practice import practice_figure
+from figures.raw import RawFigure
+from figures.style import Look
 from methods.practice import RULES, Step, Verdict, hint_texts, polar
 from methods.progress import Progress, verdict_of
 from ui import classroom
@@ -176,10 +179,20 @@ def _drawing(steps: list[Step], index: int, key: str, state: dict, progress: Pro
     revision = f"{step.id}-{state['revision']}-{step.scale}"
     record = progress.record(step)
     seen = len(record.counted) + len(record.late)  # a check, a drag or a move: a new focus
-    chart(practice_figure(steps, index, tip, title, t, look(), revision),
+    chart(_sheet(tuple(steps), index, tip, title, current(), look(), revision),
           f"practice-{key}", key=f"{key}_fig", handle="tip",
           focus=f".st-key-{key}_prompt|{index}-{seen}-{state['revision']}")
     st.caption(t("practice.drag_hint"))
+
+
+@functools.lru_cache(maxsize=256)
+def _sheet(steps: tuple[Step, ...], index: int, tip: complex | None, title: str, language: str,
+           look_: Look, revision: str) -> RawFigure:
+    """The sheet of a step, shared by every session that shows it alike (steps are frozen:
+    equal steps, the same sheet): a class opening its first step draws it once, not once a
+    student. Never changed once made (ui.plot only reads it)."""
+    return practice_figure(list(steps), index, tip, title,
+                           lambda key, **values: t(key, language, **values), look_, revision)
 
 
 def _dragged(step: Step, key: str, state: dict) -> None:
