@@ -8,15 +8,20 @@ no CPU and shortens every run but the last in the queue: with 30 sessions on one
 (deploy/loadtest.py) the reruns' p95 went from 474–676 to 299–323 ms, in three paired runs
 (docs/performance.md). Two at a time was no better than none.
 
-A run waits for its turn at most ``WAIT`` seconds and then runs beside the others, as
-Streamlit would have run it: a long run (the textbook check, a speed panel) delays the rest
-of the class by at most that, never stops it.
+A run that has held the turn ``WAIT`` seconds no longer holds the others back: the next one
+starts beside it, and the one after that waits for either to end or to be as old. So a long
+run (the textbook check, a speed panel, a process's first, cold run) delays the rest of the
+class by at most that, never stops it — and it lets one run past, not all: when every
+waiting run went past a long one at once, a class opening its pages together shared the
+CPU by 5-ms slices again, and the event loop that sends their messages starved (issue 70:
+300 openings took 2.4× the floor's, every one finishing at the end).
 """
 
 from __future__ import annotations
 
 import functools
 import threading
+import time
 from collections.abc import Callable
 
 from streamlit.runtime.scriptrunner import script_runner
@@ -25,18 +30,25 @@ WAIT = 0.25  # s: a queue of 30-ms runs this long is a server already past what 
 
 
 def taking_turns(run: Callable, wait: float = WAIT) -> Callable:
-    """``run`` (a script runner's ``_run_script``), holding the process's one turn while it
-    runs; after ``wait`` seconds without it, running anyway."""
-    turn = threading.Lock()
+    """``run`` (a script runner's ``_run_script``), started when every run in progress has
+    run ``wait`` seconds or more (none in progress: at once); a run that ends wakes the
+    one that has waited longest."""
+    changed = threading.Condition()
+    started: list[float] = []  # when each run in progress started (time.monotonic)
 
     @functools.wraps(run)
     def in_turn(*args, **kwargs):
-        mine = turn.acquire(timeout=wait)
+        with changed:
+            while (left := max(started, default=-wait) + wait - time.monotonic()) > 0:
+                changed.wait(left)
+            mine = time.monotonic()
+            started.append(mine)
         try:
             return run(*args, **kwargs)
         finally:
-            if mine:
-                turn.release()
+            with changed:
+                started.remove(mine)
+                changed.notify()
 
     return in_turn
 

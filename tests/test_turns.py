@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import threading
+import time
 
 from scripts import turns
 
@@ -42,6 +43,37 @@ def test_a_long_run_holds_the_others_back_no_longer_than_the_bound():
     assert first.is_alive()
     release.set()
     for thread in (first, second):
+        thread.join(5)
+
+
+def test_a_long_run_lets_one_waiting_run_past_not_all_at_once():
+    """A class opening its pages behind a process's first (cold, long) run: one run starts
+    beside it, and the next only once that one is as old (all at once shared the CPU by
+    5-ms slices again)."""
+    wait = 0.5
+    release = threading.Event()
+    starts = {name: threading.Event() for name in ("first", "a", "b")}
+
+    def run(name: str) -> None:
+        starts[name].set()
+        release.wait(10)
+
+    in_turn = turns.taking_turns(run, wait)
+    threads = [threading.Thread(target=in_turn, args=(name,)) for name in starts]
+    threads[0].start()
+    assert starts["first"].wait(5)
+    for thread in threads[1:]:
+        thread.start()
+    deadline = time.monotonic() + 5
+    while not (starts["a"].is_set() or starts["b"].is_set()) and time.monotonic() < deadline:
+        time.sleep(0.005)
+    past = [name for name in ("a", "b") if starts[name].is_set()]
+    assert len(past) == 1  # one went past the long run…
+    later = starts["b" if past == ["a"] else "a"]
+    assert not later.wait(wait / 2)  # …and the other waits for it to be as old
+    assert later.wait(5)
+    release.set()
+    for thread in threads:
         thread.join(5)
 
 
