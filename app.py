@@ -4,7 +4,7 @@ import streamlit as st
 
 from ui.boundary import boundary
 from ui.chapters import navigation_pages
-from ui.classroom import forget_opening, seated_on, sidebar_join
+from ui.classroom import seated_on, sidebar_join
 from ui.firstpaint import begin_run, end_run
 from ui.i18n import language_picker
 from ui.present import projector_switch
@@ -23,4 +23,3 @@ with boundary():  # no traceback on any page: one sentence, and the server's log
         page.run()
     finally:  # (st.stop() and a rerun leave run() by an exception)
         end_run()
-        forget_opening()

@@ -138,6 +138,26 @@ def test_every_check_of_two_tabs_is_stored_and_a_reload_opens_where_they_were():
     assert any(t("practice.hint_ok", "en") in s.value for s in again.success)
 
 
+def test_a_seat_read_on_another_page_first_still_opens_where_the_store_says():
+    """A seated student's link opened on another page first (the seat read there, once a
+    session), a right answer from another phone, then the method's page: it opens past
+    that step — its progress read from the store when its practice starts, not kept from
+    the seat's lookup."""
+    code, key = store.create("zbirka-3.1", "plans")
+    token = store.join(code, "Ana")
+    steps = steps_for(load_preset("zbirka-3.1"), "plans")
+    at = page("pages/trajectories.py", lang="en", scene="zbirka-3.1")
+    at.query_params.update({"class": code, "student": token})
+    at.run()
+    assert not at.exception and at.session_state["_class_seat"][2] == "pr_plans"
+    _check(_seated(code, token), steps[0], steps[0].expected)  # the other phone
+    at.switch_page("pages/velocity_plans.py")
+    at.query_params.update({"class": code, "student": token})
+    at.run()
+    assert not at.exception
+    assert _prompt(at).startswith(f"Step 2 of {len(steps)}")
+
+
 def test_a_check_the_store_cannot_take_shows_no_verdict(monkeypatch):
     """Not even the verdict of the try before, which would read as this one's."""
     code, key = store.create("zbirka-3.1", "plans")

@@ -71,34 +71,22 @@ DOWN = "down"  # a seat's "why not" while the store cannot be reached (asked aga
 
 def _seat() -> tuple | None:
     """(code, token, the method's practice key, why not, (class, student)) for the link's
-    class and student, read from the store once per session and link — with the student's
-    tries, on one connection: a seated page's opening asks the store nothing else."""
+    class and student, read from the store in one statement once per session and link."""
     code, token = st.query_params.get("class"), st.query_params.get("student")
     if not code or not token:
         return None
     memo = st.session_state.get("_class_seat")
     if memo is None or memo[:2] != (code, token):
         try:
-            found, who, tries = store.resume(code, token)
+            found, who = store.seated(code, token)
         except StoreDown:  # asked again on the next run, not kept
             return (code, token, None, DOWN, None)
         except ClassError as exc:
             memo = (code, token, None, message(exc.args[0]), None)
         else:
             memo = (code, token, METHODS[found.method][1], "", (found, who))
-            st.session_state[OPENING] = ((code, token), tries)
         st.session_state["_class_seat"] = memo
     return memo
-
-
-OPENING = "_class_opening"  # the student's tries as the seat's lookup read them, this run
-
-
-def forget_opening() -> None:
-    """At a run's end (app.py): the tries read with the seat serve the run that read them
-    alone — its page's progress (``resumed``) — and a later run reads the store again,
-    where another device may have checked meanwhile."""
-    st.session_state.pop(OPENING, None)
 
 
 def _known(seated: tuple[str, str]) -> tuple[store.Class, dict] | None:
@@ -127,12 +115,8 @@ def resumed(seated: tuple[str, str], steps: list[Step], rules: Rules | None = No
     A store that cannot be reached stops the page with the reason (nothing is started afresh
     that would hide what the store holds) until it answers."""
     known = {s.id for s in steps}
-    opening = st.session_state.pop(OPENING, None)
     try:
-        if opening is not None and opening[0] == seated and _known(seated):
-            found, checks = _known(seated)[0], opening[1]  # (read by this run's seat lookup)
-        else:
-            found, _, checks = store.resume(*seated)
+        found, _, checks = store.resume(*seated)
     except StoreDown:
         wait_for_store(t("class.store_down"))
         st.stop()
