@@ -77,6 +77,29 @@ def test_a_long_run_lets_one_waiting_run_past_not_all_at_once():
         thread.join(5)
 
 
+def test_runs_start_in_the_order_they_asked():
+    release, began = threading.Event(), threading.Event()
+    order: list[str] = []
+
+    def run(name: str) -> None:
+        if name == "first":
+            began.set()
+            release.wait(10)
+        order.append(name)
+
+    in_turn = turns.taking_turns(run, wait=10)
+    threads = [threading.Thread(target=in_turn, args=(name,)) for name in ("first", *"abcde")]
+    threads[0].start()
+    assert began.wait(5)
+    for thread in threads[1:]:
+        thread.start()
+        time.sleep(0.05)  # (each has asked before the next)
+    release.set()
+    for thread in threads:
+        thread.join(5)
+    assert order == ["first", *"abcde"]
+
+
 def test_a_failing_run_gives_up_its_turn():
     def fail() -> None:
         raise RuntimeError("a page's exception")
