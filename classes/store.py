@@ -261,6 +261,7 @@ def _code(text: str) -> str:
 
 
 def _class_row(code: str, url: str | None):
+    """The ``classes`` row of ``code`` (None if there is none), in one statement."""
     with _autocommit(url) as db:
         return db.execute(sa.select(classes).where(classes.c.code == code)).first()
 
@@ -340,6 +341,8 @@ def resume(code: str, token: str, url: str | None = None) -> tuple[Class, dict, 
 
 
 def _seated(db: sa.Connection, code: str, token: str) -> tuple[Class, dict]:
+    """The class of ``code`` and its student ``token``, one row: ClassError for either not
+    there (the class's own reasons first)."""
     row = db.execute(
         sa.select(classes, students.c.id.label("token"), students.c.nickname,
                   students.c.variant.label("seat"))
