@@ -46,6 +46,9 @@ class Platform:
         self.key = rsa.generate_private_key(public_exponent=65537, key_size=2048)
         self.issuer = f"https://moodle-{uuid.uuid4().hex[:8]}.example"
         self.client_id = uuid.uuid4().hex
+        # its key's id, its own as a real platform's is: the tool keeps a platform's keys
+        # by keyset URL and id, and a later test's platform may get a closed one's port
+        self.kid = uuid.uuid4().hex[:8]
         self.scores: list[tuple[str, dict, str]] = []  # (path, body, authorization)
         self.assertions: list[dict] = []
         self.lineitems: list[dict] = []  # the container's line items (made by the tool's POST)
@@ -78,7 +81,7 @@ class Platform:
                     return self._send(200, json.dumps([i for i in platform.lineitems if i.get(
                         "resourceLinkId") == asked.get("resource_link_id")]).encode())
                 key = json.loads(RSAAlgorithm.to_jwk(platform.key.public_key()))
-                self._send(200, json.dumps({"keys": [{**key, "kid": "p1", "alg": "RS256"}]}).encode())
+                self._send(200, json.dumps({"keys": [{**key, "kid": platform.kid, "alg": "RS256"}]}).encode())
 
             def do_POST(self) -> None:
                 body = self.rfile.read(int(self.headers["Content-Length"]))
@@ -126,7 +129,7 @@ class Platform:
                 CLAIM + "launch_presentation": {"locale": "sr", "document_target": "window"}}
         body.update(self.claims)
         body.update(claims)
-        return jwt.encode(body, key or self.key, algorithm="RS256", headers={"kid": "p1"})
+        return jwt.encode(body, key or self.key, algorithm="RS256", headers={"kid": self.kid})
 
     def close(self) -> None:
         self.server.shutdown()
