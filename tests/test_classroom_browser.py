@@ -92,6 +92,14 @@ def test_show_it_on_one_phone_then_a_stale_phone_s_answer_locks_nobody_out(app_u
         wait_idle(page)
         phones.append(page)
     first, second = phones
+    # a seated page: the class's practice and the language picker, no projector switch and
+    # no class-code box (the same page without the class link has both)
+    assert not first.locator(".st-key-present, .st-key-class_code_typed").count()
+    alone = browser.new_context(**phone, locale="sr-RS").new_page()
+    alone.goto(f"{app_url}/velocity_plans?lang=sr&scene=zbirka-3.1")
+    alone.locator(".st-key-class_code_typed").wait_for(state="attached", timeout=60_000)
+    assert alone.locator(".st-key-present").count() == 1
+    alone.context.close()
     first.get_by_role("button", name="Pokaži").tap()
     first.get_by_text("Prikazano posle 0 od 3").first.wait_for(timeout=30_000)
     check_first_step(second, verdict="Info")  # stale: right, but the step was shown meanwhile

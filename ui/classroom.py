@@ -6,13 +6,12 @@ verdict is shown) and how their progress comes back from the store."""
 from __future__ import annotations
 
 import dataclasses
-from pathlib import Path
 
 import streamlit as st
 
 from classes import store
 from classes.store import ClassError, NotSaved, OneTry, StoreDown
-from classes.steps import practice_link, steps_at
+from classes.steps import PRACTICE_PAGES, practice_link, steps_at
 from classes.summary import tried
 from methods.practice import Step, grade
 from methods.progress import Progress, Rules, Try
@@ -45,7 +44,7 @@ def seated_on(page: str) -> bool:
     method: that page shows the class's practice alone, without the projector switch and
     the sidebar's code box (two widgets fewer in each of a class's openings)."""
     memo = _seat()
-    return bool(memo and memo[4]) and Path(METHODS[memo[4][0].method][0]).stem == page
+    return bool(memo and memo[4]) and PRACTICE_PAGES[memo[4][0].method][0] == page
 
 
 def waiting_for_store() -> bool:

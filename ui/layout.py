@@ -8,9 +8,9 @@ control under it) comes first, the rest of the controls follow. What a page puts
 container keyed ``later…`` (an input table, a results table above the charts) moves after
 the charts there, and a row of metrics stays two abreast instead of four screens long.
 
-Those styles are ``ui/frame.css``, in every page's head (scripts/page_head.py): sent once a
-visit, not as an element of every run (2.4 kB, one element more in each of a class's
-openings).
+Those styles are ``ui/frame.css``, one style closing every page's body (scripts/serve.py,
+``scripts/page_head.FRAME``): sent once a visit, not as an element of every run (2.4 kB, one
+element more in each of a class's openings).
 """
 
 from __future__ import annotations
