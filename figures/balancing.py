@@ -90,8 +90,9 @@ def rotor_3d_figure(masses: list[tuple[str, float, complex, float]],
                               mode="lines+markers+text", text=["", name], showlegend=False,
                               line=dict(color=colour, width=4 * look.line),
                               marker=dict(size=[0, 6 + 14 * mass / biggest], color=colour))])
-    fig.update_layout(title=title, height=look.height, font=dict(size=look.font),
-                      margin=dict(l=0, r=0, t=50, b=0),
-                      scene=dict(xaxis_title="x [mm]", yaxis_title="z [mm]", zaxis_title="y [mm]",
-                                 aspectmode="data"))
+    fig.merge_layout(dict(title=dict(text=title), height=look.height, font=dict(size=look.font),
+                          margin=dict(l=0, r=0, t=50, b=0),
+                          scene=dict(xaxis=dict(title=dict(text="x [mm]")),
+                                     yaxis=dict(title=dict(text="z [mm]")),
+                                     zaxis=dict(title=dict(text="y [mm]")), aspectmode="data")))
     return fig

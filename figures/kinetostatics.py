@@ -137,8 +137,9 @@ def cycle_figure(x: np.ndarray, series: list[tuple[str, np.ndarray, str]], marke
         fig.add_raw([scatter(x=x, y=values, mode="lines", name=name, yaxis=axis,
                              line=dict(color=path_colour(i), width=(3.5 - i) * look.line,
                                        dash="dash" if i else "solid"))])
-    fig.add_vline(x=marker, line=dict(color="black", dash="dot", width=1.5 * look.line))
     fig.merge_layout(dict(
+        shapes=[dict(type="line", xref="x", yref="y domain", x0=marker, x1=marker, y0=0, y1=1,
+                     line=dict(color="black", dash="dot", width=1.5 * look.line))],
         title=dict(text=title, font=dict(size=look.font + 4)), height=int(look.height * 0.7),
         font=dict(size=look.font, color="black"), plot_bgcolor="white",
         margin=dict(margins(fig, look.font), r=int(4.5 * look.font + 2)),  # y2 on the right

@@ -1,26 +1,24 @@
-"""A Plotly figure whose traces and animation frames are plain dicts, added unvalidated.
+"""A Plotly figure kept as plain dicts: its traces, layout and animation frames, unvalidated.
 
 Plotly checks every property of every trace it is given: here about 0.5 ms a trace and
-6 ms an animation frame, so a 120-frame animation cost over a second per rerun. The
-traces come from a few builders that the tests exercise, so they are kept as dicts and
-joined to the (validated) layout only when the figure is serialised — by
-``ui.plot``, ``to_json`` or an image export, which all go through ``to_dict``.
+6 ms an animation frame, so a 120-frame animation cost over a second per rerun. Even an
+empty ``go.Figure`` cost 0.3 ms to make (its layout's validators) and its ``to_dict`` a
+deep copy: a third of the three plans figures' 2.2 ms a rerun. The figures come from a few
+builders that the tests exercise (tests/test_pages.py validates every chart a page sends
+against Plotly's schema), so nothing here is a ``go.Figure``: ``ui.plot``, ``to_json`` and
+an image export take the dict this makes (``to_plotly_json``).
 
 No template is sent. Plotly's default template is the one Streamlit installs on import
 ("streamlit"): placeholder colours that only Streamlit's own chart element fills in, which
-our traces never used (each names its colours; plotly.js's defaults do the rest). Yet every
-new figure deep-copied it into its layout and ``to_dict`` copied it out again, 7 kB of JSON
-a figure: a plans figure cost 1.9 ms to build and serialise, 0.7 ms without. So importing
-this module (after Streamlit, as every page does) leaves Plotly without a default template,
-and ``to_dict`` drops one that a figure was given anyway.
+our traces never used (each names its colours; plotly.js's defaults do the rest). A
+template given anyway is dropped.
 """
 
 from __future__ import annotations
 
 import copy
 
-import plotly.graph_objects as go
-import plotly.io as pio
+from plotly.io.json import to_json_plotly
 
 # Every figure starts from what Streamlit's own chart theme added (font, left bold title,
 # white paper): the pages draw through ui.plot, without that theme, which cost the browser
@@ -29,20 +27,18 @@ import plotly.io as pio
 HOUSE = dict(font=dict(family='"Source Sans", "Source Sans Pro", sans-serif'),
              title=dict(x=0.0, xanchor="left", font=dict(weight="bold")),
              paper_bgcolor="white")
-pio.templates.default = None
 
 
-class RawFigure(go.Figure):
+class RawFigure:
     def __init__(self) -> None:
-        super().__init__()
         self._raw_data: list[dict] = []
         self._raw_frames: list[dict] = []
         self._raw_layout: dict = copy.deepcopy(HOUSE)
         self._frozen: str | None = None
 
     def merge_layout(self, layout: dict) -> None:
-        """Layout settings as a plain dict, merged over the validated layout when serialised
-        (``update_layout`` and ``update_xaxes`` cost ~10 ms a figure in validation alone)."""
+        """Layout settings as a plain dict (nested, as plotly.js reads them: ``{"xaxis":
+        {"title": {"text": …}}}``), merged over what the figure has."""
         _merge(self._raw_layout, layout)
 
     def legend_names(self) -> list[str]:
@@ -52,8 +48,7 @@ class RawFigure(go.Figure):
 
     def trace_types(self) -> set[str]:
         """The kinds of trace drawn (Plotly's "type"): they decide the plotly.js bundle."""
-        return ({str(tr.get("type", "scatter")) for tr in self._raw_data}
-                | {str(tr.type) for tr in self.data})
+        return {str(tr.get("type", "scatter")) for tr in self._raw_data}
 
     def add_raw(self, traces: list[dict]) -> list[int]:
         """Append traces; returns their indices (for animation frames)."""
@@ -62,30 +57,31 @@ class RawFigure(go.Figure):
         return list(range(start, len(self._raw_data)))
 
     def to_dict(self) -> dict:
-        spec = super().to_dict()
-        spec["data"] = self._raw_data
-        spec["layout"] = _merge(_merge({}, self._raw_layout), spec.get("layout", {}))
-        spec["layout"].pop("template", None)
+        """The figure as Plotly's dict: data, a copy of the layout, frames if any."""
+        layout = _merge({}, self._raw_layout)
+        layout.pop("template", None)
+        spec = {"data": self._raw_data, "layout": layout}
         if self._raw_frames:
             spec["frames"] = self._raw_frames
         return spec
 
+    to_plotly_json = to_dict  # what plotly.io (to_json, write_image) asks of a figure
+
     def raw_dict(self) -> dict:
-        """Data and layout as added, without the validated layout (no template, no deep
-        copy): for the crank frames of ui/crank.py, about 2 ms cheaper a figure than
-        ``to_dict``; their base figure is drawn from the full one first."""
+        """Data and layout as added, without copying the layout: for the crank frames of
+        ui/crank.py, whose base figure is drawn from the full one first."""
         return {"data": self._raw_data, "layout": self._raw_layout}
 
     def freeze(self) -> RawFigure:
         """Serialise the figure now, once: for a figure cached and shared across reruns,
         which is never changed again. ``json()`` then returns that text (serialising the
         trajectories page's construction took 5 ms of each of its reruns)."""
-        self._frozen = pio.to_json(self, validate=False)
+        self._frozen = to_json_plotly(self.to_dict())
         return self
 
     def json(self) -> str:
         """The figure as Plotly's JSON (made once if the figure is frozen)."""
-        return self._frozen if self._frozen is not None else pio.to_json(self, validate=False)
+        return self._frozen if self._frozen is not None else to_json_plotly(self.to_dict())
 
     def add_frames(self, frames: list[dict]) -> None:
         """Animation frames as plain dicts: ``{"name", "data", "traces"}``."""

@@ -20,7 +20,7 @@ from solvers.diagnostics import (
 from solvers.kinematics import Motion, solve
 from solvers.structure import StructureError, decompose, degrees_of_freedom
 from ui.benchmarks import speed_panel
-from ui.cache import BY_REPR, instant, page_cache
+from ui.cache import BY_REPR, instant, page_cache, same_call
 from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
@@ -40,6 +40,7 @@ page_title("pages/assur_groups.py")
 CYCLE = 360
 
 
+@same_call
 @page_cache(st.cache_resource(max_entries=32, show_spinner=False, hash_funcs=BY_REPR))
 def cycle(scene: Scene, tol: float) -> Motion:
     """A survey of the driver (``CYCLE`` positions)."""
@@ -175,8 +176,7 @@ with controls:
     bound_link("tol", t("assur.tol"), options=tolerances)
     tol = st.select_slider(t("assur.tol"), options=tolerances,
                            key="tol", format_func=lambda v: sci(v, 0), bind="query-params")
-    download = st.container()
-    answers = st.container()
+    below = st.container()  # the scene's download, then the answer box
 
 with main:  # the structure, which φ₂ does not change
     st.caption(title_of(base))
@@ -202,37 +202,38 @@ def at_the_instant(base: Scene, tol: float, upto: int) -> None:
     reruns alone: not app.py, the scene picker, the tolerance and the structure above,
     which rerun the page and this with it. Its places outside are written on every run (a
     fragment may only write where it wrote in the page's last full run)."""
-    scene, asked, answer_slot = at_position(Places(position, download, answers), base)
-    with groups_place:
-        groups_slot = st.empty()
+    scene, asked, answer_slot = at_position(Places(position, below), base)
+    with groups_place:  # written on every run, filled when the table is shown
+        groups_slot = st.container()
     try:
         current, problem = instant(scene, tol), None
     except (Unsolvable, StructureError) as exc:
         current, problem = None, exc
     if problem or not first_run():  # on a fresh visit, after the drawing (ui/firstpaint.py)
-        with groups_slot.container():
+        with groups_slot:
             show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
-    with main:
-        if problem:
-            st.error(t("plans.unsolvable", reason=message(problem)))
-            return
-        surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
-        survey = cycle(surveyed, tol)
-        values = task_turn(base)
-        frames = cranks(scene, ("structure",), "structure", values, lambda: turn_frames(
-            surveyed, values, tol, upto, current_language(), look()), asked)
-        chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
-              f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
-        for issue in survey.issues:
-            ranges = message(format_ranges(scene, issue.ranges))
-            key = "assur.open" if issue.problem == "open" else "assur.near_singular"
-            st.warning(t(key, group=issue.group, ranges=ranges))
-        if waiting():
-            return
-        about_the_survey(base, scene, current, survey, tol)
-        speed_panel("assur_groups", base.id, ("newton",))
-    with answer_slot.container():
+    if problem:
+        st.error(t("plans.unsolvable", reason=message(problem)))
+        return
+    surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
+    survey = cycle(surveyed, tol)
+    values = task_turn(base)
+    frames = cranks(scene, ("structure",), "structure", values, lambda: turn_frames(
+        surveyed, values, tol, upto, current_language(), look()), asked)
+    chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
+          f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
+    for issue in survey.issues:
+        ranges = message(format_ranges(scene, issue.ranges))
+        key = "assur.open" if issue.problem == "open" else "assur.near_singular"
+        st.warning(t(key, group=issue.group, ranges=ranges))
+    if waiting():
+        return
+    about_the_survey(base, scene, current, survey, tol)
+    with answer_slot:
         answer_box(self_check(scene, structure, current), key="self")
 
 
-at_the_instant(base, tol, upto)
+with main:  # the fragment's own place: what it writes here needs no block of its own
+    at_the_instant(base, tol, upto)
+    if not waiting():  # (φ₂ does not change it: outside the fragment, its runs do not send it)
+        speed_panel("assur_groups", base.id, ("newton",))

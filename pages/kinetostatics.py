@@ -24,7 +24,7 @@ from solvers.structure import StructureError
 from ui import practice
 from ui.benchmarks import speed_panel
 from ui.book import book_section
-from ui.cache import BY_REPR, instant, page_cache
+from ui.cache import BY_REPR, instant, page_cache, same_call
 from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
@@ -52,6 +52,7 @@ def over_cycle(scene: Scene, steps: int, inertia: bool) -> Kinetostatics:
     return analyse(scene, sweep_values(scene, steps), inertia=inertia)
 
 
+@same_call
 @page_cache(st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR))
 def at_instant(scene: Scene, inertia: bool) -> Kinetostatics:
     """The scene's own instant alone (the same numbers as that position of a survey), from
@@ -349,8 +350,7 @@ with controls:
     bound_link("steps", t("forces.steps"), options=list(RESOLUTIONS))
     steps = st.select_slider(t("forces.steps"), options=RESOLUTIONS, key="steps",
                              bind="query-params")
-    download = st.container()
-    answers = st.container()
+    below = st.container()  # the scene's download, then the answer box
 
 
 @fragment
@@ -359,24 +359,23 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
     the fifteen or so load inputs above, a quarter of the page's rerun): its slider, the
     charts, tables and answers at that instant, the cycle's tab (its marker). A load, ω₂ or
     the scene rerun the page, and this with it."""
-    scene, asked, answer_slot = at_position(Places(position, download, answers), loaded)
+    scene, asked, answer_slot = at_position(Places(position, below), loaded)
 
-    with main:
-        st.caption(title_of(scene))
-        if not has_loads(scene):
-            st.info(t("forces.no_loads"))
-        try:
-            instant(scene)  # raises with the reason when the mechanism cannot be in this position
-            k = at_instant(scene, st.session_state["inertia"])
-        except (Unsolvable, StructureError) as exc:
-            st.error(t("plans.unsolvable", reason=message(exc)))
-            st.stop()
-        now = 0  # k holds the instant only
-        if not np.isfinite(k.driving[now]):
-            st.warning(t("forces.singular"))
-        results = st.container()  # the driving torque: filled below, unless the student practises
-        tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_steps"),
-                        t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
+    st.caption(title_of(scene))
+    if not has_loads(scene):
+        st.info(t("forces.no_loads"))
+    try:
+        instant(scene)  # raises with the reason when the mechanism cannot be in this position
+        k = at_instant(scene, st.session_state["inertia"])
+    except (Unsolvable, StructureError) as exc:
+        st.error(t("plans.unsolvable", reason=message(exc)))
+        st.stop()
+    now = 0  # k holds the instant only
+    if not np.isfinite(k.driving[now]):
+        st.warning(t("forces.singular"))
+    results = st.container()  # the driving torque: filled below, unless the student practises
+    tabs = st.tabs([t("forces.tab_loads"), t("forces.tab_polygons"), t("forces.tab_steps"),
+                    t("forces.tab_lever"), t("forces.tab_cycle")], key="tab", on_change="rerun")
 
 
     rotating = scene.driver.kind == "rotating"
@@ -436,12 +435,12 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
 
     if not waiting():
         if scene.book:
-            with main:
-                book_section(scene, base, task_values(base))
-        with answer_slot.container():  # M_p or F_p, P, |F_pq|, parts (exams.judged), as the page counts inertia
+            book_section(scene, base, task_values(base))
+        with answer_slot:  # M_p or F_p, P, |F_pq|, parts (exams.judged), as the page counts inertia
             answer_box(lambda: named(scene.with_loads(inertia=st.session_state["inertia"]), base), key="self")
-        with main:
-            speed_panel("kinetostatics", scene.id, ("kinetostatics",))
 
 
-at_the_instant(loaded, steps)
+with main:  # the fragment's own place: what it writes here needs no block of its own
+    at_the_instant(loaded, steps)
+    if not waiting():  # (φ₂ does not change it: outside the fragment, its runs do not send it)
+        speed_panel("kinetostatics", loaded.id, ("kinetostatics",))

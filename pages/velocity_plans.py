@@ -21,7 +21,7 @@ from solvers.structure import StructureError
 from ui import practice
 from ui.benchmarks import speed_panel
 from ui.book import book_section
-from ui.cache import BY_REPR, instant, page_cache
+from ui.cache import BY_REPR, instant, page_cache, same_call
 from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
@@ -48,6 +48,7 @@ def root_words() -> dict[str, str]:
             "drawn": t("plans.root_drawn"), "other": t("plans.root_other")}
 
 
+@same_call
 @page_cache(st.cache_resource(max_entries=64, show_spinner=False, hash_funcs=BY_REPR))
 def solved_plans(scene: Scene) -> Plans:
     """Both plans at the scene's instant."""
@@ -224,44 +225,41 @@ with controls:
     position = st.container()  # φ₂ (or s): drawn by the fragment below
     driven = driver_speed(base)
     scales = scale_inputs()
-    download = st.container()
-    answers = st.container()
+    below = st.container()  # the scene's download, then the answer box
 
 
 @fragment
 def at_the_instant(driven: Scene, scales: dict[str, float]) -> None:
     """Everything that depends on φ₂, which moving φ₂ (or the step, or a chart's own φ₂
     control) reruns alone: not app.py, the scene picker, ω₂ and the scales (a fifth of the
-    page's rerun). Any of those reruns the page, and this with it. A fragment may only write
-    where it wrote in the page's last full run, so the answer box's place is written on
-    every run (ui/firstpaint.py leaves the box out of a first run)."""
-    scene, asked, answer_slot = at_position(Places(position, download, answers), driven)
+    page's rerun). Any of those reruns the page, and this with it. It runs in the main
+    column; a fragment may only write outside it where it wrote in the page's last full run,
+    so the answer box's place is written on every run (ui/firstpaint.py leaves the box out
+    of a first run)."""
+    scene, asked, answer_slot = at_position(Places(position, below), driven)
     try:
         plans = solved_plans(scene)
     except Unsolvable as exc:
-        with main:
-            st.error(t("plans.unsolvable", reason=message(exc)))
+        st.error(t("plans.unsolvable", reason=message(exc)))
         return
     except StructureError:  # a class III group without its special point S at this instant
-        with main:
-            group = next(g for g in instant(scene).structure.groups if g.cls == 3)
-            st.info(t("plans.not_drawn", group=group.label()))
-            st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
+        group = next(g for g in instant(scene).structure.groups if g.cls == 3)
+        st.info(t("plans.not_drawn", group=group.label()))
+        st.page_link("pages/assur_groups.py", label=t("plans.to_assur"))
         return
 
     steps = plans.velocity.steps
-    with main:
-        st.caption(title_of(scene))
-        if st.session_state.get("step", 0) > len(steps):
-            st.session_state["step"] = len(steps)
-        step = len(steps)
-        if len(steps) > 1:  # a crank alone has one step and nothing to step through
-            bound_link("step", t("plans.step"), 1, len(steps), options=list(range(1, len(steps) + 1)))
-            step = st.slider(t("plans.step"), 1, len(steps), value=len(steps), key="step",
-                             bind="query-params")
-        tab_plans, tab_loops, tab_accuracy = st.tabs(
-            [t("plans.tab_plans"), t("plans.tab_analytic"), t("plans.tab_accuracy")],
-            key="tab", on_change="rerun")
+    st.caption(title_of(scene))
+    if st.session_state.get("step", 0) > len(steps):
+        st.session_state["step"] = len(steps)
+    step = len(steps)
+    if len(steps) > 1:  # a crank alone has one step and nothing to step through
+        bound_link("step", t("plans.step"), 1, len(steps), options=list(range(1, len(steps) + 1)))
+        step = st.slider(t("plans.step"), 1, len(steps), value=len(steps), key="step",
+                         bind="query-params")
+    tab_plans, tab_loops, tab_accuracy = st.tabs(
+        [t("plans.tab_plans"), t("plans.tab_analytic"), t("plans.tab_accuracy")],
+        key="tab", on_change="rerun")
     if tab_plans.open:
         with tab_plans:
             if practice.toggle("pr_plans"):
@@ -277,10 +275,11 @@ def at_the_instant(driven: Scene, scales: dict[str, float]) -> None:
         with tab_accuracy:
             accuracy_tab(scene, base, values, scales["precision_cm"])
     if not waiting():
-        with answer_slot.container():  # signed ω, ε and the task's tolerances (exams.judged)
+        with answer_slot:  # signed ω, ε and the task's tolerances (exams.judged)
             answer_box(lambda: named(scene, base), key="self")
-        with main:
-            speed_panel("velocity_plans", scene.id, ("kinematics", "graphical"))
 
 
-at_the_instant(driven, scales)
+with main:  # the fragment's own place: what it writes here needs no block of its own
+    at_the_instant(driven, scales)
+    if not waiting():  # (φ₂ does not change it: outside the fragment, its runs do not send it)
+        speed_panel("velocity_plans", base.id, ("kinematics", "graphical"))

@@ -1,5 +1,6 @@
-"""What a rerun no longer redoes (issue 38): tables handed to Streamlit as Arrow made from
-their rows, page caches applied once, frozen figures serialised once."""
+"""What a rerun no longer redoes (issues 38 and 70): tables handed to Streamlit as Arrow made
+from their rows, page caches applied once, a cache asked once for the same arguments,
+frozen figures serialised once."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ from streamlit.testing.v1 import AppTest
 
 from figures.linkage import scatter
 from figures.raw import RawFigure
-from ui.cache import page_cache
+from ui.cache import page_cache, same_call
 
 
 def shown(rows, language: str = "en") -> pd.DataFrame:
@@ -76,6 +77,35 @@ def test_a_page_cache_is_applied_once_per_code_and_anew_for_new_code():
     exec(compile("def add(x):\n    return x - 1", "<string>", "exec"), again := {})
     assert page_cache(decorator)(again["add"]) is page_cache(decorator)(namespace["add"])
     assert len(applied) == 2  # the same page compiled again: the same wrapper, none added
+
+
+def test_the_same_call_again_is_answered_without_asking_the_cache_and_an_equal_one_asks():
+    asked = []
+
+    @same_call
+    def solved(scene, tol=1e-9):
+        asked.append((scene, tol))
+        if scene[0] == "bad":
+            raise ValueError("unsolvable")
+        return [scene]
+
+    def made(at: str = "30"):  # a new object each time, as each run makes its scene
+        return ("four-bar", float(at))
+
+    scene = made()
+    first = solved(scene)
+    assert solved(scene) is first and len(asked) == 1    # the same object: not asked
+    assert solved(made()) == first and len(asked) == 2   # equal, another object: asked
+    assert solved(made("31")) != first and len(asked) == 3
+    tol = float("1e-6")
+    assert solved(scene, tol=tol) and solved(scene, tol) and len(asked) == 5  # other arguments
+    bad = ("bad", float("0"))
+    for _ in range(2):  # an exception is not kept: asked again, raised again
+        try:
+            solved(bad)
+        except ValueError:
+            pass
+    assert len(asked) == 7
 
 
 def test_a_frozen_figure_keeps_the_json_it_was_frozen_with():

@@ -40,23 +40,22 @@ def fragment(func: F) -> F:
 
 class Places(NamedTuple):
     """Where a φ₂ fragment writes in the controls column, made by the page's full run: the
-    position slider's place (above the page's other controls), the scene download's and the
-    answer box's (under them)."""
+    position slider's place (above the page's other controls), and the place under them that
+    holds the scene's download and then the answer box. One place for both, not one each:
+    each outside place a fragment writes to costs a block of its own on every run."""
     position: DeltaGenerator
-    download: DeltaGenerator
-    answers: DeltaGenerator
+    below: DeltaGenerator
 
 
 def at_position(places: Places, base: Scene) -> tuple[Scene, bool, DeltaGenerator]:
     """How every φ₂ fragment starts: the φ₂ (or s) slider and the scene there, its download,
     whether a chart's own φ₂ control asked for the frames (``ui.crank.live``), and the answer
-    box's place. Each place is written on every run: a fragment may only write where it
-    wrote in the page's last full run (and a first run leaves the box out)."""
+    box's place (``places.below``, under the download). Both places are written on every
+    run, as a fragment must write where it wrote in the page's last full run: a first run
+    that leaves the answer box out still writes the download there."""
     asked = live()
     with places.position:
         scene = driver_position(base)
-    with places.download:
+    with places.below:
         scene_download(scene)
-    with places.answers:
-        answer = st.empty()
-    return scene, asked, answer
+    return scene, asked, places.below
