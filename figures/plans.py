@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import lru_cache
 
 from methods.plans import POLE, Arrow, Plan, Plans
 from solvers.kinematics import Motion
@@ -46,6 +47,7 @@ class PlanDrawing:
 TEX = {"\\omega": "ω", "\\varepsilon": "ε", "\\cdot": "·"}  # LaTeX commands as plain characters
 
 
+@lru_cache(maxsize=1024)  # a plan names the same few vectors in every rerun
 def _parts(symbol: str) -> tuple[str, str, str]:
     """``a^n_{C_{4}B}`` → ("a", "n", "C4B"); ``b4`` → ("b", "", "4"); ``\\omega_{4}`` → ("ω", "", "4")."""
     for tex, letter in TEX.items():

@@ -16,24 +16,24 @@ template given anyway is dropped.
 
 from __future__ import annotations
 
-import copy
-
 from plotly.io.json import to_json_plotly
 
 # Every figure starts from what Streamlit's own chart theme added (font, left bold title,
 # white paper): the pages draw through ui.plot, without that theme, which cost the browser
 # 0.5–0.9 s a redraw (bench/browser.py). Set here, the look is part of the figure: no chart
 # call has to add it to a figure that may be cached and shared.
-HOUSE = dict(font=dict(family='"Source Sans", "Source Sans Pro", sans-serif'),
-             title=dict(x=0.0, xanchor="left", font=dict(weight="bold")),
-             paper_bgcolor="white")
+def house() -> dict:
+    """The house look, made anew for each figure (a deep copy of a constant cost 0.07 ms)."""
+    return dict(font=dict(family='"Source Sans", "Source Sans Pro", sans-serif'),
+                title=dict(x=0.0, xanchor="left", font=dict(weight="bold")),
+                paper_bgcolor="white")
 
 
 class RawFigure:
     def __init__(self) -> None:
         self._raw_data: list[dict] = []
         self._raw_frames: list[dict] = []
-        self._raw_layout: dict = copy.deepcopy(HOUSE)
+        self._raw_layout: dict = house()
         self._frozen: str | None = None
 
     def merge_layout(self, layout: dict) -> None:

@@ -140,10 +140,10 @@ def driver_inputs(values: dict) -> dict:
     kind = st.radio(t("build.driver_type"), kinds, index=kinds.index(values["type"]),
                     format_func=lambda k: t(DRIVERS[k][0]), horizontal=True, key=f"{key}_type")
     names = DRIVERS[kind][1]
-    cells = st.columns(3)
+    row = st.container(horizontal=True, vertical_alignment="bottom")  # one block, not four (columns)
     return {"type": kind, **{field: number_field(t(label), f"{key}_{field}", float(values[field]),
-                                                 where=cell)
-                             for cell, field, label in zip(cells, ("at", "speed", "accel"), names)}}
+                                                 where=row)
+                             for field, label in zip(("at", "speed", "accel"), names)}}
 
 
 def start_controls() -> None:

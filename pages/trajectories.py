@@ -318,7 +318,7 @@ def resolution_table(base: Scene, scene: Scene, fine: Motion, points: list[str],
     """Under the chart: the paths as CSV; what each resolution costs and misses, in a section
     filled only while open (with it, each new length measured the paths' errors at four
     resolutions and sent the table: a sixth of the step's rerun and its heaviest element in
-    the browser); the speed panel. ``timings``: this run's solve and figure, ms."""
+    the browser). ``timings``: this run's solve and figure, ms."""
     csv_button(lambda: paths_table(fine, points), f"{scene.id}-paths.csv", key="csv",
                label=t("traj.csv_paths"))
     section = st.expander(t("traj.accuracy_title"), key="accuracy_open", on_change="rerun")
@@ -332,7 +332,6 @@ def resolution_table(base: Scene, scene: Scene, fine: Motion, points: list[str],
             show_table(rows, f"{scene.id}-resolution.csv", "csv_resolution")
             st.caption(t("traj.timing", solve=num(timings[0], 3), figure=num(timings[1], 3),
                          steps=steps))
-    speed_panel("trajectories", scene.id, ("kinematics", "differences", "peers"))
 
 
 with controls:
@@ -372,18 +371,16 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
         construction = cycle(scene, 12)
         fine = cycle(scene, steps, order=1)
     except (Unsolvable, StructureError) as exc:  # lengths a class III group cannot close with
-        with main:
-            st.error(t("traj.unbuildable", reason=message(exc)))
+        st.error(t("traj.unbuildable", reason=message(exc)))
         return
     solve_ms = (time.perf_counter() - started) * 1e3
 
-    with main:
-        for zone in zones(scene.with_(speed=1.0)):
-            where = message(format_ranges(scene, zone.ranges))
-            st.warning(t("traj.dead_zone", group=zone.group, where=where))
-        tabs = [t("traj.tab_paths"), t("traj.tab_animation")]
-        tabs += [t("traj.tab_field")] if scene.travel else []
-        tab_paths, tab_anim, *tab_field = st.tabs(tabs, key="tab", on_change="rerun")
+    for zone in zones(scene.with_(speed=1.0)):
+        where = message(format_ranges(scene, zone.ranges))
+        st.warning(t("traj.dead_zone", group=zone.group, where=where))
+    tabs = [t("traj.tab_paths"), t("traj.tab_animation")]
+    tabs += [t("traj.tab_field")] if scene.travel else []
+    tab_paths, tab_anim, *tab_field = st.tabs(tabs, key="tab", on_change="rerun")
     figure_ms = 0.0
     if tab_paths.open:
         with tab_paths:
@@ -400,10 +397,12 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
     if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)
         with geometry:
             readouts(scene, fine, points)
-        with main:
-            if base.book:  # task 1.3's travel: book vs exact, or what the student changed
-                book_section(scene, base, {k: v for k, v in defaults(base).items() if k != "points"})
-            resolution_table(base, scene, fine, points, steps, (solve_ms, figure_ms))
+        if base.book:  # task 1.3's travel: book vs exact, or what the student changed
+            book_section(scene, base, {k: v for k, v in defaults(base).items() if k != "points"})
+        resolution_table(base, scene, fine, points, steps, (solve_ms, figure_ms))
 
 
-drawn(base, steps, view, points)
+with main:  # the fragment's own place: what it writes here needs no block of its own
+    drawn(base, steps, view, points)
+    if not waiting():  # (ω₂ and the lengths do not change it: its runs do not send it)
+        speed_panel("trajectories", base.id, ("kinematics", "differences", "peers"))

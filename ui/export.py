@@ -34,7 +34,7 @@ def csv_button(table: Table | Callable[[], Table], filename: str, key: str,
 def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
           crank: Crank | None = None, handle: str | None = None, focus: str | None = None):
     """A Plotly chart whose toolbar saves it as SVG (to print) or PNG, and shows it full screen.
-    Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.HOUSE).
+    Redrawn in place between reruns (ui.plot), in the figure's own look (figures.raw.house).
     ``editable``: its shapes drag and its paper clicks (ui.plot.plot), read from the result.
     ``crank``: its own φ₂ control (ui.crank); letting go of it sets the page's φ₂ (``at``),
     or the quantity the control moves (``crank.key``). ``handle`` and ``focus``: a shape
