@@ -233,9 +233,9 @@ def _typing(step: Step, key: str, state: dict) -> None:
     else:
         fields = {"value": t("practice.value", unit=unit)}
     with st.form(f"{key}_form_{step.id}", border=False):
-        cols = st.columns(len(fields))
-        values = [number_field(label, f"{key}_{name}_{step.id}", optional=True, where=col)
-                  for col, (name, label) in zip(cols, fields.items())]
+        row = st.container(horizontal=True, vertical_alignment="bottom")  # one block, not three
+        values = [number_field(label, f"{key}_{name}_{step.id}", optional=True, where=row)
+                  for name, label in fields.items()]
         if not st.form_submit_button(t("practice.check"), icon=":material/check:"):
             return
         if step.kind == "vector" and values[0] == 0 and values[1] is None:
