@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pandas as pd
 import plotly.io as pio
+import pytest
 from streamlit.testing.v1 import AppTest
 
 from figures.linkage import scatter
@@ -101,10 +102,8 @@ def test_the_same_call_again_is_answered_without_asking_the_cache_and_an_equal_o
     assert solved(scene, tol=tol) and solved(scene, tol) and len(asked) == 5  # other arguments
     bad = ("bad", float("0"))
     for _ in range(2):  # an exception is not kept: asked again, raised again
-        try:
+        with pytest.raises(ValueError):
             solved(bad)
-        except ValueError:
-            pass
     assert len(asked) == 7
 
 

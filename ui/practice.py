@@ -190,9 +190,11 @@ def _sheet(steps: tuple[Step, ...], index: int, tip: complex | None, title: str,
            look_: Look, revision: str) -> RawFigure:
     """The sheet of a step, shared by every session that shows it alike (steps are frozen:
     equal steps, the same sheet): a class opening its first step draws it once, not once a
-    student. Never changed once made (ui.plot only reads it)."""
+    student. Never changed once made (ui.plot only reads it), so frozen: its JSON is made
+    once too, not at each opening and check that shows it."""
     return practice_figure(list(steps), index, tip, title,
-                           lambda key, **values: t(key, language, **values), look_, revision)
+                           lambda key, **values: t(key, language, **values), look_,
+                           revision).freeze()
 
 
 def _dragged(step: Step, key: str, state: dict) -> None:
