@@ -20,6 +20,7 @@ import secrets
 import threading
 import time
 import uuid
+from collections.abc import Mapping
 from dataclasses import dataclass
 from datetime import UTC, datetime, timedelta
 from functools import cache, wraps
@@ -334,20 +335,40 @@ def seated(code: str, token: str, url: str | None = None) -> tuple[Class, dict]:
 @_reachable
 def resume(code: str, token: str, url: str | None = None) -> tuple[Class, dict, list[dict]]:
     """The class, the student and their checks oldest first (``tries``): what a seated
-    page comes back with, in two statements on one connection."""
+    page opens with, in one statement (a class opening its pages at once waits on every
+    round trip of every opening, issue 70)."""
+    code = _code(code)
     with _autocommit(url) as db:
-        found, who = _seated(db, _code(code), token)
-        return found, who, _tries(db, token)
+        rows = db.execute(
+            sa.select(classes, students.c.id.label("token"), students.c.nickname,
+                      students.c.variant.label("seat"),
+                      *(c.label(f"{TRIED}{c.name}") for c in checks.c))
+            .select_from(classes.outerjoin(
+                students, (students.c.class_id == classes.c.id) & (students.c.id == token))
+                .outerjoin(checks, (checks.c.student == students.c.id)
+                           & (checks.c.class_id == classes.c.id)))
+            .where(classes.c.code == code).order_by(checks.c.id)).all()
+    found, who = _seat_of(rows[0] if rows else None, code)
+    tried = [{k.removeprefix(TRIED): v for k, v in r._mapping.items() if k.startswith(TRIED)}
+             for r in rows]
+    return found, who, [_row(t, "") for t in tried if t["id"] is not None]
+
+
+TRIED = "tried_"  # (``resume``: a check's columns beside the class's, named apart)
 
 
 def _seated(db: sa.Connection, code: str, token: str) -> tuple[Class, dict]:
     """The class of ``code`` and its student ``token``, one row: ClassError for either not
     there (the class's own reasons first)."""
-    row = db.execute(
+    return _seat_of(db.execute(
         sa.select(classes, students.c.id.label("token"), students.c.nickname,
                   students.c.variant.label("seat"))
         .outerjoin(students, (students.c.class_id == classes.c.id) & (students.c.id == token))
-        .where(classes.c.code == code)).first()
+        .where(classes.c.code == code)).first(), code)
+
+
+def _seat_of(row, code: str) -> tuple[Class, dict]:
+    """The class and the student of a row read for ``code`` (``_seated``, ``resume``)."""
     found = _class(row, code)
     if row.token is None:
         raise ClassError(Text("class.no_student", code=found.code))
@@ -463,9 +484,20 @@ def tries(code: str, token: str, url: str | None = None) -> list[dict]:
     return resume(code, token, url)[2]
 
 
-def _tries(db: sa.Connection, token: str) -> list[dict]:
-    rows = db.execute(sa.select(checks).where(checks.c.student == token).order_by(checks.c.id)).all()
-    return [_row(r, "") for r in rows]
+@_reachable
+def tries_of(found: Class, token: str, url: str | None = None) -> list[dict]:
+    """The checks of student ``token`` in class ``found`` (as ``seated`` read them before),
+    oldest first, in one statement: a seated page resumes without reading its seat again."""
+    with _autocommit(url) as db:
+        return _tries(db, token, found.id)
+
+
+def _tries(db: sa.Connection, token: str, class_id: int | None = None) -> list[dict]:
+    """The student's checks, oldest first (only those of ``class_id`` when given)."""
+    query = sa.select(checks).where(checks.c.student == token)
+    if class_id is not None:
+        query = query.where(checks.c.class_id == class_id)
+    return [_row(r._mapping, "") for r in db.execute(query.order_by(checks.c.id)).all()]
 
 
 def export(code: str, key: str, url: str | None = None) -> list[dict]:
@@ -483,7 +515,7 @@ def since(found: Class, after: int, url: str | None = None) -> list[dict]:
                           .join(students, students.c.id == checks.c.student)
                           .where(checks.c.class_id == found.id, checks.c.id > after)
                           .order_by(checks.c.id)).all()
-    return [{"id": r.id, **_row(r, r.nickname)} for r in rows]
+    return [{"id": r.id, **_row(r._mapping, r.nickname)} for r in rows]
 
 
 def as_csv(rows: list[dict]) -> str:
@@ -501,11 +533,12 @@ def as_jsonl(rows: list[dict]) -> str:
     return "".join(json.dumps(row, ensure_ascii=False, allow_nan=False) + "\n" for row in rows)
 
 
-def _row(r, nickname: str) -> dict:
-    return {"student": r.student, "nickname": nickname, "step": r.step,
-            "answer": json.loads(r.answer), "diagnosis": r.diagnosis, "term": r.term or "",
-            "try": r._mapping["try"], "time": aware(r.time).isoformat(), "variant": r.variant,
-            "check": r.check_id}
+def _row(r: Mapping, nickname: str) -> dict:
+    """A check as read (a ``checks`` row's columns by name) and as every reader gets it."""
+    return {"student": r["student"], "nickname": nickname, "step": r["step"],
+            "answer": json.loads(r["answer"]), "diagnosis": r["diagnosis"], "term": r["term"] or "",
+            "try": r["try"], "time": aware(r["time"]).isoformat(), "variant": r["variant"],
+            "check": r["check_id"]}
 
 
 @_reachable

@@ -39,7 +39,7 @@ import threading
 from pathlib import Path
 
 import brotli
-from streamlit import config, file_util
+from streamlit import config, delta_generator, file_util
 from streamlit.web import cli
 from streamlit.web.server.starlette import starlette_app
 
@@ -226,16 +226,42 @@ _streamlit_middleware = starlette_app.create_streamlit_middleware
 
 
 def warm() -> None:
-    """Import every module of ``ui`` (and what they import) before the first session: the
-    first sessions of a class arrive at once, each page script in a thread of its own, and
-    two threads importing the same modules in opposite orders met Python's import-deadlock
-    escape, which hands one of them a half-made module ("cannot import name 'boundary' from
-    'ui.boundary'", seen by the class load test's lecturer)."""
-    sys.path.insert(0, str(ROOT))
-    import ui
+    """Before the first session, what a process's first runs would otherwise pay while a
+    class waits behind them (a class opens its pages at once, and each process queues their
+    runs: its first opening took 500 ms, the floor's 250, and every opening in the queue
+    waited that long too; ``kill -9`` and a restart send a whole class back at once):
 
-    for module in pkgutil.iter_modules(ui.__path__):
-        importlib.import_module(f"ui.{module.name}")
+    - every module of the app's packages, imported: the first sessions arrive at once, each
+      page script in a thread of its own, and two threads importing the same modules in
+      opposite orders met Python's import-deadlock escape, which hands one of them a
+      half-made module ("cannot import name 'boundary' from 'ui.boundary'", seen by the
+      class load test's lecturer);
+    - Streamlit's emoji and icon names, which it imports the first time a page's icon is
+      checked (50 ms, most of it compiling one regular expression);
+    - the class store's engine: its driver imported and its schema checked (140 ms with
+      PostgreSQL). A store that does not answer yet is left for the first page that asks
+      (it says so there);
+    - Streamlit's warning for a script run without ``streamlit run``, marked as given: this
+      is ``streamlit run``, and its one check (``env_util.is_repl``) walked every frame of
+      the first run's stack and read their source files, 100 ms."""
+    sys.path.insert(0, str(ROOT))
+    for name in PACKAGES:
+        package = importlib.import_module(name)
+        for module in pkgutil.iter_modules(package.__path__):
+            if module.name != "__main__":  # (a package's command line: not run here)
+                importlib.import_module(f"{name}.{module.name}")
+    delta_generator._use_warning_has_been_displayed = True
+    importlib.import_module("streamlit.emojis")
+    importlib.import_module("streamlit.material_icon_names")
+    from classes import store
+
+    try:
+        store.engine()
+    except Exception as exc:  # noqa: BLE001 (any driver's error: the page says it later)
+        print(f"the class store is not reached yet: {type(exc).__name__}", file=sys.stderr)
+
+
+PACKAGES = ("ui", "figures", "methods", "solvers", "mechanisms", "classes", "exams")
 
 
 def main() -> None:

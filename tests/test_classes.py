@@ -86,6 +86,10 @@ def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
     assert store.record(code, ben, "v.a-b", 3.1, "wrong", store.new_check(), url=url) == 1
     assert [(t["step"], t["diagnosis"], t["try"]) for t in store.tries(code, ana, url=url)] == [
         ("v.a-b", "sense", 1), ("v.a-b", "ok", 2)]
+    found, who, tried = store.resume(code, ana, url=url)  # (one statement: seat and tries joined)
+    assert (found, who) == store.seated(code, ana, url=url)
+    assert tried == store.tries_of(found, ana, url=url) and tried[1]["check"] == right
+    assert store.resume(code, store.join(code, url=url), url=url)[2] == []  # no try yet
     rows = store.export(code, key, url=url)
     assert len(rows) == 3 and set(rows[0]) == set(store.FIELDS) and rows[1]["check"] == right
     assert {r["nickname"] for r in rows} == {"Ana", "student 2"}
@@ -190,6 +194,7 @@ def test_wrong_codes_keys_and_students_are_refused_in_words(url):
     cases = [(lambda: store.find("ABCDEF" if code != "ABCDEF" else "ACDEFH", url=url), "no_code"),
              (lambda: store.export(code, key + "x", url=url), "wrong_key"),
              (lambda: store.record(code, stranger, "v.b", 1.0, "ok", store.new_check(), url=url), "no_student"),
+             (lambda: store.resume(code, stranger, url=url), "no_student"),
              (lambda: store.create("zbirka-3.1", "dance", url=url), "no_method")]
     for call, said in cases:
         with pytest.raises(store.ClassError) as refused:

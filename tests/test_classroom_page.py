@@ -10,6 +10,7 @@ import cmath
 import math
 
 import pytest
+import sqlalchemy as sa
 
 from classes import store
 from cli.practice import steps_for
@@ -156,6 +157,31 @@ def test_a_seat_read_on_another_page_first_still_opens_where_the_store_says():
     at.run()
     assert not at.exception
     assert _prompt(at).startswith(f"Step 2 of {len(steps)}")
+
+
+def test_a_seated_page_opens_on_one_statement_and_where_the_store_says():
+    """A student's link opened (another phone has done step 1): the page asks the store one
+    statement — the class, the student and their tries together; a class opening its pages
+    at once waits on every round trip of every opening (issue 70) — and opens at step 2."""
+    code, key = store.create("zbirka-3.1", "plans")
+    token = store.join(code, "Ana")
+    steps = steps_for(load_preset("zbirka-3.1"), "plans")
+    _check(_seated(code, token), steps[0], steps[0].expected)  # the other phone
+    at = page("pages/velocity_plans.py", lang="en", scene="zbirka-3.1")
+    at.query_params.update({"class": code, "student": token})
+    statements = []
+
+    def asked(_connection, _cursor, statement, *_rest) -> None:
+        statements.append(statement)
+
+    sa.event.listen(store.engine(), "before_cursor_execute", asked)
+    try:
+        at.run()
+    finally:
+        sa.event.remove(store.engine(), "before_cursor_execute", asked)
+    assert not at.exception
+    assert _prompt(at).startswith(f"Step 2 of {len(steps)}")
+    assert len(statements) == 1, statements
 
 
 def test_a_check_the_store_cannot_take_shows_no_verdict(monkeypatch):

@@ -8,13 +8,20 @@ from __future__ import annotations
 import asyncio
 import asyncio.base_events
 import gzip
+import os
 import socket
+import subprocess
+import sys
 import time
+from pathlib import Path
 
 import brotli
+from streamlit import delta_generator
 from streamlit.runtime.scriptrunner.script_runner import ScriptRunner
 
 from scripts import serve
+
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def accepted_nodelay() -> int:
@@ -45,9 +52,13 @@ def test_without_the_launcher_such_connections_keep_nagle_s_algorithm():
     assert accepted_nodelay() == 0
 
 
-def launch(monkeypatch) -> list:
+def launch(monkeypatch, tmp_path) -> list:
     """scripts/serve.py's main with Streamlit's own left out, every global it patches put
-    back after the test; the arguments it would have handed to ``streamlit run``."""
+    back after the test, its store in ``tmp_path``; the arguments it would have handed to
+    ``streamlit run``."""
+    monkeypatch.setenv("MEHANIZMI_DATABASE_URL", f"sqlite:///{tmp_path / 'class.db'}")
+    monkeypatch.setattr(delta_generator, "_use_warning_has_been_displayed",
+                        delta_generator._use_warning_has_been_displayed)
     monkeypatch.setattr(asyncio.base_events, "_set_nodelay", asyncio.base_events._set_nodelay)
     monkeypatch.setattr(serve.starlette_app, "create_streamlit_middleware",
                         serve.starlette_app.create_streamlit_middleware)
@@ -59,15 +70,46 @@ def launch(monkeypatch) -> list:
     return started
 
 
-def test_the_launcher_turns_nagle_s_algorithm_off_on_every_accepted_connection(monkeypatch):
-    assert launch(monkeypatch) == [["streamlit", "run", "app.py", "--server.port", "8999"]]
+def test_the_launcher_turns_nagle_s_algorithm_off_on_every_accepted_connection(monkeypatch, tmp_path):
+    assert launch(monkeypatch, tmp_path) == [["streamlit", "run", "app.py", "--server.port", "8999"]]
     assert accepted_nodelay() == 1
 
 
-def test_the_launcher_makes_every_script_run_take_turns(monkeypatch):
+def test_the_launcher_warms_what_a_process_s_first_runs_would_pay(monkeypatch, tmp_path):
+    """Before it serves: the app's modules and Streamlit's emoji and icon names imported,
+    the store's engine made (its schema there), Streamlit's direct-execution warning taken
+    as given (its check read the source of every frame of the first run's stack)."""
+    launch(monkeypatch, tmp_path)
+    assert (tmp_path / "class.db").exists()
+    assert delta_generator._use_warning_has_been_displayed
+    wanted = ["ui.practice", "figures.plans", "methods.progress", "solvers.kinematics",
+              "mechanisms.loader", "classes.store", "exams.judged", "streamlit.emojis",
+              "streamlit.material_icon_names", "solvers.__main__"]
+    imported = subprocess.run(  # (a process of its own: this one has imported most already)
+        [sys.executable, "-c", "import sys; from scripts import serve; serve.warm(); "
+         f"print([m in sys.modules for m in {wanted!r}])"],
+        cwd=ROOT, capture_output=True, text=True, timeout=120, check=True,
+        env={**os.environ, "MEHANIZMI_DATABASE_URL": f"sqlite:///{tmp_path / 'fresh.db'}"})
+    assert imported.stdout.strip() == str([True] * (len(wanted) - 1) + [False])  # (no command line run)
+
+
+def test_a_store_not_reached_yet_does_not_stop_the_server(monkeypatch, capsys):
+    monkeypatch.setattr(serve, "PACKAGES", ())
+    monkeypatch.setattr(delta_generator, "_use_warning_has_been_displayed",
+                        delta_generator._use_warning_has_been_displayed)
+
+    def down(*_args):
+        raise ConnectionRefusedError("no server on that socket")
+
+    monkeypatch.setattr("classes.store.engine", down)
+    serve.warm()
+    assert "the class store is not reached yet: ConnectionRefusedError" in capsys.readouterr().err
+
+
+def test_the_launcher_makes_every_script_run_take_turns(monkeypatch, tmp_path):
     """scripts/turns.py, tested on its own in tests/test_turns.py."""
     original = ScriptRunner._run_script
-    launch(monkeypatch)
+    launch(monkeypatch, tmp_path)
     assert ScriptRunner._run_script is not original
     assert ScriptRunner._run_script.__wrapped__ is original
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 import dataclasses
 
 import streamlit as st
+from streamlit.runtime.scriptrunner import get_script_run_ctx
 
 from classes import store
 from classes.store import ClassError, NotSaved, OneTry, StoreDown
@@ -70,22 +71,44 @@ DOWN = "down"  # a seat's "why not" while the store cannot be reached (asked aga
 
 def _seat() -> tuple | None:
     """(code, token, the method's practice key, why not, (class, student)) for the link's
-    class and student, read from the store in one statement once per session and link."""
+    class and student, read from the store once per session and link — with the student's
+    tries, in one statement: the page that opens with it resumes their practice from them
+    in this same run (``resumed``), and reads nothing more."""
     code, token = st.query_params.get("class"), st.query_params.get("student")
     if not code or not token:
         return None
     memo = st.session_state.get("_class_seat")
     if memo is None or memo[:2] != (code, token):
         try:
-            found, who = store.seated(code, token)
+            found, who, checks = store.resume(code, token)
         except StoreDown:  # asked again on the next run, not kept
             return (code, token, None, DOWN, None)
         except ClassError as exc:
             memo = (code, token, None, message(exc.args[0]), None)
         else:
             memo = (code, token, METHODS[found.method][1], "", (found, who))
+            st.session_state[TRIES] = ((code, token), _this_run(), checks)
         st.session_state["_class_seat"] = memo
     return memo
+
+
+TRIES = "_class_tries"  # (seat, run, checks): the tries the seat was read with, and in which run
+
+
+def _tries_read(seated: tuple[str, str]) -> list[dict] | None:
+    """The student's tries as the seat read them, if it did in this very run (taken once:
+    any later run reads them again, another device may have added to them since)."""
+    kept = st.session_state.pop(TRIES, None)
+    fresh = kept is not None and kept[0] == seated and kept[1] is not None and kept[1] is _this_run()
+    return kept[2] if fresh else None
+
+
+def _this_run() -> object | None:
+    """An object of this run of the script alone (None outside a run): Streamlit makes its
+    running cursors anew at every run's start, a page's or a fragment's. (A page run
+    without app.py, as a test switches pages, is still a run of its own.)"""
+    ctx = get_script_run_ctx(suppress_warning=True)
+    return None if ctx is None else ctx.cursors
 
 
 def _known(seated: tuple[str, str]) -> tuple[store.Class, dict] | None:
@@ -114,8 +137,13 @@ def resumed(seated: tuple[str, str], steps: list[Step], rules: Rules | None = No
     A store that cannot be reached stops the page with the reason (nothing is started afresh
     that would hide what the store holds) until it answers."""
     known = {s.id for s in steps}
+    seat = _known(seated)  # (the session read the class and the student: only the tries now)
     try:
-        found, _, checks = store.resume(*seated)
+        if seat:
+            checks = _tries_read(seated)
+            found, checks = seat[0], store.tries_of(seat[0], seated[1]) if checks is None else checks
+        else:
+            found, _, checks = store.resume(*seated)
     except StoreDown:
         wait_for_store(t("class.store_down"))
         st.stop()
