@@ -52,11 +52,12 @@ def test_without_the_launcher_such_connections_keep_nagle_s_algorithm():
     assert accepted_nodelay() == 0
 
 
-def launch(monkeypatch, tmp_path) -> list:
+def launch(monkeypatch, tmp_path, frozen: list | None = None) -> list:
     """scripts/serve.py's main with Streamlit's own left out, every global it patches put
-    back after the test, its store in ``tmp_path``; the arguments it would have handed to
-    ``streamlit run``."""
+    back after the test, its store in ``tmp_path``, this process's objects not frozen (the
+    calls go to ``frozen``); the arguments it would have handed to ``streamlit run``."""
     monkeypatch.setenv("MEHANIZMI_DATABASE_URL", f"sqlite:///{tmp_path / 'class.db'}")
+    monkeypatch.setattr(serve.gc, "freeze", lambda: (frozen if frozen is not None else []).append(1))
     monkeypatch.setattr(delta_generator, "_use_warning_has_been_displayed",
                         delta_generator._use_warning_has_been_displayed)
     monkeypatch.setattr(asyncio.base_events, "_set_nodelay", asyncio.base_events._set_nodelay)
@@ -78,8 +79,11 @@ def test_the_launcher_turns_nagle_s_algorithm_off_on_every_accepted_connection(m
 def test_the_launcher_warms_what_a_process_s_first_runs_would_pay(monkeypatch, tmp_path):
     """Before it serves: the app's modules and Streamlit's emoji and icon names imported,
     the store's engine made (its schema there), Streamlit's direct-execution warning taken
-    as given (its check read the source of every frame of the first run's stack)."""
-    launch(monkeypatch, tmp_path)
+    as given (its check read the source of every frame of the first run's stack), and all
+    that frozen for the collector."""
+    frozen = []
+    launch(monkeypatch, tmp_path, frozen)
+    assert frozen == [1]
     assert (tmp_path / "class.db").exists()
     assert delta_generator._use_warning_has_been_displayed
     wanted = ["ui.practice", "figures.plans", "methods.progress", "solvers.kinematics",
@@ -102,6 +106,7 @@ def test_a_store_not_reached_yet_does_not_stop_the_server(monkeypatch, capsys):
         raise ConnectionRefusedError("no server on that socket")
 
     monkeypatch.setattr("classes.store.engine", down)
+    monkeypatch.setattr(serve.gc, "freeze", lambda: None)
     serve.warm()
     assert "the class store is not reached yet: ConnectionRefusedError" in capsys.readouterr().err
 
