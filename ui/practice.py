@@ -140,30 +140,31 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
     step = steps[index]
     zero = step.kind == "vector" and abs(complex(step.expected)) <= step.tolerance
     drawn = drawable and step.kind != "scalar" and bool(step.sheet) and not zero
-    with st.container(key=f"{key}_prompt"):  # what a check or a move brings to the screen's top
-        st.markdown(t("practice.step", n=index + 1, of=len(steps), part=t(PARTS[step.kind]))
+    prompt = st.container(key=f"{key}_prompt")  # what a check or a move brings to the screen's top
+    prompt.markdown(t("practice.step", n=index + 1, of=len(steps), part=t(PARTS[step.kind]))
                     + f" ${step.symbol}$ [{shown_unit(step)[0]}]")
-        # a sheet's check scrolls the prompt and this verdict to the top; a typed step's
-        # verdict goes under its Check button instead, where the eyes are (put above it, a
-        # phone's browser kept the button in place and the verdict landed above the screen)
-        verdict = st.container() if drawn else None
     if zero:  # a question to type, not a drag: a tip cannot be left on its tail
         st.info(t("practice.zero_step"), icon=":material/info:")
     sheet = st.container() if drawn else None  # drawn last, where it shows: above the boxes
+    rule = (t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
+            else t("practice.rule_hidden_value" if step.kind == "scalar" else "practice.rule_hidden"))
     if drawn:
         _dragged(step, key, state)  # (before the boxes it fills are drawn)
-        unit, factor = shown_unit(step)
-        st.caption(t("practice.sheet_scale", scale=num(step.scale * factor, 4), unit=unit))
-    st.caption(t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
-               else t("practice.rule_hidden_value" if step.kind == "scalar" else "practice.rule_hidden"))
+        unit, factor = shown_unit(step)  # (the scale and the rule: one element, two lines)
+        rule = t("practice.sheet_scale", scale=num(step.scale * factor, 4), unit=unit) + "  \n" + rule
+    st.caption(rule)
     _typing(step, key, state)
     if drawn:  # after the check: the tip where it now is, its prompt brought to the screen
         with sheet:
             _drawing(steps, index, key, state, progress, title)
-    with verdict or st.container(key=f"{key}_verdict"):
+    # a sheet's check scrolls the prompt and its verdict, written under it, to the top; a
+    # typed step's verdict goes under its Check button instead, where the eyes are (put
+    # above it, a phone's browser kept the button in place and the verdict landed above
+    # the screen)
+    with prompt if drawn else st.container(key=f"{key}_verdict"):
         if not classroom.not_saved():
             _feedback(step, state)
-    if verdict is None and state.get("checked"):  # a typed step's verdict, under the thumb
+    if not drawn and state.get("checked"):  # a typed step's verdict, under the thumb
         into_view(f".st-key-{key}_verdict", state["checked"], f"{key}_in_view")
     _moves(steps, index, key, state)
     if all(progress.done(s) for s in steps) and classroom.verdicts_shown(state):
