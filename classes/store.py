@@ -347,7 +347,7 @@ def resume(code: str, token: str, url: str | None = None) -> tuple[Class, dict, 
 
 
 TRIED = "tried_"  # (``resume``: a check's columns beside the class's, named apart)
-# (built once: made anew at each opening, the statement cost as much as its round trip)
+# (built once: made anew at each opening, building it took a third of the opening's store time)
 _RESUME = (sa.select(classes, students.c.id.label("token"), students.c.nickname,
                      students.c.variant.label("seat"),
                      *(c.label(f"{TRIED}{c.name}") for c in checks.c))
@@ -465,8 +465,9 @@ def _numbered(values: dict, first: bool = False) -> tuple:
 
 @cache
 def _numbering(names: tuple[str, ...], first: bool):
-    """``_numbered``'s statement for the columns ``names``, built once (at every check it
-    cost a third of the store's time in the app)."""
+    """``_numbered``'s statement for the columns ``names``, built once, as ``_RESUME`` is
+    (built anew, the opening's statement took a third of its store time in a class's
+    storm of openings)."""
     value = {k: sa.bindparam(f"v_{k}", type_=checks.c[k].type) for k in names}
     after = (sa.literal(1) if first else
              sa.select(sa.func.coalesce(sa.func.max(checks.c["try"]), 0) + 1)
