@@ -346,27 +346,24 @@ def resume(code: str, token: str, url: str | None = None) -> tuple[Class, dict, 
     return found, who, [_row(t, "") for t in tried if t["id"] is not None]
 
 
-TRIED = "tried_"  # (``resume``: a check's columns beside the class's, named apart)
-# (built once: made anew at each opening, building it took a third of the opening's store time)
-_RESUME = (sa.select(classes, students.c.id.label("token"), students.c.nickname,
-                     students.c.variant.label("seat"),
-                     *(c.label(f"{TRIED}{c.name}") for c in checks.c))
-           .select_from(classes.outerjoin(
-               students, (students.c.class_id == classes.c.id)
-               & (students.c.id == sa.bindparam("token")))
-               .outerjoin(checks, (checks.c.student == students.c.id)
-                          & (checks.c.class_id == classes.c.id)))
-           .where(classes.c.code == sa.bindparam("code")).order_by(checks.c.id))
-
-
 def _seated(db: sa.Connection, code: str, token: str) -> tuple[Class, dict]:
     """The class of ``code`` and its student ``token``, one row: ClassError for either not
     there (the class's own reasons first)."""
-    return _seat_of(db.execute(
-        sa.select(classes, students.c.id.label("token"), students.c.nickname,
-                  students.c.variant.label("seat"))
-        .outerjoin(students, (students.c.class_id == classes.c.id) & (students.c.id == token))
-        .where(classes.c.code == code)).first(), code)
+    return _seat_of(db.execute(_SEATED, {"code": code, "token": token}).first(), code)
+
+
+# The class of :code with its student :token (no student: None in their columns), and, for
+# ``resume``, that student's checks beside them. Built once: made anew at each opening,
+# building the statement took a third of the opening's store time.
+_SEATED = (sa.select(classes, students.c.id.label("token"), students.c.nickname,
+                     students.c.variant.label("seat"))
+           .select_from(classes.outerjoin(students, (students.c.class_id == classes.c.id)
+                                          & (students.c.id == sa.bindparam("token"))))
+           .where(classes.c.code == sa.bindparam("code")))
+TRIED = "tried_"  # (``resume``: a check's columns beside the class's, named apart)
+_RESUME = (_SEATED.add_columns(*(c.label(f"{TRIED}{c.name}") for c in checks.c))
+           .outerjoin(checks, (checks.c.student == students.c.id) & (checks.c.class_id == classes.c.id))
+           .order_by(checks.c.id))
 
 
 def _seat_of(row, code: str) -> tuple[Class, dict]:
@@ -502,15 +499,10 @@ def tries_of(found: Class, token: str, url: str | None = None) -> list[dict]:
     """The checks of student ``token`` in class ``found`` (as ``seated`` read them before),
     oldest first, in one statement: a seated page resumes without reading its seat again."""
     with _autocommit(url) as db:
-        return _tries(db, token, found.id)
-
-
-def _tries(db: sa.Connection, token: str, class_id: int | None = None) -> list[dict]:
-    """The student's checks, oldest first (only those of ``class_id`` when given)."""
-    query = sa.select(checks).where(checks.c.student == token)
-    if class_id is not None:
-        query = query.where(checks.c.class_id == class_id)
-    return [_row(r._mapping, "") for r in db.execute(query.order_by(checks.c.id)).all()]
+        rows = db.execute(sa.select(checks).where(checks.c.student == token,
+                                                  checks.c.class_id == found.id)
+                          .order_by(checks.c.id)).all()
+    return [_row(r._mapping, "") for r in rows]
 
 
 def export(code: str, key: str, url: str | None = None) -> list[dict]:

@@ -140,8 +140,9 @@ def resumed(seated: tuple[str, str], steps: list[Step], rules: Rules | None = No
     seat = _known(seated)  # (the session read the class and the student: only the tries now)
     try:
         if seat:
-            checks = _tries_read(seated)
-            found, checks = seat[0], store.tries_of(seat[0], seated[1]) if checks is None else checks
+            found, checks = seat[0], _tries_read(seated)
+            if checks is None:
+                checks = store.tries_of(found, seated[1])
         else:
             found, _, checks = store.resume(*seated)
     except StoreDown:
