@@ -29,7 +29,7 @@ from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
 from ui.editor_tables import MARK, frame_of, marked, marks, refused, rows_of
 from ui.export import chart
-from ui.firstpaint import waiting
+from ui.firstpaint import first_run, rerun_whole, waiting
 from ui.fragments import fragment
 from ui.i18n import current, latex, message, t, title_of
 from ui.numbers import number_field, refusal
@@ -109,13 +109,16 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
     """The six tables as the user has edited them. Only the open tab's table is sent to the
     browser (six editors doubled the rerun: 49 → 22 ms with one); switching tabs first folds
     the edits into the tables' document (ui.builder.fold). A refused cell is marked in its
-    row (the ⚠ column) and named above the table, where the student types."""
+    row (the ⚠ column) and named above the table, where the student types. On a fresh
+    visit the open tab's editor too waits for the drawing's paint (ui/firstpaint.py): its
+    grid script held the drawing back by a seventh, and nothing is typed in it yet."""
     rows = tables(doc)
     out: dict = {}
     tabs = st.tabs([t(TABS[n][0]) for n in TABLES], key="build_tab", on_change=builder.fold)
     language = current()
+    left_out = first_run()
     for tab, name in zip(tabs, TABLES):
-        if not tab.open:
+        if not tab.open or left_out:
             out[name] = rows[name]
             continue
         with tab:
@@ -328,6 +331,8 @@ def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerato
         if st.session_state.get("build_drag_error"):
             point, to, why = st.session_state.pop("build_drag_error")
             st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=message(why)))
+        if first_run() and not waiting():  # no drawing: no paint will bring the editor left out
+            rerun_whole()
         if not waiting():  # on a fresh visit, after the drawing is painted (ui/firstpaint.py)
             checks(doc, scene, problem, solved, last_doc)
 

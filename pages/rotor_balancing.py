@@ -19,9 +19,9 @@ from ui import practice
 from ui.benchmarks import speed_panel
 from ui.book import differs, rotor_changes
 from ui.chapters import page_title
-from ui.editor_tables import typed_table
+from ui.editor_tables import linked_table, typed_table
 from ui.export import Rows, chart, print_button, show_table
-from ui.firstpaint import waiting
+from ui.firstpaint import first_run, rerun_whole, waiting
 from ui.fragments import fragment
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
@@ -104,19 +104,35 @@ with controls:
     typed["omega"] = number_field(t("rotor.omega"), "omega", minimum=0.1, url=True)
     precision_slot = st.container()  # the drawing's precision: drawn by accuracy() below
 
-with main, st.container(key="later_masses"):  # on a phone, after the polygons (ui/layout.py)
+with main:
+    drawing = st.container()  # the polygons first, beside their controls (filled below)
+with main, st.container(key="masses"):
     st.markdown(f"**{t('rotor.masses')}**")
-    own = table_of(base)
-    table = typed_table("masses", own, base.id, COLUMNS, name=t("rotor.masses_short"),
-                        rows_fixed=False, num_rows="dynamic", width="stretch",
-                        loader=lambda rows: as_loaded(base.with_(masses=masses_of(rows))),
-                        fields=dict(zip(("mass", "radius", "angle", "x"), COLUMNS)))
-    rotor = rotor_from_inputs(base, table, typed)
-    try:
-        result = balance(rotor)
-    except BalanceError as exc:
+    editor = st.container()
+    practising = practice.toggle("pr_balance")
+# a fresh visit: the masses' editor (a grid script, the heaviest element here) after the
+# polygons' paint, which it held back by a fifth (ui/firstpaint.py); the link's table meanwhile
+left_out = first_run() and not practising
+own = table_of(base)
+table_rules = {"name": t("rotor.masses_short"), "rows_fixed": False,
+               "loader": lambda rows: as_loaded(base.with_(masses=masses_of(rows))),
+               "fields": dict(zip(("mass", "radius", "angle", "x"), COLUMNS))}
+if left_out:
+    table = linked_table("masses", own, base.id, **table_rules)
+else:
+    with editor:
+        table = typed_table("masses", own, base.id, COLUMNS, num_rows="dynamic", width="stretch",
+                            **table_rules)
+rotor = rotor_from_inputs(base, table, typed)
+try:
+    result = balance(rotor)
+except BalanceError as exc:
+    if left_out:  # no polygon follows to bring the editor
+        rerun_whole()
+    with main:
         st.error(message(exc))
-        st.stop()
+    st.stop()
+with main:
     for note in result.notes:
         st.info(message(note))
 
@@ -137,10 +153,11 @@ def v_polygon(rotor: Rotor, us: list[complex], found: dict[str, complex]) -> Non
     title = t("rotor.v_title", plane=reference)
     chart(polygon_figure(known, closing, scale, scaled_title(title, scale, "kg·mm²"), legend(),
                          look(), axes=("z", "y")), f"{rotor.id}-V", key="vpoly")
-    caption = t("rotor.svg_caption", scene=rotor.id, polygon=title, scale=num(scale, 4),
-                unit="kg·mm²")
-    print_button(lambda: polygon_svg(known, closing, scale, caption),
-                 f"{rotor.id}-V.svg", key="vsvg")
+    if not waiting():  # (on a fresh visit, after the polygon's paint)
+        caption = t("rotor.svg_caption", scene=rotor.id, polygon=title, scale=num(scale, 4),
+                    unit="kg·mm²")
+        print_button(lambda: polygon_svg(known, closing, scale, caption),
+                     f"{rotor.id}-V.svg", key="vsvg")
 
 
 def results_table(result: Balance, as_in_book: bool) -> Rows:
@@ -164,34 +181,16 @@ def results_table(result: Balance, as_in_book: bool) -> Rows:
 
 
 with main:
-    if practice.toggle("pr_balance"):  # the corrections stay hidden: the student finds them
+    if practising:  # the corrections stay hidden: the student finds them
         practice.panel(practice_steps.balance(result), "pr_balance", t("practice.sheet_rotor"))
         st.stop()  # (app.py still ends the run)
-    with st.container(key="later_results"):  # on a phone, after the polygons (ui/layout.py)
-        st.header(t("rotor.results"))
-        changed = rotor_changes(rotor, base) if base.book else []
-        corrections_table = results_table(result, not changed)
-        show_table(corrections_table, f"{rotor.id}-corrections.csv", "csv")
-        if changed:  # the book's values belong to the task as the book poses it
-            differs(changed, defaults(base), ("masses",))
-        cols = st.columns(2)
-        cols[0].metric(t("rotor.residual_force"), f"{num(result.residual_force * MM, 2)} kg·mm")
-        cols[1].metric(t("rotor.residual_moment"),
-                       f"{num(result.residual_moment * MM**2, 2)} kg·mm²")
-        before, after = result.bearing_forces(False), result.bearing_forces(True)
-        if before:
-            cols = st.columns(4)
-            for i, bearing in enumerate(("A", "B")):
-                cols[i].metric(t("rotor.bearing_before", bearing=bearing),
-                               f"{num(before[bearing], 4)} N")
-                cols[2 + i].metric(t("rotor.bearing_after", bearing=bearing),
-                                   f"{num(after[bearing], 2)} N")
-
+    results = st.container()  # under the table; filled after the polygons are sent
     names = [f"U{i + 1}" for i in range(len(rotor.masses))]
     us = [m.mass * m.radius * unit(m.angle) * MM for m in rotor.masses]  # kg·mm
     found = {p: f.u * MM for p, f in result.corrections.items()}
-    tab_v, tab_u, tab_end, tab_3d = st.tabs([t("rotor.tab_v"), t("rotor.tab_u"), t("rotor.tab_end"),
-                                             t("rotor.tab_3d")], key="tab", on_change="rerun")
+    tab_v, tab_u, tab_end, tab_3d = drawing.tabs([t("rotor.tab_v"), t("rotor.tab_u"),
+                                                  t("rotor.tab_end"), t("rotor.tab_3d")],
+                                                 key="tab", on_change="rerun")
     scale_key = f"UU-{rotor.id}"
     scale_u = last_value(scale_key) or polygon_scale(accumulate(us))
     if tab_u.open:
@@ -201,10 +200,11 @@ with main:
             chart(polygon_figure(known, closing, scale_u,
                                  scaled_title(t("rotor.tab_u"), scale_u, "kg·mm"), legend(),
                                  look(), axes=("z", "y")), f"{rotor.id}-U", key="upoly")
-            caption = t("rotor.svg_caption", scene=rotor.id, polygon=t("rotor.tab_u"),
-                        scale=num(scale_u, 4), unit="kg·mm")
-            print_button(lambda drawn=(known, closing, scale_u, caption): polygon_svg(*drawn),
-                         f"{rotor.id}-U.svg", key="usvg")
+            if not waiting():
+                caption = t("rotor.svg_caption", scene=rotor.id, polygon=t("rotor.tab_u"),
+                            scale=num(scale_u, 4), unit="kg·mm")
+                print_button(lambda drawn=(known, closing, scale_u, caption): polygon_svg(*drawn),
+                             f"{rotor.id}-U.svg", key="usvg")
     if tab_v.open:
         with tab_v:
             if rotor.mode == "dynamic":
@@ -226,6 +226,29 @@ with main:
                                    for p, f in result.corrections.items()],
                                   rotor.planes, t("rotor.tab_3d"), t, look()), f"{rotor.id}-3d",
                   key="3d")
+    if left_out and not waiting():  # no polygon was sent (a static rotor's V tab)
+        rerun_whole()
+    if not waiting():  # on a fresh visit, after the polygons' paint (ui/firstpaint.py)
+        with results:
+            st.header(t("rotor.results"))
+            changed = rotor_changes(rotor, base) if base.book else []
+            corrections_table = results_table(result, not changed)
+            show_table(corrections_table, f"{rotor.id}-corrections.csv", "csv")
+            if changed:  # the book's values belong to the task as the book poses it
+                differs(changed, defaults(base), ("masses",))
+            cols = st.columns(2)
+            cols[0].metric(t("rotor.residual_force"),
+                           f"{num(result.residual_force * MM, 2)} kg·mm")
+            cols[1].metric(t("rotor.residual_moment"),
+                           f"{num(result.residual_moment * MM**2, 2)} kg·mm²")
+            before, after = result.bearing_forces(False), result.bearing_forces(True)
+            if before:
+                cols = st.columns(4)
+                for i, bearing in enumerate(("A", "B")):
+                    cols[i].metric(t("rotor.bearing_before", bearing=bearing),
+                                   f"{num(before[bearing], 4)} N")
+                    cols[2 + i].metric(t("rotor.bearing_after", bearing=bearing),
+                                       f"{num(after[bearing], 2)} N")
 
 
 def analytic_steps(rotor: Rotor) -> Rows:

@@ -4,15 +4,19 @@ its paint starts sends the whole page (ui/firstpaint.py). The browser side: test
 import pytest
 from streamlit.testing.v1 import AppTest
 
+from ui.builder import START, template
 from ui.firstpaint import PAGE, SEEN
 
 from .test_pages import ROOT, charts
 
 
-def first_run(path: str, **params) -> AppTest:
-    """The first run of page ``path`` in a session (as a link with ``params`` opens it)."""
+def first_run(path: str, state: dict | None = None, **params) -> AppTest:
+    """The first run of page ``path`` in a session (as a link with ``params`` opens it, with
+    ``state`` in the session already)."""
     at = AppTest.from_file(str(ROOT / "app.py"), default_timeout=60)
     at.session_state["lang"] = "en"
+    for key, value in (state or {}).items():
+        at.session_state[key] = value
     at.query_params.update(params)
     at.run()  # AppTest reaches a page after a run of app.py (the home page) ...
     at.session_state[SEEN] = frozenset()  # ... as if that run had been this page's ...
@@ -34,7 +38,8 @@ def test_app_py_marks_each_page_seen_after_its_run():
 
 @pytest.mark.parametrize("path, tables", [("pages/trajectories.py", 1),  # task 1.3's book;
                                           ("pages/velocity_plans.py", 2),  # its accuracy opens shut
-                                          ("pages/kinetostatics.py", 2)])
+                                          ("pages/kinetostatics.py", 2),
+                                          ("pages/rotor_balancing.py", 3)])  # its masses' editor
 def test_the_first_run_sends_the_chart_and_the_rerun_after_it_the_tables(path, tables):
     at = first_run(path)
     assert not at.exception
@@ -60,6 +65,43 @@ def test_a_first_run_without_a_chart_leaves_nothing_out():
     assert whole >= 2  # the masses (an input) and the corrections
     rerun(at)
     assert len(at.dataframe) == whole and not charts(at)
+
+
+def test_the_rotor_draws_its_polygons_above_the_masses_and_the_corrections():
+    """The polygons sit beside the controls that change them (first on the page's main
+    column, on every screen), so the masses' editor and the corrections that follow their
+    paint come under them: nothing the first paint shows moves."""
+    at = first_run("pages/rotor_balancing.py")
+    rerun(at)
+    shown = [type(e).__name__ for e in at.main]
+    polygons, editor = shown.index("Tab"), shown.index("Dataframe")
+    assert polygons < editor < shown.index("Header")  # the tabs, the masses, the corrections
+
+
+def test_a_rotor_that_cannot_be_balanced_shows_its_masses_at_once():
+    """A link whose correction planes coincide stops before any polygon: the masses' editor,
+    which waits for a polygon's paint, is drawn in that run with the error."""
+    at = first_run("pages/rotor_balancing.py", xI="100", xII="100")
+    assert at.error and not charts(at)
+    assert len(at.dataframe) == 1  # the masses' editor
+
+
+def test_the_builder_draws_first_and_the_open_tables_editor_follows():
+    at = first_run("pages/builder.py")
+    assert not at.exception and "build_fig" in charts(at)
+    assert len(at.dataframe) == 0  # the open tab's editor waits for the drawing's paint
+    rerun(at)
+    assert len(at.dataframe) == 1 and not charts(at)["build_fig"]["first"]
+
+
+def test_a_builder_document_that_does_not_close_shows_its_table_at_once():
+    """A first run with no drawing (a coupler too short to close) reruns at once, whole: no
+    paint would bring the editor it left out."""
+    doc = template(START)
+    doc["members"]["3"]["length"] = 0.01
+    at = first_run("pages/builder.py", state={"build_doc": doc, "build_now": doc})
+    assert not at.exception and not charts(at)
+    assert len(at.dataframe) == 1 and at.error  # the table to mend, and why
 
 
 def test_the_assur_page_whose_instant_fails_shows_its_groups_at_once():

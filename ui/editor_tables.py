@@ -138,6 +138,22 @@ def _blank_cell(value) -> bool:
     return value is None or value is pd.NA or (isinstance(value, float) and math.isnan(value))
 
 
+def linked_table(key: str, default: pd.DataFrame, scene: str, *, name: str,
+                 rows_fixed: bool = True, column_config: dict | None = None,
+                 loader: Callable[[pd.DataFrame], None] | None = None,
+                 fields: Mapping[str, str] | None = None) -> pd.DataFrame:
+    """The table ``typed_table``'s editor starts from: the link's (ui.url.url_table), or the
+    scene's own where the loader refuses the link's (said by the editor, at its cell). A
+    page reads it alone where its editor waits for the first chart's paint (ui/firstpaint.py):
+    on a fresh visit nothing is typed yet, so the editor would give exactly this."""
+    start = url_table(key, default, scene, rows_fixed)
+    if loader is not None and start is not default and (
+            cell := _loader_cell(loader, start, fields or {})) is not None:
+        start = refuse_table(key, default, scene,
+                             _at_cell(name, cell, headers(start, column_config)))
+    return start
+
+
 def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[str], *,
                 name: str, rows_fixed: bool = True, column_config: dict | None = None,
                 loader: Callable[[pd.DataFrame], None] | None = None,
@@ -156,10 +172,8 @@ def typed_table(key: str, default: pd.DataFrame, scene: str, numbers: Sequence[s
     cell — ``fields`` maps the loader's field (``mass``, ``radii[1]``) to the column — and
     the table is not taken, so no scene the loader refuses is solved, drawn or written."""
     language = current()
-    start = url_table(key, default, scene, rows_fixed)
-    if loader is not None and start is not default and (
-            cell := _loader_cell(loader, start, fields or {})) is not None:
-        start = refuse_table(key, default, scene, _at_cell(name, cell, headers(start, column_config)))
+    start = linked_table(key, default, scene, name=name, rows_fixed=rows_fixed,
+                         column_config=column_config, loader=loader, fields=fields)
     link_said = st.container()  # a refused link table, said while the table is the scene's own
     memo = st.session_state.get(f"_{key}_typed")
     if memo is None or memo["scene"] != scene:

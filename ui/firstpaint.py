@@ -59,6 +59,14 @@ def finish() -> NoReturn:
     st.stop()
 
 
+def rerun_whole() -> NoReturn:
+    """A first run that left something out before its chart, and then drew none (a drawing
+    that does not close): no paint will bring the rest, so the page runs again at once,
+    whole."""
+    whole()
+    st.rerun(scope="app")
+
+
 def painted() -> None:
     """A first run's chart was painted (ui/plot.py's trigger): the run that follows must
     send the whole page."""
