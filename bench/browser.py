@@ -2,8 +2,8 @@
 key → the page's figure redrawn, median of 20 changes per page, against a server on this
 machine. This is what a user waits for: the rerun, the network, and Plotly drawing. Also
 φ₂ (on the trajectories page a link's length) scrubbed in the browser (ui/crank.py), and
-each page opened in a fresh browser context: navigation → first chart painted, and the
-bytes transferred by then.
+each page opened in a fresh browser context, the pages and the floor in turn: navigation
+→ first chart painted, its ratio to the floor's, and the bytes transferred by then.
 
     .venv/bin/python bench/browser.py           # print the table
     .venv/bin/python bench/browser.py --write   # and regenerate its part of docs/performance.md
@@ -141,7 +141,7 @@ def scrub(page, url: str, tab: str | None) -> tuple[float, float, float, float]:
 
 # Navigation → first chart painted, in a fresh browser context each time (nothing cached):
 # polled every frame from the page's own start (performance.now() counts from navigation)
-VISITS = 5
+VISITS = 7
 FIRST_PAINT = """(() => {
   const poll = () => {
     const gd = document.querySelector('.js-plotly-plot');
@@ -159,20 +159,25 @@ OPENED = ["trajectories", "velocity_plans", "assur_groups", "kinetostatics", "pl
           "rotor_balancing", "builder"]  # the pages that open with a chart
 
 
-def first_paint(browser, url: str) -> tuple[float, float]:
-    """Medians over VISITS fresh contexts: ms from navigation to the first chart painted, and
-    kB transferred by then."""
-    times, sizes = [], []
+def first_paints(browser, urls: dict[str, str]) -> dict[str, tuple[float, float]]:
+    """Per page: medians over VISITS rounds of ms from navigation to the first chart painted,
+    and kB transferred by then. Each round opens every url once, in turn, in a fresh context:
+    the machine's speed moves by a third within a run, and in turn it moves the pages and
+    the floor alike (measured one page after another, the floor last, the ratios swung by
+    0.1–0.2 from run to run)."""
+    times: dict[str, list[float]] = {name: [] for name in urls}
+    sizes: dict[str, list[float]] = {name: [] for name in urls}
     for _ in range(VISITS):
-        context = browser.new_context(viewport={"width": 1400, "height": 900})
-        context.add_init_script(FIRST_PAINT)
-        page = context.new_page()
-        page.goto(url, wait_until="commit")
-        page.wait_for_function("() => window.__firstChart", timeout=60_000)
-        times.append(page.evaluate("() => window.__firstChart"))
-        sizes.append(page.evaluate(BYTES) / 1e3)
-        context.close()
-    return statistics.median(times), statistics.median(sizes)
+        for name, url in urls.items():
+            context = browser.new_context(viewport={"width": 1400, "height": 900})
+            context.add_init_script(FIRST_PAINT)
+            page = context.new_page()
+            page.goto(url, wait_until="commit")
+            page.wait_for_function("() => window.__firstChart", timeout=60_000)
+            times[name].append(page.evaluate("() => window.__firstChart"))
+            sizes[name].append(page.evaluate(BYTES) / 1e3)
+            context.close()
+    return {name: (statistics.median(times[name]), statistics.median(sizes[name])) for name in urls}
 
 
 # A phone: iPhone 13 (390 × 664 CSS px, touch) over Chrome's emulated 10 Mbit/s, 40 ms link
@@ -282,12 +287,13 @@ def table() -> str:
                                         args=["--no-sandbox", "--disable-gpu",
                                               "--disable-dev-shm-usage"])
             rows += ["", f"| page | navigation → first chart painted, fresh browser, ms (median "
-                     f"of {VISITS}) | transferred by then, kB |", "|---|---:|---:|"]
-            for name in OPENED:
-                ms, kb = first_paint(browser, f"http://127.0.0.1:{port}/{name}?lang=en")
-                rows.append(f"| {name} | {ms:.0f} | {kb:.0f} |")
-            ms, kb = first_paint(browser, f"http://127.0.0.1:{floor_port}/trajectories?lang=en")
-            rows.append(f"| {FLOOR} | {ms:.0f} | {kb:.0f} |")
+                     f"of {VISITS}, the pages and the floor in turn) | ÷ the floor | transferred "
+                     "by then, kB |", "|---|---:|---:|---:|"]
+            urls = {name: f"http://127.0.0.1:{port}/{name}?lang=en" for name in OPENED}
+            urls[FLOOR] = f"http://127.0.0.1:{floor_port}/trajectories?lang=en"
+            painted = first_paints(browser, urls)
+            rows += [f"| {name} | {ms:.0f} | {ms / painted[FLOOR][0]:.2f}× | {kb:.0f} |"
+                     for name, (ms, kb) in painted.items()]
             browser.close()
             rows += phone_rows(p, port, floor_port)
     finally:

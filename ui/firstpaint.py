@@ -9,12 +9,19 @@ So a page's first run in a session (a fresh visit, a link opened, or the first t
 student turns to that page) sends the widgets and the charts, and leaves out what waits
 (``if not waiting(): …`` after a chart, ``if not first_run(): …`` before one): tables,
 metrics, equations, downloads, the answer and speed panels. Widgets are never left out
-(Streamlit forgets a widget a run does not draw). The first chart drawn in the browser
-reports its paint (``ui/plot.js``, trigger "painted"), and the rerun that starts sends the
-whole page. Any later run of the page is whole anyway, so a client that draws no charts
-(a test, the load test) gets the whole page from its second run on. A chart drawn inside a
-fragment starts a fragment's run with its paint: that run becomes the page's
-(``ui.fragments.fragment``), so what the page left out outside the fragment comes too.
+(Streamlit forgets a widget a run does not draw), but for an input table's editor where it
+sits under or beside the chart (the rotor's masses, the builder's tables): on a fresh visit
+nothing is typed in it yet, so the page reads the link's table alone
+(``ui.editor_tables.linked_table``) and the editor comes with the whole run. A first run
+that left something out before its chart and then drew none reruns at once, whole
+(``rerun_whole``).
+
+The first chart drawn in the browser reports its paint (``ui/plot.js``, trigger
+"painted"), and the rerun that starts sends the whole page. Any later run of the page is
+whole anyway, so a client that draws no charts (a test, the load test) gets the whole page
+from its second run on. A chart drawn inside a fragment starts a fragment's run with its
+paint: that run becomes the page's (``ui.fragments.fragment``), so what the page left out
+outside the fragment comes too.
 """
 
 from __future__ import annotations
