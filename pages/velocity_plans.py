@@ -270,10 +270,10 @@ def at_the_instant(driven: Scene, scales: dict[str, float]) -> None:
     if tab_loops.open:
         with tab_loops:
             loops_tab(scene, plans)
-    values = readings(plans, scales, scales["precision_cm"])
-    if tab_accuracy.open:
+    if tab_accuracy.open:  # (its readings made only for it)
         with tab_accuracy:
-            accuracy_tab(scene, base, values, scales["precision_cm"])
+            accuracy_tab(scene, base, readings(plans, scales, scales["precision_cm"]),
+                         scales["precision_cm"])
     if not waiting():
         with answer_slot:  # signed ω, ε and the task's tolerances (exams.judged)
             answer_box(lambda: named(scene, base), key="self")
