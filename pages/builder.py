@@ -111,7 +111,7 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
     the edits into the tables' document (ui.builder.fold). A refused cell is marked in its
     row (the ⚠ column) and named above the table, where the student types. On a fresh
     visit the open tab's editor too waits for the drawing's paint (ui/firstpaint.py): its
-    grid script held the drawing back by a seventh, and nothing is typed in it yet."""
+    grid script held the drawing back by an eighth, and nothing is typed in it yet."""
     rows = tables(doc)
     out: dict = {}
     tabs = st.tabs([t(TABS[n][0]) for n in TABLES], key="build_tab", on_change=builder.fold)

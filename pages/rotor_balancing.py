@@ -106,7 +106,6 @@ with controls:
 
 with main:
     drawing = st.container()  # the polygons first, beside their controls (filled below)
-with main, st.container(key="masses"):
     st.markdown(f"**{t('rotor.masses')}**")
     editor = st.container()
     practising = practice.toggle("pr_balance")
