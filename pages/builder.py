@@ -331,8 +331,7 @@ def driven(base: dict, edited: dict[str, list[dict]], drawing_col: DeltaGenerato
         if st.session_state.get("build_drag_error"):
             point, to, why = st.session_state.pop("build_drag_error")
             st.error(t("build.drag_failed", point=point, x=to.real, y=to.imag, why=message(why)))
-        if first_run() and not waiting():  # no drawing: no paint will bring the editor left out
-            rerun_whole()
+        rerun_whole()  # (no drawing: no paint will bring the editor left out)
         if not waiting():  # on a fresh visit, after the drawing is painted (ui/firstpaint.py)
             checks(doc, scene, problem, solved, last_doc)
 

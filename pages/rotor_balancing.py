@@ -225,7 +225,7 @@ with main:
                                    for p, f in result.corrections.items()],
                                   rotor.planes, t("rotor.tab_3d"), t, look()), f"{rotor.id}-3d",
                   key="3d")
-    if left_out and not waiting():  # no polygon was sent (a static rotor's V tab)
+    if left_out:  # (no polygon sent: a static rotor's V tab)
         rerun_whole()
     if not waiting():  # on a fresh visit, after the polygons' paint (ui/firstpaint.py)
         with results:

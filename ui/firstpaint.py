@@ -66,10 +66,12 @@ def finish() -> NoReturn:
     st.stop()
 
 
-def rerun_whole() -> NoReturn:
-    """A first run that left something out before its chart, and then drew none (a drawing
-    that does not close): no paint will bring the rest, so the page runs again at once,
-    whole."""
+def rerun_whole() -> None:
+    """Asked where a page's first run has left something out before its chart: if it drew
+    none (a drawing that does not close), no paint will bring the rest, so the page runs
+    again at once, whole. After a chart, nothing."""
+    if waiting() or not first_run():
+        return
     whole()
     st.rerun(scope="app")
 
