@@ -1,5 +1,5 @@
 """Command line: ``python -m solvers list | solve | plan | structure | forces | practice | link |
-variants | class | check | lti | bench``
+variants | class | check | lti | synthesize | bench``
 (see docs/cli.md).
 
 Exit codes: 0 done; 2 the scene or the command is wrong; 3 the mechanism cannot be in
@@ -36,7 +36,9 @@ from solvers.gears import TrainError, solve_train
 from solvers.kinetostatics import analyse
 from solvers.structure import StructureError, decompose
 
-from . import check, classes, lti, practice
+from solvers.synthesis import SynthesisError
+
+from . import check, classes, lti, practice, synthesis
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -57,7 +59,7 @@ def main(argv: list[str] | None = None) -> int:
     except ClassError as exc:
         print(f"error: {exc.args[0]}", file=sys.stderr)
         return 2
-    except (Unsolvable, BalanceError, NotSaved) as exc:
+    except (Unsolvable, BalanceError, NotSaved, SynthesisError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 3
 
@@ -123,6 +125,7 @@ def _parser() -> argparse.ArgumentParser:
     classes.add(sub)
     check.add(sub)
     lti.add(sub)
+    synthesis.add(sub)
     p = sub.add_parser("link", help=f"the share parameter ({PARAMETER}=…) that carries a scene "
                                     "in any page's link")
     p.add_argument("scene", help="a preset id (see `list`) or a path to a .toml scene")

@@ -59,7 +59,7 @@ def preset_document(preset_id: str) -> dict:
     """A preset's TOML table as its file writes it (teeth stay teeth): what a variant or a fit
     changes numbers in before ``build_document`` makes it a scene again."""
     path = _preset_path(preset_id)
-    return _read_toml(path.read_bytes(), path.name)
+    return read_toml(path.read_bytes(), path.name)
 
 
 def _preset_path(preset_id: str) -> Path:
@@ -100,7 +100,7 @@ def load_any(name: str):
 
 def parse_document(data: bytes | str, source: str = "<scene>", default_id: str = "scene"):
     """Parse any scene kind: the top-level ``kind`` key chooses the schema."""
-    return build_document(_read_toml(data, source), source, default_id)
+    return build_document(read_toml(data, source), source, default_id)
 
 
 def build_document(raw: dict, source: str = "<scene>", default_id: str = "scene"):
@@ -129,7 +129,7 @@ def as_loaded(scene, source: str = "<table>"):
 
 def parse_scene(data: bytes | str, source: str = "<scene>", default_id: str = "scene") -> Scene:
     """Parse and validate a linkage scene (bytes from an upload or a file)."""
-    return _build(_read_toml(data, source), Reader(source), default_id)
+    return _build(read_toml(data, source), Reader(source), default_id)
 
 
 def build_scene(raw: dict, source: str = "builder", default_id: str = "my-mechanism") -> Scene:
@@ -138,7 +138,7 @@ def build_scene(raw: dict, source: str = "builder", default_id: str = "my-mechan
     return _build(raw, Reader(source), default_id)
 
 
-def _read_toml(data: bytes | str, source: str) -> dict:
+def read_toml(data: bytes | str, source: str) -> dict:
     """Bytes → TOML table, refusing what is too big, not UTF-8 or not TOML."""
     if isinstance(data, str):
         data = data.encode("utf-8")

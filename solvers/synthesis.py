@@ -1,0 +1,681 @@
+"""Path synthesis: a four-bar whose coupler point passes given points in order
+(docs/synthesis.md).
+
+The search runs the other way from analysis and stays in this house: SciPy's
+``differential_evolution`` over the four-bar's shape (the whole population's coupler points in
+one numpy call, both assembly branches at once), then ``least_squares`` on the residual
+vector, then the answer is built as a scene and **re-solved by the kinematics core** over the
+whole turn: the error reported is the re-solved one, never the optimiser's own.
+
+Shape parameters, so that every candidate is a crank that turns fully (Grashof, the crank
+the shortest link): with the crank ``r2`` and ``x, y, z ≥ 0``,
+``frame r1 = r2 + y + z``, ``coupler r3 = r2 + x + z``, ``rocker r4 = r2 + x + y``. Then
+``r2`` is the shortest and the longest excess is at most the sum of the other two, which is
+Grashof's s + l ≤ p + q; every such linkage has exactly one (r2, x, y, z). A zero x, y or
+z is a change-point linkage (s + l = p + q), kept out by a small lower bound.
+
+The assembly branch of a Grashof crank never changes over the turn, so one sign per
+mechanism is the "one branch through every point" rule: a jump cannot happen.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+from scipy.optimize import differential_evolution, least_squares
+
+from mechanisms import parse_scene
+from mechanisms.schema import Scene
+from mechanisms.synthesis import SynthesisTask
+
+from .kinematics import solve
+
+TAU = 2 * math.pi
+SAMPLES = 120  # coupler-curve samples per turn where the timing is free (refined by projection)
+START_GRID = 72  # crank angles tried for the first point where only the steps are given
+MARGIN = 1e-6  # of the largest length: how far from a change point (s + l = p + q) x, y, z stay
+TURN = 720  # positions of the whole turn the answer is re-solved at
+AGREE = 1e-7  # re-solved and searched coupler points agree to this share of the task's size
+DEFAULT_BUDGET = 60_000
+DEFAULT_SECONDS = 8.0
+STRATEGY = "best1bin"
+POPSIZE = 15
+STARTS = 8
+RESTARTS = 3
+
+
+class SynthesisError(Exception):
+    """The search found no working four-bar (the message says why)."""
+
+
+@dataclass(frozen=True)
+class Linkage:
+    """A found four-bar in the builder's names: O the crank's pivot, D the rocker's, A the
+    crank pin, B the coupler–rocker joint, M the coupler point ``point`` = [along A→B, to its
+    left]. ``angles`` are the crank's angles from the frame line O→D at the precision points
+    (rad); ``branch`` the assembly sign."""
+
+    O: complex
+    frame_angle: float  # rad, direction of O→D from +x
+    frame: float
+    crank: float
+    coupler: float
+    rocker: float
+    point: complex
+    branch: int
+    angles: tuple[float, ...]
+    turning: int = 1  # +1 counter-clockwise, −1 clockwise
+
+    @property
+    def D(self) -> complex:
+        return self.O + self.frame * np.exp(1j * self.frame_angle)
+
+
+@dataclass
+class Result:
+    """A certified answer: the linkage, its scene, and the positions the kinematics core
+    re-solved at the precision points."""
+
+    linkage: Linkage
+    scene: Scene
+    scene_toml: str
+    objective: float  # Σ of squared distances, re-solved
+    errors: np.ndarray  # each point's distance, re-solved
+    positions: dict[str, np.ndarray]  # "A", "B", "M": complex, one per precision point
+    crank_deg: np.ndarray  # φ₂ from +x at each point, as ``solve --at`` takes it
+    evaluations: int
+    seconds: float
+    searched: float  # the optimiser's own objective, for the record
+    curve: np.ndarray = field(repr=False, default_factory=lambda: np.zeros(0, complex))
+
+
+# ---------------------------------------------------------------------------------------
+# the coupler point of many four-bars at once
+
+
+def lengths(shape: np.ndarray) -> tuple[np.ndarray, ...]:
+    """(r1, r2, r3, r4) from the shape rows (r2, x, y, z)."""
+    r2, x, y, z = shape[0], shape[1], shape[2], shape[3]
+    return r2 + y + z, r2, r2 + x + z, r2 + x + y
+
+
+def coupler(shape: np.ndarray, theta: np.ndarray, branch: float) -> tuple[np.ndarray, ...]:
+    """A, B and M in each linkage's own frame (O at 0, D on +x) at crank angles ``theta``.
+
+    ``shape`` rows (r2, x, y, z, cx, cy), columns the linkages (S); ``theta`` (S, K) or (K,).
+    Returns complex arrays (S, K)."""
+    r1, r2, r3, r4 = (v[:, None] for v in lengths(shape))
+    c = (shape[4] + 1j * shape[5])[:, None]
+    a = r2 * np.exp(1j * np.asarray(theta))
+    d = r1 - a
+    span2 = d.real ** 2 + d.imag ** 2
+    span = np.sqrt(span2)
+    cos = np.clip((r3 * r3 + span2 - r4 * r4) / (2 * r3 * span), -1.0, 1.0)
+    e3 = d / span * (cos + 1j * branch * np.sqrt(1 - cos * cos))
+    return a, a + r3 * e3, a + c * e3
+
+
+# ---------------------------------------------------------------------------------------
+# the problem the optimisers see
+
+
+class _Problem:
+    """The task turned into vectors: which numbers the search varies, their bounds, and the
+    error of many candidates at once."""
+
+    def __init__(self, task: SynthesisTask):
+        self.task = task
+        self.target = np.array(task.points)
+        self.n = len(self.target)
+        self.scale = float(np.sum(np.abs(self.target - self.target.mean()) ** 2)) or 1.0
+        self.planar = np.array([self.target.real, self.target.imag])  # (2, n)
+        big, box = task.max_length, task.box
+        low = max(task.min_length, 1e-9 * big)
+        self.margin = MARGIN * big
+        self.shape_bounds = [(low, big), (self.margin, big), (self.margin, big),
+                             (self.margin, big), (-box, box), (-box, box)]
+        self.free_pivot = task.crank_pivot is None
+        self.free_angle = task.frame_angle is None
+        # the placement the search varies (the rest is fixed, or found in closed form)
+        self.placed = task.timing == "free"
+        place = []
+        if self.placed and self.free_angle:
+            place.append((-math.pi, math.pi))
+        if self.placed and self.free_pivot:
+            place += [(-box, box), (-box, box)]
+        self.bounds = self.shape_bounds + place
+        self._warp()
+        if task.timing == "angles":
+            self.given = np.radians(np.array(task.crank_angles))
+        elif task.timing == "steps":
+            self.given = np.radians(np.concatenate([[0.0], np.cumsum(task.crank_steps)]))
+
+    # --- where the search looks: the task's scale, not the bounds' ------------------------
+
+    def _warp(self) -> None:
+        """The search's own coordinates ``u``: lengths on a log scale, offsets and pivots on
+        an asinh scale around the points, so that a search whose bounds are fifty times the
+        path's size still spends its samples where four-bars of the path's size are. The
+        map is one to one onto the same bounds: nothing the task allows is left out."""
+        spread = float(np.max(np.abs(self.target[:, None] - self.target[None, :])))
+        self.unit = spread / 4
+        centre = self.target.mean()
+        floor = spread * 1e-4
+        kinds = ["log"] * 4 + ["asinh"] * 2
+        middles = [0.0] * 6
+        if self.placed and self.free_angle:
+            kinds.append("linear")
+            middles.append(0.0)
+        if self.placed and self.free_pivot:
+            kinds += ["asinh", "asinh"]
+            middles += [centre.real, centre.imag]
+        self.kinds, self.middles = kinds, np.array(middles)
+        self.search_bounds = []
+        for kind, (lo, hi), mid in zip(kinds, self.bounds, middles):
+            if kind == "log":
+                self.search_bounds.append((math.log(max(lo, min(floor, hi / 10))), math.log(hi)))
+            elif kind == "asinh":
+                self.search_bounds.append((math.asinh((lo - mid) / self.unit),
+                                           math.asinh((hi - mid) / self.unit)))
+            else:
+                self.search_bounds.append((lo, hi))
+
+    def decode(self, u: np.ndarray) -> np.ndarray:
+        """The four-bar's numbers (rows as ``bounds``) from the search's coordinates."""
+        x = np.empty_like(u)
+        for i, kind in enumerate(self.kinds):
+            if kind == "log":
+                x[i] = np.exp(u[i])
+            elif kind == "asinh":
+                x[i] = self.middles[i] + self.unit * np.sinh(u[i])
+            else:
+                x[i] = u[i]
+        lo, hi = np.array(self.bounds).T
+        return np.clip(x, lo[:, None] if x.ndim == 2 else lo, hi[:, None] if x.ndim == 2 else hi)
+
+    # --- placement: O and the frame line's direction ---------------------------------
+
+    def placement(self, x: np.ndarray, local: np.ndarray):
+        """(O, e^{iθ₀}) per candidate: the task's where fixed, the search's where it varies
+        them, else the rigid motion that best lays the local points on the targets
+        (closed-form Procrustes: no search spent on what has a formula)."""
+        task, t = self.task, self.target
+        if self.placed:
+            k, count = 6, x.shape[1]
+            angle = x[k] if self.free_angle else np.full(count, math.radians(task.frame_angle))
+            k += self.free_angle
+            pivot = (x[k] + 1j * x[k + 1]) if self.free_pivot else np.full(count, task.crank_pivot)
+            return pivot[:, None], np.exp(1j * angle)[:, None]
+        if not self.free_pivot and not self.free_angle:
+            return (np.full((local.shape[0], 1), task.crank_pivot),
+                    np.full((local.shape[0], 1), np.exp(1j * math.radians(task.frame_angle))))
+        if self.free_angle:
+            if self.free_pivot:
+                lc = local - local.mean(axis=-1, keepdims=True)
+                tc = t - t.mean()
+            else:
+                lc, tc = local, t - task.crank_pivot
+            s = np.sum(np.conj(lc) * tc, axis=-1, keepdims=True)
+            rot = np.where(np.abs(s) > 0, s / np.where(s == 0, 1, np.abs(s)), 1.0)
+        else:
+            rot = np.full(local.shape[:-1] + (1,), np.exp(1j * math.radians(task.frame_angle)))
+        if self.free_pivot:
+            pivot = np.mean(t - rot * local, axis=-1, keepdims=True)
+        else:
+            pivot = np.full(rot.shape, task.crank_pivot)
+        return pivot, rot
+
+    def outside(self, x: np.ndarray, pivot: np.ndarray, rot: np.ndarray) -> np.ndarray:
+        """How far each candidate breaks its bounds (0 when it keeps them): a link longer
+        than ``max_length``, a pivot outside the box."""
+        r1, r2, r3, r4 = lengths(x)
+        big, box = self.task.max_length, self.task.box
+        over = sum(np.maximum(0, r - big) for r in (r1, r3, r4))
+        pivot, rot = pivot[..., 0], rot[..., 0]
+        d = pivot + r1.reshape(pivot.shape) * rot
+        for p in (pivot, d):
+            over = over + (np.maximum(0, np.abs(p.real) - box)
+                           + np.maximum(0, np.abs(p.imag) - box)).reshape(over.shape)
+        return over
+
+    # --- the search's objective ----------------------------------------------------------
+
+    def cost(self, u: np.ndarray) -> np.ndarray:
+        """Σ of squared distances for each column of the search's ``u`` (the better branch),
+        with the bounds' breaches ranked behind every candidate that keeps them."""
+        x = self.decode(u)
+        best = np.full(x.shape[1], np.inf)
+        for branch in (1.0, -1.0):
+            best = np.minimum(best, self._cost(x, branch))
+        return best
+
+    def _cost(self, x: np.ndarray, branch: float) -> np.ndarray:
+        if self.task.timing == "free":
+            err, pivot, rot = self._free(x, branch)
+        elif self.task.timing == "angles":
+            _, _, m = coupler(x, self.given, branch)
+            pivot, rot = self.placement(x, m)
+            err = np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)
+        else:
+            err, pivot, rot = self._steps(x, branch)
+        over = self.outside(x, pivot, rot)
+        err = np.where(np.isfinite(err), err, 1e300)
+        return np.where(over > 0, 1e12 * self.scale * (1 + over), err)
+
+    def _free(self, x, branch):
+        """Each target's nearest point of the sampled curve, refined on the two chords
+        beside it; a sequence that needs more than one turn pays its excess."""
+        theta = np.linspace(0, TAU, SAMPLES, endpoint=False)
+        _, _, m = coupler(x, theta, branch)
+        pivot, rot = self.placement(x, m)
+        curve = pivot + rot * m  # (S, K)
+        near = np.stack([curve.real, curve.imag], axis=-1) @ self.planar  # (S, K, n): c·t
+        dist = (curve.real ** 2 + curve.imag ** 2)[:, :, None] - 2 * near
+        k = np.argmin(dist, axis=1)  # (S, n): each target's nearest sample
+        rows = np.arange(curve.shape[0])[:, None]
+        here = curve[rows, k]
+        rel = self.target - here
+        best = rel.real ** 2 + rel.imag ** 2
+        for side in (-1, 1):
+            chord = curve[rows, (k + side) % SAMPLES] - here
+            t = np.clip((rel * np.conj(chord)).real / np.maximum(np.abs(chord) ** 2, 1e-300), 0, 1)
+            miss = rel - t * chord
+            best = np.minimum(best, miss.real ** 2 + miss.imag ** 2)
+        travel = np.sum((np.diff(k, axis=-1)) % SAMPLES, axis=-1)
+        excess = np.maximum(0, travel - SAMPLES) / SAMPLES
+        return np.sum(best, axis=-1) + excess * self.scale, pivot, rot
+
+    def _steps(self, x, branch):
+        """The best start on a grid of crank angles (the steps fix the rest)."""
+        start = np.linspace(0, TAU, START_GRID, endpoint=False)
+        theta = (start[:, None] + self.given[None, :]).ravel()  # (G·n,)
+        _, _, m = coupler(x, theta, branch)
+        m = m.reshape(x.shape[1], START_GRID, self.n)
+        pivot, rot = self.placement(x, m)
+        err = np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)  # (S, G)
+        err = np.where(np.isfinite(err), err, np.inf)
+        j = np.argmin(err, axis=-1)
+        rows = np.arange(x.shape[1])
+        return err[rows, j], pivot[rows, j], rot[rows, j]
+
+    # --- from a search vector to a linkage, and back ----------------------------------------
+
+    def linkage(self, x: np.ndarray, branch: int) -> Linkage:
+        """The linkage a search vector stands for (its crank angles found as the search
+        found them: nearest, best start, or given)."""
+        col = x[:, None]
+        if self.task.timing == "free":
+            theta = np.linspace(0, TAU, SAMPLES * 8, endpoint=False)
+            _, _, m = coupler(col, theta, branch)
+            pivot, rot = self.placement(col, m)
+            curve = (pivot + rot * m)[0]
+            k = np.argmin(np.abs(curve[None, :] - self.target[:, None]), axis=-1)
+            angles = theta[k[0]] + np.concatenate([[0.0], np.cumsum(np.mod(np.diff(theta[k]), TAU))])
+        elif self.task.timing == "angles":
+            angles = self.given
+            _, _, m = coupler(col, angles, branch)
+            pivot, rot = self.placement(col, m)
+        else:
+            start = np.linspace(0, TAU, START_GRID, endpoint=False)
+            theta = start[:, None] + self.given[None, :]
+            _, _, m = coupler(col, theta.ravel(), branch)
+            m = m.reshape(1, START_GRID, self.n)
+            pivot, rot = self.placement(col, m)
+            j = int(np.argmin(np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)))
+            angles, pivot, rot = theta[j], pivot[0, j], rot[0, j]
+        r1, r2, r3, r4 = (float(v[0]) for v in lengths(col))
+        return Linkage(O=complex(np.ravel(pivot)[0]), frame_angle=float(np.angle(np.ravel(rot)[0])),
+                       frame=r1, crank=r2, coupler=r3, rocker=r4,
+                       point=complex(x[4], x[5]), branch=branch,
+                       angles=tuple(float(a) for a in angles), turning=self.task.turning)
+
+
+# ---------------------------------------------------------------------------------------
+# the local polish: every free number of the linkage, least squares on the residuals
+
+
+class _Polish:
+    """``least_squares`` over shape, placement and timing, the bounds it cannot express as
+    box bounds (lengths, pivots in the box, one turn) as steep hinges."""
+
+    WEIGHT = 1e4
+
+    def __init__(self, problem: _Problem, linkage: Linkage):
+        self.p, self.task = problem, problem.task
+        self.branch = linkage.branch
+        self.start = linkage
+
+    def vector(self, link: Linkage) -> np.ndarray:
+        x = [link.crank, *self._excess(link), link.point.real, link.point.imag]
+        if self.task.frame_angle is None:
+            x.append(link.frame_angle)
+        if self.task.crank_pivot is None:
+            x += [link.O.real, link.O.imag]
+        a = np.array(link.angles)
+        if self.task.timing == "free":
+            x += [a[0], *np.mod(np.diff(a), TAU)]
+        elif self.task.timing == "steps":
+            x.append(a[0])
+        return np.array(x, dtype=float)
+
+    @staticmethod
+    def _excess(link: Linkage) -> tuple[float, float, float]:
+        """(x, y, z) from the four lengths (the inverse of ``lengths``)."""
+        u, v, w = link.frame - link.crank, link.coupler - link.crank, link.rocker - link.crank
+        return (v + w - u) / 2, (u + w - v) / 2, (u + v - w) / 2
+
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        lo, hi = zip(*self.p.shape_bounds)
+        lo, hi = list(lo), list(hi)
+        box = self.task.box
+        if self.task.frame_angle is None:
+            lo.append(-4 * math.pi)
+            hi.append(4 * math.pi)
+        if self.task.crank_pivot is None:
+            lo += [-box, -box]
+            hi += [box, box]
+        if self.task.timing == "free":
+            lo += [-4 * math.pi] + [0.0] * (self.p.n - 1)
+            hi += [4 * math.pi] + [TAU] * (self.p.n - 1)
+        elif self.task.timing == "steps":
+            lo.append(-4 * math.pi)
+            hi.append(4 * math.pi)
+        return np.array(lo), np.array(hi)
+
+    def linkage(self, x: np.ndarray) -> Linkage:
+        k = 6
+        frame_angle = x[k] if self.task.frame_angle is None else math.radians(self.task.frame_angle)
+        k += self.task.frame_angle is None
+        pivot = complex(x[k], x[k + 1]) if self.task.crank_pivot is None else self.task.crank_pivot
+        k += 2 * (self.task.crank_pivot is None)
+        if self.task.timing == "free":
+            angles = x[k] + np.concatenate([[0.0], np.cumsum(x[k + 1:])])
+        elif self.task.timing == "steps":
+            angles = x[k] + self.p.given
+        else:
+            angles = self.p.given
+        r1, r2, r3, r4 = (float(v[0]) for v in lengths(x[:4, None]))
+        return Linkage(O=pivot, frame_angle=float(frame_angle), frame=r1, crank=r2, coupler=r3,
+                       rocker=r4, point=complex(x[4], x[5]), branch=self.branch,
+                       angles=tuple(float(a) for a in angles), turning=self.task.turning)
+
+    def many(self, x: np.ndarray) -> np.ndarray:
+        """The residuals of every column of ``x`` at once (rows: the points' x and y misses,
+        then the weighted breaches)."""
+        task, count = self.task, x.shape[1]
+        k = 6
+        if task.frame_angle is None:
+            rot = np.exp(1j * x[k])
+            k += 1
+        else:
+            rot = np.full(count, np.exp(1j * math.radians(task.frame_angle)))
+        if task.crank_pivot is None:
+            pivot = x[k] + 1j * x[k + 1]
+            k += 2
+        else:
+            pivot = np.full(count, task.crank_pivot)
+        if task.timing == "free":
+            theta = x[k][:, None] + np.concatenate([np.zeros((count, 1)),
+                                                      np.cumsum(x[k + 1:].T, axis=1)], axis=1)
+        elif task.timing == "steps":
+            theta = x[k][:, None] + self.p.given[None, :]
+        else:
+            theta = np.broadcast_to(self.p.given, (count, self.p.n))
+        _, _, m = coupler(x, theta, self.branch)
+        miss = (pivot[:, None] + rot[:, None] * m - self.p.target).T  # (n, S)
+        r1, _, r3, r4 = lengths(x)
+        big, box = task.max_length, task.box
+        d = pivot + r1 * rot
+        over = [np.maximum(0, r - big) for r in (r1, r3, r4)]
+        over += [np.maximum(0, np.abs(c) - box) for q in (pivot, d) for c in (q.real, q.imag)]
+        if task.timing == "free":
+            over.append(np.maximum(0, theta[:, -1] - theta[:, 0] - TAU))
+        return np.vstack([miss.real, miss.imag, self.WEIGHT * np.array(over)])
+
+    def residuals(self, x: np.ndarray) -> np.ndarray:
+        return self.many(x[:, None])[:, 0]
+
+    def jacobian(self, x: np.ndarray) -> np.ndarray:
+        """Forward differences, every column perturbed in one call of ``many``."""
+        h = 1e-7 * np.maximum(1.0, np.abs(x))
+        lo, hi = self.limits
+        h = np.where(x + h > hi, -h, h)  # stay inside the bounds
+        columns = x[:, None] + np.diag(h)
+        both = self.many(np.hstack([x[:, None], columns]))
+        return (both[:, 1:] - both[:, :1]) / h
+
+    def run(self, evaluations: int) -> tuple[Linkage, int]:
+        lo, hi = self.limits = self.bounds()
+        x0 = np.clip(self.vector(self.start), lo + 1e-12 * (hi - lo), hi - 1e-12 * (hi - lo))
+        fit = least_squares(self.residuals, x0, jac=self.jacobian, bounds=(lo, hi),
+                            max_nfev=max(evaluations // (len(x0) + 2), 10),
+                            x_scale="jac", ftol=1e-14, xtol=1e-14, gtol=1e-14)
+        return self.linkage(fit.x), int(fit.nfev + (fit.njev or 0) * (len(x0) + 1))
+
+
+def points_of(link: Linkage, angles=None) -> np.ndarray:
+    """M at the linkage's precision angles (or at ``angles``), in the task's frame."""
+    a, b, m = positions_of(link, angles)
+    return m
+
+
+def positions_of(link: Linkage, angles=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A, B and M at the crank angles ``angles`` (from the frame line; default the
+    precision points'), in the task's frame."""
+    theta = np.array(link.angles if angles is None else angles, dtype=float)
+    shape = np.array([[link.crank], *[[v] for v in _Polish._excess(link)],
+                      [link.point.real], [link.point.imag]])
+    a, b, m = coupler(shape, theta, link.branch)
+    rot = np.exp(1j * link.frame_angle)
+    return tuple(link.O + rot * v[0] for v in (a, b, m))
+
+
+def breaches(link: Linkage, task: SynthesisTask) -> np.ndarray:
+    """How far the linkage breaks each rule the box bounds cannot hold (0 where it keeps
+    it): a link over ``max_length``, a pivot outside the box, more than one turn between the
+    first and the last point. (Grashof and the crank's shortness are the box bounds of
+    r2, x, y, z.)"""
+    big, box = task.max_length, task.box
+    over = [max(0.0, r - big) for r in (link.frame, link.coupler, link.rocker)]
+    for p in (link.O, link.D):
+        over += [max(0.0, abs(p.real) - box), max(0.0, abs(p.imag) - box)]
+    if task.timing == "free":
+        over.append(max(0.0, link.angles[-1] - link.angles[0] - TAU))
+    return np.array(over)
+
+
+def keeps_rules(link: Linkage, task: SynthesisTask) -> bool:
+    """Every rule of the task held exactly (to a billionth of the task's size): Grashof with
+    the crank shortest, the lengths, the box, the order within one turn, the timing."""
+    slack = 1e-9 * max(task.max_length, task.box)
+    lengths_ = (link.frame, link.crank, link.coupler, link.rocker)
+    s, l = min(lengths_), max(lengths_)
+    grashof = s + l < sum(lengths_) - s - l and link.crank == s
+    inside = all(task.min_length - slack <= r <= task.max_length + slack for r in lengths_)
+    box = all(abs(c) <= task.box + slack for p in (link.O, link.D) for c in (p.real, p.imag))
+    a = np.array(link.angles)
+    if task.timing == "free":
+        order = bool(np.all(np.diff(a) >= -1e-12)) and a[-1] - a[0] <= TAU + 1e-9
+    elif task.timing == "steps":
+        order = np.allclose(np.diff(a), np.radians(task.crank_steps), atol=1e-9)
+    else:
+        order = np.allclose(a, np.radians(task.crank_angles), atol=1e-9)
+    fixed = ((task.crank_pivot is None or abs(link.O - task.crank_pivot) <= slack)
+             and (task.frame_angle is None
+                  or abs(np.exp(1j * link.frame_angle) - np.exp(1j * math.radians(task.frame_angle))) < 1e-9))
+    return bool(grashof and inside and box and order and fixed)
+
+
+# ---------------------------------------------------------------------------------------
+# the search, and the answer re-solved
+
+
+def synthesize(task: SynthesisTask, seed: int = 1, budget: int = DEFAULT_BUDGET,
+               seconds: float = DEFAULT_SECONDS,
+               progress: Callable[[float, float], None] | None = None) -> Result:
+    """The best four-bar found for ``task`` within ``budget`` evaluations and ``seconds``,
+    re-solved by the kinematics core. ``progress(share done, best so far)`` is told after
+    each generation (a page's progress bar).
+
+    The budget is split between ``RESTARTS`` independent searches, each polished from its
+    best few members: one search that settles early in a poor basin then costs a share of
+    the budget, not the answer."""
+    began = time.perf_counter()
+    problem = _Problem(task)
+    dims = len(problem.search_bounds)
+    rounds = RESTARTS if budget >= RESTARTS * 400 * dims else 1
+    share = budget // rounds
+    popsize = max(5, min(POPSIZE, share // (dims * 40) or 5))
+    generations = max(1, int(share * 0.85) // (popsize * dims) - 1)
+    spent, done = 0, 0
+    best, best_err = None, math.inf
+
+    def cost(x: np.ndarray) -> np.ndarray:
+        nonlocal spent
+        spent += x.shape[1]
+        return problem.cost(x)
+
+    seeds = np.random.SeedSequence(seed).spawn(rounds)
+    for round_ in range(rounds):
+        deadline = began + seconds * 0.85 * (round_ + 1) / rounds
+
+        def told(intermediate_result) -> bool:  # (SciPy passes the result by this name)
+            nonlocal done
+            done += 1
+            if progress is not None:
+                progress(min(1.0, done / (generations * rounds)),
+                         min(best_err, float(intermediate_result.fun)))
+            return time.perf_counter() > deadline
+
+        with np.errstate(all="ignore"):
+            found = differential_evolution(
+                cost, problem.search_bounds, strategy=STRATEGY, maxiter=generations, popsize=popsize,
+                tol=0, atol=0, mutation=(0.5, 1.0), recombination=0.9,
+                rng=np.random.default_rng(seeds[round_]), polish=False, vectorized=True,
+                updating="deferred", callback=told)
+        starts = _starts(problem, found)
+        for x, branch in starts:
+            start = problem.linkage(x, branch)
+            with np.errstate(all="ignore"):
+                link, used = _Polish(problem, start).run(max(50 * dims, share // 6 // len(starts)))
+            spent += used
+            for candidate in (link, start):
+                if keeps_rules(candidate, task):
+                    err = float(np.sum(np.abs(points_of(candidate) - problem.target) ** 2))
+                    if err < best_err:
+                        best, best_err = candidate, err
+                    break
+        if time.perf_counter() > began + seconds:
+            break
+    if best is None:
+        raise SynthesisError("no four-bar within the task's bounds keeps every rule "
+                             "(try a larger max_length or box)")
+    if progress is not None:
+        progress(1.0, best_err)
+    return certify(task, best, spent, time.perf_counter() - began, best_err)
+
+
+def _starts(problem: _Problem, found) -> list[tuple[np.ndarray, int]]:
+    """The best few distinct members of the final population, each with its better branch:
+    the polish starts from each (one basin's best is not always the deepest after polish)."""
+    population = found.population
+    ordered = np.argsort(found.population_energies)
+    starts: list[tuple[np.ndarray, int]] = []
+    for i in ordered:
+        x = problem.decode(population[i])
+        if any(np.allclose(x, s, rtol=1e-3, atol=1e-9) for s, _ in starts):
+            continue
+        costs = [problem._cost(x[:, None], b)[0] for b in (1.0, -1.0)]
+        starts.append((x, 1 if costs[0] <= costs[1] else -1))
+        if len(starts) == STARTS:
+            break
+    return starts
+
+
+def certify(task: SynthesisTask, link: Linkage, evaluations: int, seconds: float,
+            searched: float) -> Result:
+    """The linkage built as a scene, loaded by the scene loader and re-solved by the
+    kinematics core at the precision points and over the whole turn: it must close at
+    every position, on the searched branch, and its error is computed from that solve."""
+    text = scene_toml(task, link)
+    scene = parse_scene(text, source="synthesis")
+    at = np.mod(np.array(link.angles) + link.frame_angle, TAU)
+    motion = solve(scene, at, order=0)
+    turn = solve(scene, scene.driver.at + link.turning * np.linspace(0, TAU, TURN, endpoint=False),
+                 order=0, points=["M"])
+    if not (np.all(motion.feasible) and np.all(turn.feasible)):
+        raise SynthesisError("the found four-bar does not close over the whole turn")
+    got = {name: motion.points[name].z for name in ("A", "B", "M")}
+    mine = dict(zip("ABM", positions_of(link)))
+    size = max(task.max_length, task.box)
+    if any(np.max(np.abs(got[p] - mine[p])) > AGREE * size for p in "ABM"):
+        raise SynthesisError("the re-solved four-bar is not the one searched "
+                             "(another assembly branch)")
+    errors = np.abs(got["M"] - np.array(task.points))
+    return Result(linkage=link, scene=scene, scene_toml=text, objective=float(np.sum(errors ** 2)),
+                  errors=errors, positions=got, crank_deg=np.degrees(at), evaluations=evaluations,
+                  seconds=seconds, searched=searched, curve=turn.points["M"].z)
+
+
+def scene_toml(task: SynthesisTask, link: Linkage) -> str:
+    """The found four-bar as the builder's four-bar template writes it (O, A, B, D; the
+    coupler point M), drawn at the first precision point so that its branch is the
+    searched one."""
+    a, b, _ = positions_of(link)
+    at = math.degrees((link.angles[0] + link.frame_angle) % TAU)
+    d = link.D
+
+    def v(z: complex) -> str:
+        return f"[{float(z.real)!r}, {float(z.imag)!r}]"
+
+    title = task.title or "Four-bar found for the precision points"
+    return "\n".join([
+        f'id = "{task.id}"',
+        f"title = {_quoted(title)}",
+        'title_sr = "Zglobni četvorougao nađen za zadate tačke putanje"',
+        "",
+        "pairs = [",
+        '  { type = "revolute", members = [1, 2], point = "O" },',
+        '  { type = "revolute", members = [2, 3], point = "A" },',
+        '  { type = "revolute", members = [3, 4], point = "B" },',
+        '  { type = "revolute", members = [4, 1], point = "D" },',
+        "]",
+        "",
+        "[frame]",
+        f"O = {v(link.O)}",
+        f"D = {v(d)}",
+        "",
+        "[driver]",
+        'type = "rotating"',
+        f"at = {at!r}",
+        f"omega = {10.0 * link.turning!r}",
+        "epsilon = 0.0",
+        "",
+        "[members.2]",
+        'label = "crank"',
+        'points = ["O", "A"]',
+        f"length = {link.crank!r}",
+        "",
+        "[members.3]",
+        'label = "coupler"',
+        'points = ["A", "B"]',
+        f"length = {link.coupler!r}",
+        f"extra = {{ M = {v(link.point)} }}",
+        "",
+        "[members.4]",
+        'label = "rocker"',
+        'points = ["D", "B"]',
+        f"length = {link.rocker!r}",
+        "",
+        "[guess]",
+        f"B = {v(complex(b[0]))}",
+        "",
+    ])
+
+
+def _quoted(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
