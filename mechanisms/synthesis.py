@@ -69,18 +69,18 @@ def build_task(raw: dict, r: Reader) -> SynthesisTask:
     n = len(points)
     timing = r.text(raw, "timing", "", default="free")
     if timing not in TIMINGS:
-        raise r.fail("timing", "synthesis.timing", value=given(timing))
+        raise r.fail("timing", "synthesis_timing", value=given(timing))
     angles = _list(raw, "crank_angles", r, n if timing == "angles" else None)
     steps = _list(raw, "crank_steps", r, n - 1 if timing == "steps" else None)
     for name, value, wanted in (("crank_angles", angles, "angles"), ("crank_steps", steps, "steps")):
         if (value is None) == (timing == wanted):
-            raise r.fail(name, "synthesis.timing_list" if value is None else "synthesis.not_for_timing",
+            raise r.fail(name, "synthesis_timing_list" if value is None else "synthesis_not_for_timing",
                          timing=timing, wanted=wanted)
     if steps is not None:
         if any(s == 0 for s in steps) or len({math.copysign(1, s) for s in steps}) > 1:
-            raise r.fail("crank_steps", "synthesis.step_signs", value=list(steps))
+            raise r.fail("crank_steps", "synthesis_step_signs", value=list(steps))
         if abs(sum(steps)) > 360:
-            raise r.fail("crank_steps", "synthesis.steps_turn", total=float(abs(sum(steps))))
+            raise r.fail("crank_steps", "synthesis_steps_turn", total=float(abs(sum(steps))))
     pivot = r.vector(raw["crank_pivot"], "crank_pivot") if "crank_pivot" in raw else None
     frame_angle = r.number(raw, "frame_angle", "") if "frame_angle" in raw else None
     spread = max(abs(p - q) for p in points for q in points)
@@ -89,9 +89,9 @@ def build_task(raw: dict, r: Reader) -> SynthesisTask:
     min_length = r.number(raw, "min_length", "", default=0.0, non_negative=True)
     box = r.number(raw, "box", "", default=_round(reach + 2 * spread), positive=True)
     if min_length >= max_length:
-        raise r.fail("min_length", "synthesis.no_lengths", low=min_length, high=max_length)
+        raise r.fail("min_length", "synthesis_no_lengths", low=min_length, high=max_length)
     if pivot is not None and max(abs(pivot.real), abs(pivot.imag)) > box:
-        raise r.fail("crank_pivot", "synthesis.pivot_outside", box=box)
+        raise r.fail("crank_pivot", "synthesis_pivot_outside", box=box)
     return SynthesisTask(points=points, timing=timing, crank_angles=angles, crank_steps=steps,
                          crank_pivot=pivot, frame_angle=frame_angle, max_length=max_length,
                          min_length=min_length, box=box,
@@ -104,12 +104,12 @@ def _points(raw: dict, r: Reader) -> tuple[complex, ...]:
     if value is None:
         raise r.fail("points", "missing")
     if not isinstance(value, list):
-        raise r.fail("points", "synthesis.points_list", value=given(value))
+        raise r.fail("points", "synthesis_points_list", value=given(value))
     if not 3 <= len(value) <= MOST_POINTS:
-        raise r.fail("points", "synthesis.points_count", count=len(value), most=MOST_POINTS)
+        raise r.fail("points", "synthesis_points_count", count=len(value), most=MOST_POINTS)
     points = tuple(r.vector(p, f"points[{i}]") for i, p in enumerate(value))
     if max(abs(p - points[0]) for p in points) == 0:
-        raise r.fail("points", "synthesis.points_same")
+        raise r.fail("points", "synthesis_points_same")
     return points
 
 
@@ -119,11 +119,11 @@ def _list(raw: dict, name: str, r: Reader, length: int | None) -> tuple[float, .
         return None
     value = raw[name]
     if not isinstance(value, list):
-        raise r.fail(name, "synthesis.angle_list", value=given(value))
+        raise r.fail(name, "synthesis_angle_list", value=given(value))
     numbers = tuple(r.number({str(i): v for i, v in enumerate(value)}, str(i), name)
                     for i in range(len(value)))
     if length is not None and len(numbers) != length:
-        raise r.fail(name, "synthesis.list_length", count=len(numbers), wanted=length)
+        raise r.fail(name, "synthesis_list_length", count=len(numbers), wanted=length)
     return numbers
 
 

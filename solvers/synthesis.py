@@ -37,12 +37,13 @@ from .kinematics import solve
 TAU = 2 * math.pi
 SAMPLES = 120  # coupler-curve samples per turn where the timing is free (refined by projection)
 START_GRID = 72  # crank angles tried for the first point where only the steps are given
+STARTS_GRID = np.linspace(0, 2 * math.pi, START_GRID, endpoint=False)
 MARGIN = 1e-6  # of the largest length: how far from a change point (s + l = p + q) x, y, z stay
 TURN = 720  # positions of the whole turn the answer is re-solved at
 AGREE = 1e-7  # re-solved and searched coupler points agree to this share of the task's size
-DEFAULT_BUDGET = 60_000
-DEFAULT_SECONDS = 8.0
-STRATEGY = "best1bin"
+DEFAULT_BUDGET = 300_000
+DEFAULT_SECONDS = 6.0
+STRATEGY = "rand1bin"  # measured against best1bin and currenttobest1bin: docs/synthesis.md
 POPSIZE = 15
 STARTS = 8
 RESTARTS = 3
@@ -123,6 +124,98 @@ def coupler(shape: np.ndarray, theta: np.ndarray, branch: float) -> tuple[np.nda
 # the problem the optimisers see
 
 
+def procrustes(local: np.ndarray, target: np.ndarray, pivot: complex | None,
+               angle: float | None) -> tuple[np.ndarray, np.ndarray]:
+    """(O, e^{iθ₀}) laying the local points (…, n) on the targets by a rigid motion with
+    least squared misses: closed form (Procrustes), the pivot or the angle (degrees) kept
+    where given."""
+    fixed = local.shape[:-1] + (1,)
+    if angle is not None:
+        rot = np.full(fixed, np.exp(1j * math.radians(angle)))
+    else:
+        if pivot is None:
+            lc, tc = local - local.mean(axis=-1, keepdims=True), target - target.mean()
+        else:
+            lc, tc = local, target - pivot
+        s = np.sum(np.conj(lc) * tc, axis=-1, keepdims=True)
+        rot = np.where(s == 0, 1.0, s / np.where(s == 0, 1, np.abs(s)))
+    if pivot is None:
+        return np.mean(target - rot * local, axis=-1, keepdims=True), rot
+    return np.full(fixed, pivot), rot
+
+
+def nearest(curve: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each target's squared distance to a sampled closed curve (S, K), measured to the
+    nearest sample's two chords, and that sample's index: (S, n) each."""
+    # the nearest sample in single precision (its index is all that is kept; the distance
+    # is then measured in double precision): half the memory traffic of the (S, n, K) table
+    planar = np.array([target.real, target.imag], dtype=np.float32).T  # (n, 2)
+    samples = np.stack([curve.real, curve.imag], axis=1).astype(np.float32)  # (S, 2, K)
+    square = np.einsum("sck,sck->sk", samples, samples)
+    k = np.argmin(square[:, None, :] - 2 * (planar @ samples), axis=-1)  # (S, n)
+    rows = np.arange(curve.shape[0])[:, None]
+    here = curve[rows, k]
+    rel = target - here
+    best = rel.real ** 2 + rel.imag ** 2
+    for side in (-1, 1):
+        chord = curve[rows, (k + side) % curve.shape[1]] - here
+        t = np.clip((rel * np.conj(chord)).real / np.maximum(np.abs(chord) ** 2, 1e-300), 0, 1)
+        miss = rel - t * chord
+        best = np.minimum(best, miss.real ** 2 + miss.imag ** 2)
+    return best, k
+
+
+def outside(task: SynthesisTask, x: np.ndarray, pivot: np.ndarray, rot: np.ndarray) -> np.ndarray:
+    """How far each candidate breaks its bounds (0 when it keeps them): a link longer than
+    ``max_length``, a pivot outside the box."""
+    r1, r2, r3, r4 = lengths(x)
+    big, box = task.max_length, task.box
+    over = sum(np.maximum(0, r - big) for r in (r1, r3, r4))
+    pivot, rot = pivot[..., 0], rot[..., 0]
+    d = pivot + r1.reshape(pivot.shape) * rot
+    for p in (pivot, d):
+        over = over + (np.maximum(0, np.abs(p.real) - box)
+                       + np.maximum(0, np.abs(p.imag) - box)).reshape(over.shape)
+    return over
+
+
+class _Scale:
+    """The search's own coordinates ``u``: lengths on a log scale, offsets and pivots on an
+    asinh scale around the points, so that a search whose bounds are fifty times the path's
+    size still spends its samples where four-bars of the path's size are. The map is one to
+    one onto the same bounds: nothing the task allows is left out."""
+
+    def __init__(self, target: np.ndarray, bounds: list[tuple[float, float]], kinds: list[str]):
+        spread = float(np.max(np.abs(target[:, None] - target[None, :])))
+        self.unit, floor, centre = spread / 4, spread * 1e-4, target.mean()
+        self.kinds, self.bounds = kinds, np.array(bounds)
+        # an offset is centred on 0 (the coupler's own frame), a pivot on the points
+        self.middles = np.array([{"pivot_x": centre.real, "pivot_y": centre.imag}.get(k, 0.0)
+                                 for k in kinds])
+        self.search_bounds = []
+        for kind, (lo, hi), mid in zip(kinds, bounds, self.middles):
+            if kind == "log":
+                self.search_bounds.append((math.log(max(lo, min(floor, hi / 10))), math.log(hi)))
+            elif kind == "linear":
+                self.search_bounds.append((lo, hi))
+            else:
+                self.search_bounds.append((math.asinh((lo - mid) / self.unit),
+                                           math.asinh((hi - mid) / self.unit)))
+
+    def decode(self, u: np.ndarray) -> np.ndarray:
+        """The four-bar's numbers (rows as ``bounds``) from the search's coordinates."""
+        x = np.empty_like(u)
+        for i, kind in enumerate(self.kinds):
+            if kind == "log":
+                x[i] = np.exp(u[i])
+            elif kind == "linear":
+                x[i] = u[i]
+            else:
+                x[i] = self.middles[i] + self.unit * np.sinh(u[i])
+        lo, hi = (b[:, None] if x.ndim == 2 else b for b in self.bounds.T)
+        return np.clip(x, lo, hi)
+
+
 class _Problem:
     """The task turned into vectors: which numbers the search varies, their bounds, and the
     error of many candidates at once."""
@@ -132,7 +225,6 @@ class _Problem:
         self.target = np.array(task.points)
         self.n = len(self.target)
         self.scale = float(np.sum(np.abs(self.target - self.target.mean()) ** 2)) or 1.0
-        self.planar = np.array([self.target.real, self.target.imag])  # (2, n)
         big, box = task.max_length, task.box
         low = max(task.min_length, 1e-9 * big)
         self.margin = MARGIN * big
@@ -142,60 +234,20 @@ class _Problem:
         self.free_angle = task.frame_angle is None
         # the placement the search varies (the rest is fixed, or found in closed form)
         self.placed = task.timing == "free"
-        place = []
+        place, kinds = [], ["log"] * 4 + ["offset"] * 2
         if self.placed and self.free_angle:
             place.append((-math.pi, math.pi))
+            kinds.append("linear")
         if self.placed and self.free_pivot:
             place += [(-box, box), (-box, box)]
+            kinds += ["pivot_x", "pivot_y"]
         self.bounds = self.shape_bounds + place
-        self._warp()
+        self.scale_ = _Scale(self.target, self.bounds, kinds)
+        self.search_bounds = self.scale_.search_bounds
         if task.timing == "angles":
             self.given = np.radians(np.array(task.crank_angles))
         elif task.timing == "steps":
             self.given = np.radians(np.concatenate([[0.0], np.cumsum(task.crank_steps)]))
-
-    # --- where the search looks: the task's scale, not the bounds' ------------------------
-
-    def _warp(self) -> None:
-        """The search's own coordinates ``u``: lengths on a log scale, offsets and pivots on
-        an asinh scale around the points, so that a search whose bounds are fifty times the
-        path's size still spends its samples where four-bars of the path's size are. The
-        map is one to one onto the same bounds: nothing the task allows is left out."""
-        spread = float(np.max(np.abs(self.target[:, None] - self.target[None, :])))
-        self.unit = spread / 4
-        centre = self.target.mean()
-        floor = spread * 1e-4
-        kinds = ["log"] * 4 + ["asinh"] * 2
-        middles = [0.0] * 6
-        if self.placed and self.free_angle:
-            kinds.append("linear")
-            middles.append(0.0)
-        if self.placed and self.free_pivot:
-            kinds += ["asinh", "asinh"]
-            middles += [centre.real, centre.imag]
-        self.kinds, self.middles = kinds, np.array(middles)
-        self.search_bounds = []
-        for kind, (lo, hi), mid in zip(kinds, self.bounds, middles):
-            if kind == "log":
-                self.search_bounds.append((math.log(max(lo, min(floor, hi / 10))), math.log(hi)))
-            elif kind == "asinh":
-                self.search_bounds.append((math.asinh((lo - mid) / self.unit),
-                                           math.asinh((hi - mid) / self.unit)))
-            else:
-                self.search_bounds.append((lo, hi))
-
-    def decode(self, u: np.ndarray) -> np.ndarray:
-        """The four-bar's numbers (rows as ``bounds``) from the search's coordinates."""
-        x = np.empty_like(u)
-        for i, kind in enumerate(self.kinds):
-            if kind == "log":
-                x[i] = np.exp(u[i])
-            elif kind == "asinh":
-                x[i] = self.middles[i] + self.unit * np.sinh(u[i])
-            else:
-                x[i] = u[i]
-        lo, hi = np.array(self.bounds).T
-        return np.clip(x, lo[:, None] if x.ndim == 2 else lo, hi[:, None] if x.ndim == 2 else hi)
 
     # --- placement: O and the frame line's direction ---------------------------------
 
@@ -210,44 +262,14 @@ class _Problem:
             k += self.free_angle
             pivot = (x[k] + 1j * x[k + 1]) if self.free_pivot else np.full(count, task.crank_pivot)
             return pivot[:, None], np.exp(1j * angle)[:, None]
-        if not self.free_pivot and not self.free_angle:
-            return (np.full((local.shape[0], 1), task.crank_pivot),
-                    np.full((local.shape[0], 1), np.exp(1j * math.radians(task.frame_angle))))
-        if self.free_angle:
-            if self.free_pivot:
-                lc = local - local.mean(axis=-1, keepdims=True)
-                tc = t - t.mean()
-            else:
-                lc, tc = local, t - task.crank_pivot
-            s = np.sum(np.conj(lc) * tc, axis=-1, keepdims=True)
-            rot = np.where(np.abs(s) > 0, s / np.where(s == 0, 1, np.abs(s)), 1.0)
-        else:
-            rot = np.full(local.shape[:-1] + (1,), np.exp(1j * math.radians(task.frame_angle)))
-        if self.free_pivot:
-            pivot = np.mean(t - rot * local, axis=-1, keepdims=True)
-        else:
-            pivot = np.full(rot.shape, task.crank_pivot)
-        return pivot, rot
-
-    def outside(self, x: np.ndarray, pivot: np.ndarray, rot: np.ndarray) -> np.ndarray:
-        """How far each candidate breaks its bounds (0 when it keeps them): a link longer
-        than ``max_length``, a pivot outside the box."""
-        r1, r2, r3, r4 = lengths(x)
-        big, box = self.task.max_length, self.task.box
-        over = sum(np.maximum(0, r - big) for r in (r1, r3, r4))
-        pivot, rot = pivot[..., 0], rot[..., 0]
-        d = pivot + r1.reshape(pivot.shape) * rot
-        for p in (pivot, d):
-            over = over + (np.maximum(0, np.abs(p.real) - box)
-                           + np.maximum(0, np.abs(p.imag) - box)).reshape(over.shape)
-        return over
+        return procrustes(local, t, task.crank_pivot, task.frame_angle)
 
     # --- the search's objective ----------------------------------------------------------
 
     def cost(self, u: np.ndarray) -> np.ndarray:
         """Σ of squared distances for each column of the search's ``u`` (the better branch),
         with the bounds' breaches ranked behind every candidate that keeps them."""
-        x = self.decode(u)
+        x = self.scale_.decode(u)
         best = np.full(x.shape[1], np.inf)
         for branch in (1.0, -1.0):
             best = np.minimum(best, self._cost(x, branch))
@@ -261,8 +283,8 @@ class _Problem:
             pivot, rot = self.placement(x, m)
             err = np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)
         else:
-            err, pivot, rot = self._steps(x, branch)
-        over = self.outside(x, pivot, rot)
+            err, pivot, rot, _ = self._steps(x, branch)
+        over = outside(self.task, x, pivot, rot)
         err = np.where(np.isfinite(err), err, 1e300)
         return np.where(over > 0, 1e12 * self.scale * (1 + over), err)
 
@@ -272,35 +294,22 @@ class _Problem:
         theta = np.linspace(0, TAU, SAMPLES, endpoint=False)
         _, _, m = coupler(x, theta, branch)
         pivot, rot = self.placement(x, m)
-        curve = pivot + rot * m  # (S, K)
-        near = np.stack([curve.real, curve.imag], axis=-1) @ self.planar  # (S, K, n): c·t
-        dist = (curve.real ** 2 + curve.imag ** 2)[:, :, None] - 2 * near
-        k = np.argmin(dist, axis=1)  # (S, n): each target's nearest sample
-        rows = np.arange(curve.shape[0])[:, None]
-        here = curve[rows, k]
-        rel = self.target - here
-        best = rel.real ** 2 + rel.imag ** 2
-        for side in (-1, 1):
-            chord = curve[rows, (k + side) % SAMPLES] - here
-            t = np.clip((rel * np.conj(chord)).real / np.maximum(np.abs(chord) ** 2, 1e-300), 0, 1)
-            miss = rel - t * chord
-            best = np.minimum(best, miss.real ** 2 + miss.imag ** 2)
+        best, k = nearest(pivot + rot * m, self.target)
         travel = np.sum((np.diff(k, axis=-1)) % SAMPLES, axis=-1)
         excess = np.maximum(0, travel - SAMPLES) / SAMPLES
         return np.sum(best, axis=-1) + excess * self.scale, pivot, rot
 
     def _steps(self, x, branch):
-        """The best start on a grid of crank angles (the steps fix the rest)."""
-        start = np.linspace(0, TAU, START_GRID, endpoint=False)
-        theta = (start[:, None] + self.given[None, :]).ravel()  # (G·n,)
+        """The best start on a grid of crank angles (the steps fix the rest): the error,
+        O, e^{iθ₀} and the start's index, each (S,)."""
+        theta = (STARTS_GRID[:, None] + self.given[None, :]).ravel()  # (G·n,)
         _, _, m = coupler(x, theta, branch)
         m = m.reshape(x.shape[1], START_GRID, self.n)
         pivot, rot = self.placement(x, m)
         err = np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)  # (S, G)
-        err = np.where(np.isfinite(err), err, np.inf)
-        j = np.argmin(err, axis=-1)
+        j = np.argmin(np.where(np.isfinite(err), err, np.inf), axis=-1)
         rows = np.arange(x.shape[1])
-        return err[rows, j], pivot[rows, j], rot[rows, j]
+        return err[rows, j], pivot[rows, j], rot[rows, j], j
 
     # --- from a search vector to a linkage, and back ----------------------------------------
 
@@ -312,21 +321,15 @@ class _Problem:
             theta = np.linspace(0, TAU, SAMPLES * 8, endpoint=False)
             _, _, m = coupler(col, theta, branch)
             pivot, rot = self.placement(col, m)
-            curve = (pivot + rot * m)[0]
-            k = np.argmin(np.abs(curve[None, :] - self.target[:, None]), axis=-1)
+            k = nearest(pivot + rot * m, self.target)[1][0]
             angles = theta[k[0]] + np.concatenate([[0.0], np.cumsum(np.mod(np.diff(theta[k]), TAU))])
         elif self.task.timing == "angles":
             angles = self.given
             _, _, m = coupler(col, angles, branch)
             pivot, rot = self.placement(col, m)
         else:
-            start = np.linspace(0, TAU, START_GRID, endpoint=False)
-            theta = start[:, None] + self.given[None, :]
-            _, _, m = coupler(col, theta.ravel(), branch)
-            m = m.reshape(1, START_GRID, self.n)
-            pivot, rot = self.placement(col, m)
-            j = int(np.argmin(np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)))
-            angles, pivot, rot = theta[j], pivot[0, j], rot[0, j]
+            _, pivot, rot, j = self._steps(col, branch)
+            angles = STARTS_GRID[j[0]] + self.given
         r1, r2, r3, r4 = (float(v[0]) for v in lengths(col))
         return Linkage(O=complex(np.ravel(pivot)[0]), frame_angle=float(np.angle(np.ravel(rot)[0])),
                        frame=r1, crank=r2, coupler=r3, rocker=r4,
@@ -342,7 +345,7 @@ class _Polish:
     """``least_squares`` over shape, placement and timing, the bounds it cannot express as
     box bounds (lengths, pivots in the box, one turn) as steep hinges."""
 
-    WEIGHT = 1e4
+    WEIGHT = 1e4  # the hinges' first weight; raised ×100 while a rule is still broken
 
     def __init__(self, problem: _Problem, linkage: Linkage):
         self.p, self.task = problem, problem.task
@@ -350,7 +353,7 @@ class _Polish:
         self.start = linkage
 
     def vector(self, link: Linkage) -> np.ndarray:
-        x = [link.crank, *self._excess(link), link.point.real, link.point.imag]
+        x = [link.crank, *excess(link), link.point.real, link.point.imag]
         if self.task.frame_angle is None:
             x.append(link.frame_angle)
         if self.task.crank_pivot is None:
@@ -362,60 +365,28 @@ class _Polish:
             x.append(a[0])
         return np.array(x, dtype=float)
 
-    @staticmethod
-    def _excess(link: Linkage) -> tuple[float, float, float]:
-        """(x, y, z) from the four lengths (the inverse of ``lengths``)."""
-        u, v, w = link.frame - link.crank, link.coupler - link.crank, link.rocker - link.crank
-        return (v + w - u) / 2, (u + w - v) / 2, (u + v - w) / 2
-
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        lo, hi = zip(*self.p.shape_bounds)
-        lo, hi = list(lo), list(hi)
-        box = self.task.box
+        box, turns = self.task.box, (-4 * math.pi, 4 * math.pi)
+        pairs = list(self.p.shape_bounds)
         if self.task.frame_angle is None:
-            lo.append(-4 * math.pi)
-            hi.append(4 * math.pi)
+            pairs.append(turns)
         if self.task.crank_pivot is None:
-            lo += [-box, -box]
-            hi += [box, box]
+            pairs += [(-box, box), (-box, box)]
         if self.task.timing == "free":
-            lo += [-4 * math.pi] + [0.0] * (self.p.n - 1)
-            hi += [4 * math.pi] + [TAU] * (self.p.n - 1)
+            pairs += [turns] + [(0.0, TAU)] * (self.p.n - 1)
         elif self.task.timing == "steps":
-            lo.append(-4 * math.pi)
-            hi.append(4 * math.pi)
-        return np.array(lo), np.array(hi)
+            pairs.append(turns)
+        return tuple(np.array(v) for v in zip(*pairs))
 
-    def linkage(self, x: np.ndarray) -> Linkage:
-        k = 6
-        frame_angle = x[k] if self.task.frame_angle is None else math.radians(self.task.frame_angle)
-        k += self.task.frame_angle is None
-        pivot = complex(x[k], x[k + 1]) if self.task.crank_pivot is None else self.task.crank_pivot
-        k += 2 * (self.task.crank_pivot is None)
-        if self.task.timing == "free":
-            angles = x[k] + np.concatenate([[0.0], np.cumsum(x[k + 1:])])
-        elif self.task.timing == "steps":
-            angles = x[k] + self.p.given
-        else:
-            angles = self.p.given
-        r1, r2, r3, r4 = (float(v[0]) for v in lengths(x[:4, None]))
-        return Linkage(O=pivot, frame_angle=float(frame_angle), frame=r1, crank=r2, coupler=r3,
-                       rocker=r4, point=complex(x[4], x[5]), branch=self.branch,
-                       angles=tuple(float(a) for a in angles), turning=self.task.turning)
-
-    def many(self, x: np.ndarray) -> np.ndarray:
-        """The residuals of every column of ``x`` at once (rows: the points' x and y misses,
-        then the weighted breaches)."""
-        task, count = self.task, x.shape[1]
-        k = 6
+    def unpack(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """O, e^{iθ₀} (S,) and the crank's angles (S, n) of each column of ``x``."""
+        task, count, k = self.task, x.shape[1], 6
         if task.frame_angle is None:
-            rot = np.exp(1j * x[k])
-            k += 1
+            rot, k = np.exp(1j * x[k]), k + 1
         else:
             rot = np.full(count, np.exp(1j * math.radians(task.frame_angle)))
         if task.crank_pivot is None:
-            pivot = x[k] + 1j * x[k + 1]
-            k += 2
+            pivot, k = x[k] + 1j * x[k + 1], k + 2
         else:
             pivot = np.full(count, task.crank_pivot)
         if task.timing == "free":
@@ -425,16 +396,30 @@ class _Polish:
             theta = x[k][:, None] + self.p.given[None, :]
         else:
             theta = np.broadcast_to(self.p.given, (count, self.p.n))
+        return pivot, rot, theta
+
+    def linkage(self, x: np.ndarray) -> Linkage:
+        pivot, rot, theta = self.unpack(x[:, None])
+        r1, r2, r3, r4 = (float(v[0]) for v in lengths(x[:4, None]))
+        angle = float(np.angle(rot[0])) if self.task.frame_angle is None else math.radians(self.task.frame_angle)
+        return Linkage(O=complex(pivot[0]), frame_angle=angle, frame=r1, crank=r2, coupler=r3,
+                       rocker=r4, point=complex(x[4], x[5]), branch=self.branch,
+                       angles=tuple(float(a) for a in theta[0]), turning=self.task.turning)
+
+    def many(self, x: np.ndarray) -> np.ndarray:
+        """The residuals of every column of ``x`` at once (rows: the points' x and y misses,
+        then the weighted breaches)."""
+        pivot, rot, theta = self.unpack(x)
         _, _, m = coupler(x, theta, self.branch)
         miss = (pivot[:, None] + rot[:, None] * m - self.p.target).T  # (n, S)
         r1, _, r3, r4 = lengths(x)
-        big, box = task.max_length, task.box
+        big, box = self.task.max_length, self.task.box
         d = pivot + r1 * rot
         over = [np.maximum(0, r - big) for r in (r1, r3, r4)]
         over += [np.maximum(0, np.abs(c) - box) for q in (pivot, d) for c in (q.real, q.imag)]
-        if task.timing == "free":
+        if self.task.timing == "free":
             over.append(np.maximum(0, theta[:, -1] - theta[:, 0] - TAU))
-        return np.vstack([miss.real, miss.imag, self.WEIGHT * np.array(over)])
+        return np.vstack([miss.real, miss.imag, self.weight * np.array(over)])
 
     def residuals(self, x: np.ndarray) -> np.ndarray:
         return self.many(x[:, None])[:, 0]
@@ -449,12 +434,28 @@ class _Polish:
         return (both[:, 1:] - both[:, :1]) / h
 
     def run(self, evaluations: int) -> tuple[Linkage, int]:
+        """The polished linkage and the evaluations spent. A hinge lets a rule go by a
+        hair (the weight against the error's pull): the weight is raised and the polish
+        goes on from there until the rules hold, as a penalty method's continuation does."""
         lo, hi = self.limits = self.bounds()
-        x0 = np.clip(self.vector(self.start), lo + 1e-12 * (hi - lo), hi - 1e-12 * (hi - lo))
-        fit = least_squares(self.residuals, x0, jac=self.jacobian, bounds=(lo, hi),
-                            max_nfev=max(evaluations // (len(x0) + 2), 10),
-                            x_scale="jac", ftol=1e-14, xtol=1e-14, gtol=1e-14)
-        return self.linkage(fit.x), int(fit.nfev + (fit.njev or 0) * (len(x0) + 1))
+        x = np.clip(self.vector(self.start), lo + 1e-12 * (hi - lo), hi - 1e-12 * (hi - lo))
+        spent, self.weight = 0, self.WEIGHT
+        for _ in range(4):
+            fit = least_squares(self.residuals, x, jac=self.jacobian, bounds=(lo, hi),
+                                max_nfev=max(evaluations // (len(x) + 2), 10),
+                                x_scale="jac", ftol=1e-14, xtol=1e-14, gtol=1e-14)
+            x = fit.x
+            spent += int(fit.nfev + (fit.njev or 0) * (len(x) + 1))
+            if keeps_rules(settle(self.linkage(x), self.task), self.task):
+                break
+            self.weight *= 100
+        return settle(self.linkage(x), self.task), spent
+
+
+def excess(link: Linkage) -> tuple[float, float, float]:
+    """(x, y, z) from the four lengths (the inverse of ``lengths``)."""
+    u, v, w = link.frame - link.crank, link.coupler - link.crank, link.rocker - link.crank
+    return (v + w - u) / 2, (u + w - v) / 2, (u + v - w) / 2
 
 
 def points_of(link: Linkage, angles=None) -> np.ndarray:
@@ -467,7 +468,7 @@ def positions_of(link: Linkage, angles=None) -> tuple[np.ndarray, np.ndarray, np
     """A, B and M at the crank angles ``angles`` (from the frame line; default the
     precision points'), in the task's frame."""
     theta = np.array(link.angles if angles is None else angles, dtype=float)
-    shape = np.array([[link.crank], *[[v] for v in _Polish._excess(link)],
+    shape = np.array([[link.crank], *[[v] for v in excess(link)],
                       [link.point.real], [link.point.imag]])
     a, b, m = coupler(shape, theta, link.branch)
     rot = np.exp(1j * link.frame_angle)
@@ -488,10 +489,41 @@ def breaches(link: Linkage, task: SynthesisTask) -> np.ndarray:
     return np.array(over)
 
 
+def settle(link: Linkage, task: SynthesisTask) -> Linkage:
+    """The polished linkage with what its hinges let slip by a hair (at most a millionth of
+    the task's size: the weight against the error's pull) put back on the bound itself: a
+    length on max_length, a pivot on the box's side, the points' span on one turn. The
+    error is then re-solved as for any linkage; a larger breach is left for
+    ``keeps_rules`` to refuse."""
+    hair = 1e-6 * max(task.max_length, task.box)
+    big, box = task.max_length, task.box
+
+    def snap(value: float, low: float, high: float) -> float:
+        return min(max(value, low), high) if low - hair <= value <= high + hair else value
+
+    def inside(p: complex) -> complex:
+        return complex(snap(p.real, -box, box), snap(p.imag, -box, box))
+
+    pivot = link.O if task.crank_pivot is not None else inside(link.O)
+    d = inside(link.D)
+    frame, angle = link.frame, link.frame_angle
+    if d != link.D or pivot != link.O:
+        frame, angle = abs(d - pivot), float(np.angle(d - pivot))
+    a = np.array(link.angles)
+    if task.timing == "free" and TAU < a[-1] - a[0] <= TAU + hair:
+        a = a[0] + (a - a[0]) * (TAU / (a[-1] - a[0]))
+    return Linkage(O=pivot, frame_angle=angle if task.frame_angle is None else link.frame_angle,
+                   frame=snap(frame, task.min_length, big),
+                   crank=snap(link.crank, task.min_length, big),
+                   coupler=snap(link.coupler, task.min_length, big),
+                   rocker=snap(link.rocker, task.min_length, big), point=link.point,
+                   branch=link.branch, angles=tuple(float(v) for v in a), turning=link.turning)
+
+
 def keeps_rules(link: Linkage, task: SynthesisTask) -> bool:
-    """Every rule of the task held exactly (to a billionth of the task's size): Grashof with
-    the crank shortest, the lengths, the box, the order within one turn, the timing."""
-    slack = 1e-9 * max(task.max_length, task.box)
+    """Every rule of the task held (to a float's last digits): Grashof with the crank
+    shortest, the lengths, the box, the order within one turn, the timing."""
+    slack = 1e-12 * max(task.max_length, task.box)
     lengths_ = (link.frame, link.crank, link.coupler, link.rocker)
     s, l = min(lengths_), max(lengths_)
     grashof = s + l < sum(lengths_) - s - l and link.crank == s
@@ -499,7 +531,7 @@ def keeps_rules(link: Linkage, task: SynthesisTask) -> bool:
     box = all(abs(c) <= task.box + slack for p in (link.O, link.D) for c in (p.real, p.imag))
     a = np.array(link.angles)
     if task.timing == "free":
-        order = bool(np.all(np.diff(a) >= -1e-12)) and a[-1] - a[0] <= TAU + 1e-9
+        order = bool(np.all(np.diff(a) >= 0)) and a[-1] - a[0] <= TAU * (1 + 1e-12)
     elif task.timing == "steps":
         order = np.allclose(np.diff(a), np.radians(task.crank_steps), atol=1e-9)
     else:
@@ -586,7 +618,7 @@ def _starts(problem: _Problem, found) -> list[tuple[np.ndarray, int]]:
     ordered = np.argsort(found.population_energies)
     starts: list[tuple[np.ndarray, int]] = []
     for i in ordered:
-        x = problem.decode(population[i])
+        x = problem.scale_.decode(population[i])
         if any(np.allclose(x, s, rtol=1e-3, atol=1e-9) for s, _ in starts):
             continue
         costs = [problem._cost(x[:, None], b)[0] for b in (1.0, -1.0)]
