@@ -73,9 +73,10 @@ def build_task(raw: dict, r: Reader) -> SynthesisTask:
     angles = _list(raw, "crank_angles", r, n if timing == "angles" else None)
     steps = _list(raw, "crank_steps", r, n - 1 if timing == "steps" else None)
     for name, value, wanted in (("crank_angles", angles, "angles"), ("crank_steps", steps, "steps")):
-        if (value is None) == (timing == wanted):
-            raise r.fail(name, "synthesis_timing_list" if value is None else "synthesis_not_for_timing",
-                         timing=timing, wanted=wanted)
+        if value is None and timing == wanted:
+            raise r.fail(name, "synthesis_timing_list", wanted=wanted)
+        if value is not None and timing != wanted:
+            raise r.fail(name, "synthesis_not_for_timing", timing=timing, wanted=wanted)
     if steps is not None:
         if any(s == 0 for s in steps) or len({math.copysign(1, s) for s in steps}) > 1:
             raise r.fail("crank_steps", "synthesis_step_signs", value=list(steps))
