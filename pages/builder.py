@@ -244,6 +244,7 @@ def study(scene: Scene) -> None:
 
 st.title(f"{BUILDER.icon} {t(BUILDER.title)}")
 st.caption(t("build.intro"))
+builder.from_link()
 start_controls()
 if st.session_state.get("build_message"):
     st.error(message(st.session_state["build_message"]))

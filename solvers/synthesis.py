@@ -36,8 +36,6 @@ from .kinematics import solve
 
 TAU = 2 * math.pi
 SAMPLES = 120  # coupler-curve samples per turn where the timing is free (refined by projection)
-START_GRID = 72  # crank angles tried for the first point where only the steps are given
-STARTS_GRID = np.linspace(0, 2 * math.pi, START_GRID, endpoint=False)
 MARGIN = 1e-6  # of the largest length: how far from a change point (s + l = p + q) x, y, z stay
 TURN = 720  # positions of the whole turn the answer is re-solved at
 AGREE = 1e-7  # re-solved and searched coupler points agree to this share of the task's size
@@ -241,6 +239,9 @@ class _Problem:
         if self.placed and self.free_pivot:
             place += [(-box, box), (-box, box)]
             kinds += ["pivot_x", "pivot_y"]
+        if task.timing == "steps":  # the crank's angle at the first point (the steps give the rest)
+            place.append((0.0, TAU))
+            kinds.append("linear")
         self.bounds = self.shape_bounds + place
         self.scale_ = _Scale(self.target, self.bounds, kinds)
         self.search_bounds = self.scale_.search_bounds
@@ -278,12 +279,10 @@ class _Problem:
     def _cost(self, x: np.ndarray, branch: float) -> np.ndarray:
         if self.task.timing == "free":
             err, pivot, rot = self._free(x, branch)
-        elif self.task.timing == "angles":
-            _, _, m = coupler(x, self.given, branch)
+        else:
+            _, _, m = coupler(x, self.timed(x), branch)
             pivot, rot = self.placement(x, m)
             err = np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)
-        else:
-            err, pivot, rot, _ = self._steps(x, branch)
         over = outside(self.task, x, pivot, rot)
         err = np.where(np.isfinite(err), err, 1e300)
         return np.where(over > 0, 1e12 * self.scale * (1 + over), err)
@@ -299,23 +298,18 @@ class _Problem:
         excess = np.maximum(0, travel - SAMPLES) / SAMPLES
         return np.sum(best, axis=-1) + excess * self.scale, pivot, rot
 
-    def _steps(self, x, branch):
-        """The best start on a grid of crank angles (the steps fix the rest): the error,
-        O, e^{iθ₀} and the start's index, each (S,)."""
-        theta = (STARTS_GRID[:, None] + self.given[None, :]).ravel()  # (G·n,)
-        _, _, m = coupler(x, theta, branch)
-        m = m.reshape(x.shape[1], START_GRID, self.n)
-        pivot, rot = self.placement(x, m)
-        err = np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)  # (S, G)
-        j = np.argmin(np.where(np.isfinite(err), err, np.inf), axis=-1)
-        rows = np.arange(x.shape[1])
-        return err[rows, j], pivot[rows, j], rot[rows, j], j
+    def timed(self, x: np.ndarray) -> np.ndarray:
+        """The crank's angles at the points, from the frame line: given, or the search's
+        first angle and the given steps."""
+        if self.task.timing == "steps":
+            return x[-1][:, None] + self.given[None, :]
+        return self.given
 
     # --- from a search vector to a linkage, and back ----------------------------------------
 
     def linkage(self, x: np.ndarray, branch: int) -> Linkage:
         """The linkage a search vector stands for (its crank angles found as the search
-        found them: nearest, best start, or given)."""
+        found them: nearest on the curve, or from the first angle and the steps, or given)."""
         col = x[:, None]
         if self.task.timing == "free":
             theta = np.linspace(0, TAU, SAMPLES * 8, endpoint=False)
@@ -323,13 +317,10 @@ class _Problem:
             pivot, rot = self.placement(col, m)
             k = nearest(pivot + rot * m, self.target)[1][0]
             angles = theta[k[0]] + np.concatenate([[0.0], np.cumsum(np.mod(np.diff(theta[k]), TAU))])
-        elif self.task.timing == "angles":
-            angles = self.given
+        else:
+            angles = np.ravel(self.timed(col))
             _, _, m = coupler(col, angles, branch)
             pivot, rot = self.placement(col, m)
-        else:
-            _, pivot, rot, j = self._steps(col, branch)
-            angles = STARTS_GRID[j[0]] + self.given
         r1, r2, r3, r4 = (float(v[0]) for v in lengths(col))
         return Linkage(O=complex(np.ravel(pivot)[0]), frame_angle=float(np.angle(np.ravel(rot)[0])),
                        frame=r1, crank=r2, coupler=r3, rocker=r4,

@@ -17,7 +17,7 @@ import numpy as np
 import streamlit as st
 
 from mechanisms import Scene, SceneError
-from mechanisms.link import PARAMETER, encode
+from mechanisms.link import PARAMETER, decode, encode
 from mechanisms.loader import build_scene
 from mechanisms.messages import Text, text_of
 from mechanisms.sketch import add_point, drag, drawn, from_scene, snap, tables, template
@@ -163,6 +163,25 @@ def start_from(scene: Scene) -> None:
         positions = {}
         st.session_state["build_message"] = text_of(exc)
     replace(in_words(from_scene(scene, positions)))
+
+
+def from_link() -> None:
+    """A scene carried by the page's link (``?s=``, as the synthesis page's *Open in the
+    builder* sends one) starts the tables, once per link; the link is then taken out of the
+    address, since the tables are what the page shows from there on. A damaged link, or one
+    of a gear train or a rotor, is said in words and the tables stay as they were."""
+    text = st.query_params.get(PARAMETER)
+    if not text:
+        return
+    st.query_params.pop(PARAMETER, None)
+    try:
+        scene = decode(text)
+        if not isinstance(scene, Scene):
+            raise SceneError(Text("build.link_not_linkage"))
+    except SceneError as exc:
+        st.session_state["build_message"] = text_of(exc)
+        return
+    start_from(scene)
 
 
 def in_words(doc: dict) -> dict:

@@ -30,6 +30,8 @@ CHAPTERS = (
 
 # not a chapter: where a student's own mechanism is made, for every linkage chapter
 BUILDER = Chapter("pages/builder.py", "build.title", "build.summary", ":material/draw:")
+# not a chapter (beyond the book): a four-bar found for the points of a path, opened in the builder
+SYNTHESIS = Chapter("pages/synthesis.py", "syn.title", "syn.summary", ":material/design_services:")
 # for lecturers: a task's variants with keys and sheets; students open theirs by its code
 VARIANTS = Chapter("pages/variants.py", "var.title", "var.summary", ":material/quiz:")
 # a lecturer's class: students join by a code and their checks are stored (docs/classes.md)
@@ -60,7 +62,7 @@ def home() -> None:
     """The home page: every chapter with its summary."""
     st.title("Mehanizmi")
     st.write(t("app.intro"))
-    for chapter in (BUILDER, *CHAPTERS, VARIANTS, CLASSROOM):
+    for chapter in (BUILDER, SYNTHESIS, *CHAPTERS, VARIANTS, CLASSROOM):
         with st.container(border=True):
             st.page_link(chapter.file, label=t(chapter.title), icon=chapter.icon)
             st.write(t(chapter.summary))
@@ -71,7 +73,7 @@ def _pages(language: str) -> list[st.Page]:
     """The app's pages in ``language``, made once per process: making them (each resolves its
     path and checks its icon) took 3 ms, a tenth of a seated student's opening."""
     pages = [st.Page(home, title=t("app.home"), icon=":material/home:", default=True)]
-    pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER, VARIANTS)]
+    pages += [st.Page(c.file, title=t(c.title), icon=c.icon) for c in (*CHAPTERS, BUILDER, SYNTHESIS, VARIANTS)]
     pages.append(st.Page("pages/textbook_check.py", title=t("check.title"),
                          icon=":material/fact_check:"))
     pages.append(st.Page(CLASSROOM.file, title=t(CLASSROOM.title), icon=CLASSROOM.icon))

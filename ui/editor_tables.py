@@ -263,6 +263,13 @@ def forget_table(key: str) -> None:
     st.query_params.pop(key, None)
 
 
+def restart_table(key: str, scene: str, table: pd.DataFrame) -> None:
+    """The table ``key`` starts again from ``table`` at the next run (a row added by a click
+    on a chart): as ``forget_table``, but from these rows, not the scene's own."""
+    forget_table(key)
+    st.session_state[f"_{key}_start"] = (scene, table)
+
+
 MARK = "⚠"  # the column that names a row's refused cells
 REFUSED_CELL = "background-color: #fde8e8; color: #a4000f; font-weight: 600"
 

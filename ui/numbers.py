@@ -230,6 +230,13 @@ def bound_slider(label: str, low, high, *, key: str, where=None, **options):
     return (where or st).slider(label, low, high, key=key, bind="query-params", **options)
 
 
+def is_refused(key: str) -> bool:
+    """Whether the number field ``key`` now shows a text it refused (the page goes on with
+    its last good value, but a form must not start anything from it)."""
+    memo = st.session_state.get(_memo(key))
+    return memo is not None and st.session_state.get(key) != memo[1]
+
+
 def last_value(key: str) -> float | None:
     """A number field's value as it last read (for code that needs it before the field is
     drawn in this run)."""

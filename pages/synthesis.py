@@ -1,0 +1,163 @@
+"""Synthesis: the precision points a coupler point must pass → a four-bar, found by
+solvers.synthesis, re-solved by the kinematics core, opened in the builder by its link.
+
+Thin: the table and fields are read by the one number reader, the task by its loader
+(mechanisms.synthesis), the search by the solver; the page only wires them and draws."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+import streamlit as st
+
+from figures.synthesis import synthesis_figure
+from mechanisms import SceneError
+from mechanisms.link import PARAMETER, encode
+from mechanisms.reader import Reader
+from mechanisms.synthesis import SynthesisTask, build_task
+from solvers import solve
+from solvers.paths import cycle_values
+from solvers.synthesis import DEFAULT_SECONDS, Result, SynthesisError, synthesize
+from ui.cache import preset
+from ui.chapters import SYNTHESIS
+from ui.editor_tables import restart_table, typed_table
+from ui.export import chart
+from ui.i18n import message, num, t
+from ui.numbers import is_refused, link_option, number_field
+from ui.scenes import link_choice
+
+UNIT = "m"
+COLUMNS = (f"x [{UNIT}]", f"y [{UNIT}]")
+EXAMPLES = {"tine": "syn.example_tine", "own": "syn.example_own"}
+TIMINGS = {"free": "syn.timing_free", "steps": "syn.timing_steps"}
+BUDGETS = (3_000, 10_000, 30_000, 100_000, 300_000)  # fast … accurate (bench/synthesis.py)
+TINE_STEPS = 12  # the book's compass construction: twelve positions of the crank
+
+
+@st.cache_resource(show_spinner=False)
+def tine_points() -> pd.DataFrame:
+    """Task 1.3's tine tip E at the twelve crank positions of the compass construction,
+    relative to the machine (the scene's own solve: no travel added)."""
+    scene = preset("zbirka-1.3")
+    e = solve(scene, cycle_values(scene, TINE_STEPS), order=0, points=["E"]).points["E"].z
+    return pd.DataFrame({COLUMNS[0]: np.round(e.real, 4), COLUMNS[1]: np.round(e.imag, 4)})
+
+
+def own_points() -> pd.DataFrame:
+    return pd.DataFrame({COLUMNS[0]: [0.0, 0.1, 0.2, 0.1], COLUMNS[1]: [0.0, 0.08, 0.0, -0.05]})
+
+
+def task_of(points: pd.DataFrame, timing: str, step: float, max_length: float,
+            box: float) -> SynthesisTask:
+    """The task the fields make, read by the task file's own reader (one set of rules)."""
+    raw = {"points": points[list(COLUMNS)].to_numpy(dtype=float).tolist(), "timing": timing,
+           "max_length": max_length, "box": box, "title": t("syn.title")}
+    if timing == "steps":
+        raw["crank_steps"] = [step] * (len(points) - 1)
+    return build_task(raw, Reader(t("syn.points")))
+
+
+def searched(task: SynthesisTask, budget: int) -> Result:
+    """The search, its progress shown as it goes."""
+    bar = st.progress(0.0, text=t("syn.searching", share=0, best="—"))
+
+    def told(share: float, best: float) -> None:
+        bar.progress(share, text=t("syn.searching", share=round(100 * share), best=num(best, 3)))
+
+    try:
+        return synthesize(task, seed=1, budget=budget, seconds=DEFAULT_SECONDS, progress=told)
+    finally:
+        bar.empty()
+
+
+st.title(f"{SYNTHESIS.icon} {t(SYNTHESIS.title)}")
+st.write(t("syn.intro"))
+example = link_option(st.selectbox, t("syn.example"), list(EXAMPLES), "example",
+                     format_func=lambda e: t(EXAMPLES[e]))
+default = tine_points() if example == "tine" else own_points()
+left, right = st.columns([2, 3])
+with left:
+    st.markdown(f"**{t('syn.points')}**")
+    points = typed_table("points", default, example, COLUMNS, name=t("syn.points"),
+                         rows_fixed=False, num_rows="dynamic", width="stretch")
+    timing = link_option(st.radio, t("syn.timing"), list(TIMINGS), "timing", horizontal=True,
+                        format_func=lambda k: t(TIMINGS[k]),
+                        default="steps" if example == "tine" else "free")
+    step = 360.0 / TINE_STEPS
+    if timing == "steps":
+        step = number_field(t("syn.step"), "syn_step", step, minimum=-359.0, maximum=359.0)
+    spread = float(np.ptp(points[list(COLUMNS)].to_numpy(), axis=0).max()) if len(points) else 1.0
+    c1, c2 = st.columns(2)
+    max_length = number_field(t("syn.max_length", unit=UNIT), f"syn_max_{example}",
+                              round(4 * spread, 2) or 1.0, minimum=1e-6, where=c1)
+    box = number_field(t("syn.box", unit=UNIT), f"syn_box_{example}", round(3 * spread, 2) or 1.0,
+                       minimum=1e-6, where=c2)
+    speed = st.select_slider(t("syn.speed"), options=list(range(len(BUDGETS))), value=3,
+                             format_func=lambda i: f"{BUDGETS[i]:,}".replace(",", " "),
+                             key="syn_speed",
+                             help=t("syn.speed_help", budget=f"{BUDGETS[3]:,}".replace(",", " "),
+                                    seconds=num(DEFAULT_SECONDS)))
+    fields = {"syn_step": t("syn.step"), f"syn_max_{example}": t("syn.max_length", unit=UNIT),
+              f"syn_box_{example}": t("syn.box", unit=UNIT)}
+    refused = [label for key, label in fields.items() if is_refused(key)]
+    try:
+        task = task_of(points, timing, step, max_length, box)
+        problem = t("syn.cannot", reason="; ".join(refused)) if refused else None
+    except SceneError as exc:
+        task, problem = None, message(exc)
+    find = st.button(t("syn.find"), type="primary", icon=":material/travel_explore:",
+                     disabled=task is None or bool(refused), help=problem, width="stretch")
+    if problem and not refused:
+        st.error(problem, icon=":material/error:")
+    if find and task is not None:
+        try:
+            st.session_state["syn_result"] = (task, searched(task, BUDGETS[speed]))
+        except SynthesisError as exc:
+            st.session_state.pop("syn_result", None)
+            st.error(t("syn.none", reason=str(exc)), icon=":material/error:")
+
+kept = st.session_state.get("syn_result")
+result = kept[1] if kept is not None else None
+with right:
+    shown_points = [complex(x, y) for x, y in points[list(COLUMNS)].to_numpy(dtype=float)]
+    if result is not None:
+        link = result.linkage
+        figure = synthesis_figure(shown_points, t, curve=result.curve, pivots=(link.O, link.D),
+                                  joints=tuple(result.positions[p][0] for p in "ABM"),
+                                  reached=result.positions["M"], unit=UNIT)
+    else:
+        figure = synthesis_figure(shown_points, t, unit=UNIT)
+    drawn = chart(figure, "synthesis", "synthesis_chart", editable=True)
+    st.caption(t("syn.click"))
+    if drawn is not None and drawn.click:
+        added = pd.concat([points, pd.DataFrame({COLUMNS[0]: [round(drawn.click["x"], 4)],
+                                                 COLUMNS[1]: [round(drawn.click["y"], 4)]})],
+                          ignore_index=True)
+        restart_table("points", example, added)
+        st.rerun()
+
+if result is not None:
+    if kept[0] != task:
+        st.warning(t("syn.stale"), icon=":material/history:")
+    link = result.linkage
+    st.success(t("syn.found", seconds=num(result.seconds, 2), evaluations=f"{result.evaluations:,}",
+                 objective=num(result.objective, 4), largest=num(float(np.max(result.errors)), 3),
+                 unit=UNIT), icon=":material/check_circle:")
+    st.write(t("syn.lengths", frame=num(link.frame, 4), crank=num(link.crank, 4),
+               coupler=num(link.coupler, 4), rocker=num(link.rocker, 4), unit=UNIT,
+               along=num(link.point.real, 4), left=num(link.point.imag, 4)))
+    st.dataframe(pd.DataFrame({
+        t("syn.col_point"): range(1, len(result.errors) + 1),
+        t("syn.col_phi"): [num(math.fmod(a, 360.0), 2) for a in result.crank_deg],
+        t("syn.col_error", unit=UNIT): [num(float(e), 3) for e in result.errors]}),
+        hide_index=True)
+    text = encode(result.scene)
+    b1, b2 = st.columns(2)
+    b1.page_link("pages/builder.py", label=t("syn.open_builder"), icon=":material/draw:",
+                 query_params={PARAMETER: text})
+    b2.page_link("pages/trajectories.py", label=t("syn.open_trajectories"),
+                 icon=":material/timeline:", query_params={PARAMETER: text, "scene": link_choice(text)})
+    if example == "tine":
+        st.caption(t("syn.tine_note"))
