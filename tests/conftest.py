@@ -1,6 +1,14 @@
 """Fixtures of the browser tests (tests/test_browser.py, tests/test_builder_browser.py): one
 app server and one chromium profile per test module.
 
+The suite runs on both cores (pytest-xdist, ``-n auto --dist loadgroup`` in pyproject.toml):
+a module whose tests share something costly — a fixture of module or session scope (a
+server, a browser, a PostgreSQL, a class found once) — is one group and runs on one worker,
+so that cost is paid once; every other test goes to whichever worker is free
+(``pytest_collection_modifyitems`` below: the groups come from the fixtures themselves, not
+from a list kept by hand). Hypothesis runs the same examples each time (derandomised), and
+``HYPOTHESIS_PROFILE=explore`` looks for new ones and keeps the failures it finds.
+
 Every ``ui`` module is imported here, before any test: several tests patch
 ``ui.i18n.current`` (AppTest formats a choice outside the script run), and a module first
 imported while it is patched would keep the patch in its ``from ui.i18n import current``
@@ -16,6 +24,8 @@ import os
 import pkgutil
 
 import pytest
+from hypothesis import settings
+from hypothesis.database import DirectoryBasedExampleDatabase
 from streamlit import config as streamlit_config
 
 import ui
@@ -26,6 +36,30 @@ os.environ.setdefault("STREAMLIT_CLIENT_SHOW_ERROR_DETAILS", "full")
 streamlit_config.set_option("client.showErrorDetails", "full")  # (AppTest reads config.toml)
 for _module in pkgutil.iter_modules(ui.__path__):
     importlib.import_module(f"ui.{_module.name}")
+
+# the suite: the same examples every run (Hypothesis then keeps no database: a derandomised
+# run has nothing new to remember); ``HYPOTHESIS_PROFILE=explore``: new random examples, and
+# every failure found kept in .hypothesis/ and tried first on the next run (TESTING.md)
+settings.register_profile("suite", derandomize=True)
+settings.register_profile("explore", database=DirectoryBasedExampleDatabase(".hypothesis/examples"))
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "suite"))
+
+SHARED = {"module", "package", "session"}
+BUILT_IN = {"tmp_path_factory", "worker_id", "testrun_uid", "monkeypatch"}
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection_modifyitems(config, items):
+    """A test that uses a fixture of module scope or wider runs in its module's group (one
+    worker pays for the fixture once); the rest are spread freely."""
+    for item in items:
+        info = getattr(item, "_fixtureinfo", None)
+        if info is None or item.get_closest_marker("xdist_group"):
+            continue
+        shared = any(defs[-1].scope in SHARED for name, defs in info.name2fixturedefs.items()
+                     if name not in BUILT_IN and defs)
+        if shared:
+            item.add_marker(pytest.mark.xdist_group(item.module.__name__))
 
 
 @pytest.fixture(scope="module")

@@ -1,12 +1,23 @@
-"""The command line as a user runs it: ``python -m solvers …`` in a fresh process."""
+"""The command line as a user runs it: ``python -m solvers …``.
 
+Each test runs ``cli.main`` — what ``python -m solvers`` hands over to (solvers/__main__.py)
+— in this process, with its output captured and an argparse exit taken as the exit code: a
+fresh interpreter per call cost 1.5–2 s of imports, most of this file's time.
+``test_python_m_solvers_is_the_same_command_line`` runs the real entry point in its own
+process, as a user's shell does."""
+
+import contextlib
+import io
 import json
 import math
+import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from cli import main
 
 from .test_reference_tasks import fourbar_2_1
 
@@ -14,8 +25,30 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def run(*args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "solvers", *args], cwd=ROOT,
-                          capture_output=True, text=True, timeout=60)
+    """``python -m solvers *args`` from the project's folder: its exit code and output."""
+    out, err = io.StringIO(), io.StringIO()
+    here = os.getcwd()
+    os.chdir(ROOT)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            try:
+                code = main(list(args))
+            except SystemExit as exc:  # argparse's own refusals and --help
+                code = exc.code if isinstance(exc.code, int) else 2
+    finally:
+        os.chdir(here)
+    return subprocess.CompletedProcess(["python", "-m", "solvers", *args], code,
+                                       out.getvalue(), err.getvalue())
+
+
+def test_python_m_solvers_is_the_same_command_line():
+    done = subprocess.run([sys.executable, "-m", "solvers", "solve", "analitika-2.1", "--json"],
+                          cwd=ROOT, capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout) == json.loads(run("solve", "analitika-2.1", "--json").stdout)
+    bad = subprocess.run([sys.executable, "-m", "solvers", "solve", "no-such-scene"], cwd=ROOT,
+                         capture_output=True, text=True, timeout=60)
+    assert bad.returncode == 2 and bad.stderr.startswith("error:") and "Traceback" not in bad.stderr
 
 
 def test_solve_json_has_exactly_the_documented_layout_and_exact_values():

@@ -16,6 +16,7 @@ from deploy.loadtest import main
 ROOT = Path(__file__).resolve().parents[1]
 
 
+@pytest.mark.server
 def test_a_short_load_test_runs_clean(capsys):
     """Six sessions, one per page, for a few seconds against a server of its own: no error,
     no answer from another session, every page rerun, and the six openings told apart from

@@ -101,7 +101,9 @@ def test_a_student_behind_nginx_resumes_on_either_process_from_postgresql(deploy
         os.kill(killed, signal.SIGKILL)  # a process falls over: started again, nothing lost
         planted = _while_down(proxy, code, key, token)
         _collide(url, token)
-        time.sleep(1.5)
+        deadline = time.monotonic() + 60  # the supervisor starts it again: waited for, not slept
+        while app_pid(deployed.ports[0]) in (None, killed) and time.monotonic() < deadline:
+            time.sleep(0.1)
         healthy(apps[0])
         assert app_pid(deployed.ports[0]) not in (None, killed)
         student.reload()  # through nginx, to whichever process: the progress from the store

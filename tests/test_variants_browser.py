@@ -4,11 +4,15 @@ mechanism drawn in true centimetres at U_L; and a student's variant link on a li
 import re
 from urllib.parse import parse_qs, urlparse
 
+import pytest
+
 from exams.codes import Settings
 from exams.sheets import sheets_html
 from exams.variants import generate
 
 from .test_browser import open_page, wait_url
+
+pytestmark = pytest.mark.browser
 
 PX_PER_CM = 96 / 2.54  # CSS: 96 px per inch
 
