@@ -103,6 +103,7 @@ def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):
         assert db.execute(sa.text("select version_num from alembic_version")).scalar() == "0006"
 
 
+@pytest.mark.server
 def test_a_fresh_process_s_first_sessions_arriving_at_once_make_one_store(tmp_path):
     """Eight threads (a fresh app process's first students) ask for the store at once: the
     schema is made once and each gets the same engine (two migrations at once broke)."""
@@ -167,6 +168,7 @@ def _racing(args) -> list[int]:
             for k in range(4)]
 
 
+@pytest.mark.server
 def test_two_processes_checking_one_step_at_once_get_distinct_tries(url):
     code, key = store.create("zbirka-3.1", "plans", url=url)
     token = store.join(code, url=url)
@@ -243,6 +245,7 @@ def _write(args) -> None:
         store.record(code, token, f"step.{k}", float(k), "ok", store.new_check(), url=url)
 
 
+@pytest.mark.server
 def test_two_processes_write_to_one_class_at_once_and_nothing_is_lost(url):
     code, key = store.create("zbirka-3.1", "plans", url=url)
     students = [store.join(code, url=url) for _ in range(2)]
@@ -292,6 +295,7 @@ def _command_line(database: Path):
     return cli
 
 
+@pytest.mark.server
 def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
     cli = _command_line(tmp_path / "cli.db")
     made = json.loads(cli("class", "create", "zbirka-3.1", "--method", "plans", "--json").stdout)
@@ -318,6 +322,7 @@ def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
     assert "purged 0" in cli("class", "purge").stdout
 
 
+@pytest.mark.server
 def test_a_second_hand_in_is_stored_as_the_next_tries_and_hostile_files_store_nothing(tmp_path):
     cli = _command_line(tmp_path / "cli.db")
     made = json.loads(cli("class", "create", "zbirka-3.1", "--method", "plans", "--json").stdout)
@@ -438,6 +443,7 @@ def test_the_sqlite_store_is_readable_by_its_owner_alone(tmp_path, monkeypatch):
     assert (tmp_path / "data").stat().st_mode & 0o777 == 0o700
 
 
+@pytest.mark.server
 def test_the_command_line_ends_quietly_on_a_closed_pipe_and_refuses_a_huge_answers_file(tmp_path):
     done = subprocess.run(f"{sys.executable} -m solvers practice zbirka-3.1 --method plans | head -1",
                           shell=True, cwd=ROOT, capture_output=True, text=True)

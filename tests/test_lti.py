@@ -436,6 +436,7 @@ def test_a_link_without_a_usable_task_is_refused_in_words(tool):
     assert counts(db) == before
 
 
+@pytest.mark.server
 def test_the_served_app_publishes_its_key_and_refuses_an_unknown_platform(app_url):
     """Through the README's start command (scripts/serve.py asgi.py: st.App with the routes)."""
     with urllib.request.urlopen(f"{app_url}/lti/jwks", timeout=10) as answer:
@@ -447,6 +448,7 @@ def test_the_served_app_publishes_its_key_and_refuses_an_unknown_platform(app_ur
     assert refused.value.code == 400 and "No platform is registered" in refused.value.read().decode()
 
 
+@pytest.mark.server
 def test_processes_starting_together_make_one_tool_key(tmp_path):
     """deploy/start.sh's processes ask for the key at once: one key, whole, mode 600."""
     import multiprocessing

@@ -122,6 +122,7 @@ def test_the_files_feedback_is_the_practice_hint_and_a_forgotten_term_is_named()
     assert any("Off by a factor of 10:" in f for f in feedback)
 
 
+@pytest.mark.server
 def test_the_command_line_writes_the_bank_in_the_language_asked(tmp_path):
     import subprocess
     import sys
