@@ -112,7 +112,7 @@ def _parser() -> argparse.ArgumentParser:
     _scene_arguments(p)
     p.add_argument("--method", required=True, choices=list(practice_steps.KINDS),
                    help="compass, plans, forces, lever (linkages), willis (gear trains), "
-                        "balance (rotors)")
+                        "balance (rotors), three (a four-bar's three-position construction)")
     p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver "
                                             "(plans, forces, lever)")
     p.add_argument("--answers", metavar="FILE", help='a JSON file {"answers": {"<step id>": '

@@ -4,7 +4,8 @@ methods written out step by step, with the exact values and what a drawing allow
 ``compass``: each point of the 12 positions, in the order the construction places them
 (task 1.1's method), to 0.05 cm at U_L. ``plans``: every arrow of the velocity and then the
 acceleration plan in the book's order, each image reached from the pole, and ω, ε of each
-member (chapters 2–3). ``forces``: every part a group's equations give, the force polygons'
+member (chapters 2–3). ``three``: the pivots of the three-position construction, then the
+links' lengths (beyond the book, docs/synthesis.md). ``forces``: every part a group's equations give, the force polygons'
 closing sides with the loads they add (chapter 5). ``lever``: each force's moment about the
 turned plan's pole, then F_p and M_p (the reduced mechanism). ``willis``: each member's ω
 in the book's order (chapter 6). ``balance``: the V polygon about plane II, then the U
@@ -28,6 +29,7 @@ from solvers.kinematics import Motion, solve
 from solvers.kinetostatics import Kinetostatics, analyse
 from solvers.paths import cycle_values
 
+from . import three_positions
 from .compass import construction as compass_construction
 from .force_steps import latex_name, steps as force_construction
 from .gear_steps import speed_steps
@@ -206,6 +208,21 @@ def balancing_missing(k: Kinetostatics, index: int) -> tuple[tuple[Term, ...], t
     return force, tuple(Term(t.name, t.value * length) for t in force)
 
 
+def three(stages: list[three_positions.Stage], scale_l: float) -> list[Step]:
+    """The pivots the three-position construction finds (each where two bisectors cross,
+    to 0.05 cm at U_L), then the lengths of the crank, the rocker and the frame read off the
+    drawing."""
+    out = [Step(f"three.{name}", f"the fixed pivot {name} (m)", name, "point", "m", where,
+                PRECISION_CM * scale_l, scale_l, "L", rule="point")
+           for stage in stages for name, where in stage.found.items()]
+    links = stages[-1].values
+    for name, symbol in (("crank", "OA"), ("rocker", "DB"), ("frame", "OD")):
+        out.append(Step(f"three.{name}", f"the length {symbol} (m)", symbol, "scalar", "m",
+                        links[name], tolerance(links[name], PRECISION_CM * scale_l),
+                        scale_l, rule="scalar"))
+    return out
+
+
 def willis(solution: TrainSolution) -> list[Step]:
     """Each member's ω in the book's order (the inputs are given, not asked), signed."""
     return [Step(f"willis.{s.member}", f"ω{s.member}, signed (s⁻¹, counter-clockwise positive)",
@@ -263,7 +280,8 @@ def _polygon(vectors, sheet: str, unit: str, scale: float, closing: complex, pla
 
 # the kind of scene each method practises on
 KINDS = {"compass": Scene, "plans": Scene, "forces": Scene, "lever": Scene,
-         "willis": GearTrain, "balance": Rotor}
+         "willis": GearTrain, "balance": Rotor, "three": Scene}
+THREE_APART = (0.0, 40.0, 80.0)  # the three positions' crank angles after the first, °
 KIND_NAMES = {Scene: "linkage", GearTrain: "gear train", Rotor: "rotor"}  # (said in errors)
 
 
@@ -279,6 +297,11 @@ def steps_for(scene, method: str, at: float | None = None) -> list[Step]:
     if method == "compass":
         motion = solve(scene, cycle_values(scene, 12), order=0)
         return compass(motion, plan_scales(scene, None)["L"])
+    if method == "three":
+        first = np.degrees(scene.driver.at) if at is None else at
+        stages = three_positions.construction(
+            *three_positions.of_scene(scene, [first + d for d in THREE_APART]))
+        return three(stages, plan_scales(scene, None)["L"])
     if method == "willis":
         return willis(solve_train(scene))
     if method == "balance":

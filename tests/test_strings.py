@@ -13,7 +13,8 @@ SOURCES = [ROOT / "app.py", *ROOT.glob("pages/*.py"), *ROOT.glob("ui/*.py"), *RO
            ROOT / "methods" / "practice.py",  # (practice's hints, shared with the command line)
            *ROOT.glob("mechanisms/*.py"), *ROOT.glob("solvers/*.py"), *ROOT.glob("exams/*.py"),
            *ROOT.glob("classes/*.py"), *ROOT.glob("lti/*.py"),
-           ROOT / "methods" / "plans.py", ROOT / "reports" / "fitting.py"]  # (their messages)
+           ROOT / "methods" / "plans.py", ROOT / "methods" / "three_positions.py",
+           ROOT / "reports" / "fitting.py"]  # (their messages)
 
 
 def message_families() -> set[str]:
