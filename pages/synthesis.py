@@ -15,6 +15,8 @@ import streamlit as st
 from figures.synthesis import synthesis_figure, three_positions_figure
 from mechanisms import SceneError, preset_ids
 from mechanisms.link import PARAMETER, encode
+from mechanisms.messages import value_text
+from mechanisms.typed import comma_is_decimal
 from mechanisms.reader import Reader
 from mechanisms.synthesis import SynthesisTask, build_task
 from solvers import solve
@@ -29,7 +31,7 @@ from ui.cache import preset
 from ui.chapters import SYNTHESIS
 from ui.editor_tables import restart_table, typed_table
 from ui.export import chart
-from ui.i18n import message, num, t, title_of
+from ui.i18n import current, message, num, t, title_of
 from ui.numbers import is_refused, link_option, number_field
 from ui.scenes import link_choice
 
@@ -52,6 +54,12 @@ def tine_points() -> pd.DataFrame:
 
 def own_points() -> pd.DataFrame:
     return pd.DataFrame({COLUMNS[0]: [0.0, 0.1, 0.2, 0.1], COLUMNS[1]: [0.0, 0.08, 0.0, -0.05]})
+
+
+def counted(n: int) -> str:
+    """A count as the page's language groups its digits (a narrow space in Serbian, where
+    the comma is the decimal sign)."""
+    return value_text(n, t, comma_is_decimal(current()))
 
 
 def task_of(points: pd.DataFrame, timing: str, step: float, max_length: float,
@@ -93,17 +101,18 @@ def path_part() -> None:
                             default="steps" if example == "tine" else "free")
         step = 360.0 / TINE_STEPS
         if timing == "steps":
-            step = number_field(t("syn.step"), "syn_step", step, minimum=-359.0, maximum=359.0)
+            step = number_field(t("syn.step"), "syn_step", step, minimum=-359.0, maximum=359.0,
+                                url=True)
         spread = float(np.ptp(points[list(COLUMNS)].to_numpy(), axis=0).max()) if len(points) else 1.0
         c1, c2 = st.columns(2)
         max_length = number_field(t("syn.max_length", unit=UNIT), f"syn_max_{example}",
-                                  round(4 * spread, 2) or 1.0, minimum=1e-6, where=c1)
+                                  round(4 * spread, 2) or 1.0, minimum=1e-6, where=c1, url=True)
         box = number_field(t("syn.box", unit=UNIT), f"syn_box_{example}", round(3 * spread, 2) or 1.0,
-                           minimum=1e-6, where=c2)
+                           minimum=1e-6, where=c2, url=True)
         speed = st.select_slider(t("syn.speed"), options=list(range(len(BUDGETS))), value=3,
-                                 format_func=lambda i: f"{BUDGETS[i]:,}".replace(",", " "),
+                                 format_func=lambda i: counted(BUDGETS[i]),
                                  key="syn_speed",
-                                 help=t("syn.speed_help", budget=f"{BUDGETS[3]:,}".replace(",", " "),
+                                 help=t("syn.speed_help", budget=counted(BUDGETS[3]),
                                         seconds=num(DEFAULT_SECONDS)))
         fields = {"syn_step": t("syn.step"), f"syn_max_{example}": t("syn.max_length", unit=UNIT),
                   f"syn_box_{example}": t("syn.box", unit=UNIT)}
@@ -148,7 +157,7 @@ def path_part() -> None:
         if kept[0] != task:
             st.warning(t("syn.stale"), icon=":material/history:")
         link = result.linkage
-        st.success(t("syn.found", seconds=num(result.seconds, 2), evaluations=f"{result.evaluations:,}",
+        st.success(t("syn.found", seconds=num(result.seconds, 2), evaluations=counted(result.evaluations),
                      objective=num(result.objective, 4), largest=num(float(np.max(result.errors)), 3),
                      unit=UNIT), icon=":material/check_circle:")
         st.write(t("syn.lengths", frame=num(link.frame, 4), crank=num(link.crank, 4),

@@ -15,7 +15,8 @@ from .test_pages import ROOT
 
 PAGES = ["app.py", "pages/trajectories.py", "pages/velocity_plans.py", "pages/assur_groups.py",
          "pages/kinetostatics.py", "pages/planetary_gears.py", "pages/rotor_balancing.py",
-         "pages/builder.py", "pages/variants.py", "pages/textbook_check.py", "pages/class.py"]
+         "pages/builder.py", "pages/synthesis.py", "pages/variants.py", "pages/textbook_check.py",
+         "pages/class.py"]
 VALUES = ["abc", "nan", "-inf", "1e400", "", "0", "-1", "1,,2", "1;2;x", "'\"<b>&%00", "９",
           "1" * 300]
 EVERY_PAGE = [{"scene": "../../etc/passwd"}, {"scene": "zbirka-9.99"}, {"s": "%%%%"},
