@@ -222,7 +222,8 @@ class _Problem:
         self.task = task
         self.target = np.array(task.points)
         self.n = len(self.target)
-        self.scale = float(np.sum(np.abs(self.target - self.target.mean()) ** 2)) or 1.0
+        # the points' spread, Σ|p − p̄|²: what a bad candidate's penalty is counted in
+        self.spread = float(np.sum(np.abs(self.target - self.target.mean()) ** 2)) or 1.0
         big, box = task.max_length, task.box
         low = max(task.min_length, 1e-9 * big)
         self.margin = MARGIN * big
@@ -243,8 +244,8 @@ class _Problem:
             place.append((0.0, TAU))
             kinds.append("linear")
         self.bounds = self.shape_bounds + place
-        self.scale_ = _Scale(self.target, self.bounds, kinds)
-        self.search_bounds = self.scale_.search_bounds
+        self.warp = _Scale(self.target, self.bounds, kinds)
+        self.search_bounds = self.warp.search_bounds
         if task.timing == "angles":
             self.given = np.radians(np.array(task.crank_angles))
         elif task.timing == "steps":
@@ -270,7 +271,7 @@ class _Problem:
     def cost(self, u: np.ndarray) -> np.ndarray:
         """Σ of squared distances for each column of the search's ``u`` (the better branch),
         with the bounds' breaches ranked behind every candidate that keeps them."""
-        x = self.scale_.decode(u)
+        x = self.warp.decode(u)
         best = np.full(x.shape[1], np.inf)
         for branch in (1.0, -1.0):
             best = np.minimum(best, self._cost(x, branch))
@@ -285,7 +286,7 @@ class _Problem:
             err = np.sum(np.abs(pivot + rot * m - self.target) ** 2, axis=-1)
         over = outside(self.task, x, pivot, rot)
         err = np.where(np.isfinite(err), err, 1e300)
-        return np.where(over > 0, 1e12 * self.scale * (1 + over), err)
+        return np.where(over > 0, 1e12 * self.spread * (1 + over), err)
 
     def _free(self, x, branch):
         """Each target's nearest point of the sampled curve, refined on the two chords
@@ -296,7 +297,7 @@ class _Problem:
         best, k = nearest(pivot + rot * m, self.target)
         travel = np.sum((np.diff(k, axis=-1)) % SAMPLES, axis=-1)
         excess = np.maximum(0, travel - SAMPLES) / SAMPLES
-        return np.sum(best, axis=-1) + excess * self.scale, pivot, rot
+        return np.sum(best, axis=-1) + excess * self.spread, pivot, rot
 
     def timed(self, x: np.ndarray) -> np.ndarray:
         """The crank's angles at the points, from the frame line: given, or the search's
@@ -609,7 +610,7 @@ def _starts(problem: _Problem, found) -> list[tuple[np.ndarray, int]]:
     ordered = np.argsort(found.population_energies)
     starts: list[tuple[np.ndarray, int]] = []
     for i in ordered:
-        x = problem.scale_.decode(population[i])
+        x = problem.warp.decode(population[i])
         if any(np.allclose(x, s, rtol=1e-3, atol=1e-9) for s, _ in starts):
             continue
         costs = [problem._cost(x[:, None], b)[0] for b in (1.0, -1.0)]
