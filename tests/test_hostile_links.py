@@ -44,6 +44,7 @@ def _own_link(path: str) -> list[str]:
     return list(at.query_params)
 
 
+@pytest.mark.sweep
 @pytest.mark.parametrize("path", PAGES)
 def test_every_parameter_of_a_page_s_own_link_with_hostile_values(path):
     keys = _own_link(path)
@@ -52,6 +53,7 @@ def test_every_parameter_of_a_page_s_own_link_with_hostile_values(path):
         assert not at.exception, (path, value, at.exception[0].message if at.exception else "")
 
 
+@pytest.mark.sweep
 @pytest.mark.parametrize("path", PAGES)
 def test_the_parameters_any_page_reads_with_hostile_values(path):
     for query in EVERY_PAGE:

@@ -55,6 +55,7 @@ def language(monkeypatch):
     return set_to
 
 
+@pytest.mark.sweep
 @pytest.mark.parametrize("pid", preset_ids())
 def test_the_box_check_and_practice_judge_every_value_alike(pid, language, capsys):
     scene = load_preset(pid)

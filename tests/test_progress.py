@@ -118,6 +118,7 @@ def agree(code: str, key: str, token: str) -> dict[str, str]:
     return on_page
 
 
+@pytest.mark.sweep
 @settings(max_examples=EXAMPLES, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(events=EVENTS)
