@@ -62,7 +62,7 @@ BUDGETS = (1_000, 10_000, 100_000, DEFAULT_BUDGET)
 
 
 def run(seeds: int) -> str:
-    rows = [f"| case | budget | best Σ e² | median Σ e² | worst Σ e² | median s | published best / mean |",
+    rows = ["| case | budget | best Σ e² | median Σ e² | worst Σ e² | median s | published best / mean |",
             "|---|---:|---:|---:|---:|---:|---|"]
     for name, case in CASES.items():
         task = parse_task(case["task"], source=name)

@@ -9,7 +9,6 @@ from __future__ import annotations
 import cmath
 import math
 
-import numpy as np
 import pytest
 
 from mechanisms import SceneError, load_preset, preset_ids
