@@ -12,14 +12,14 @@ import numpy as np
 import pandas as pd
 import streamlit as st
 
-from figures.synthesis import synthesis_figure, three_positions_figure
-from mechanisms import SceneError, preset_ids
+from figures.synthesis import found_figure, synthesis_figure, three_positions_figure
+from mechanisms import SceneError, parse_scene, preset_ids
 from mechanisms.link import PARAMETER, encode
 from mechanisms.messages import value_text
 from mechanisms.typed import comma_is_decimal
 from mechanisms.reader import Reader
 from mechanisms.synthesis import SynthesisTask, build_task
-from solvers import solve
+from solvers import Motion, solve
 from solvers.paths import cycle_values
 from methods import practice_steps
 from methods.practice_steps import THREE_APART
@@ -41,6 +41,7 @@ EXAMPLES = {"tine": "syn.example_tine", "own": "syn.example_own"}
 TIMINGS = {"free": "syn.timing_free", "steps": "syn.timing_steps"}
 BUDGETS = (3_000, 10_000, 30_000, 100_000, 300_000)  # fast … accurate (bench/synthesis.py)
 TINE_STEPS = 12  # the book's compass construction: twelve positions of the crank
+TURN_FRAMES = 72  # the found four-bar's animation: a frame every 5°
 
 
 @st.cache_resource(show_spinner=False)
@@ -54,6 +55,13 @@ def tine_points() -> pd.DataFrame:
 
 def own_points() -> pd.DataFrame:
     return pd.DataFrame({COLUMNS[0]: [0.0, 0.1, 0.2, 0.1], COLUMNS[1]: [0.0, 0.08, 0.0, -0.05]})
+
+
+@st.cache_resource(max_entries=8, show_spinner=False)
+def turning(scene_text: str) -> Motion:
+    """The found four-bar over a whole turn, every 5° (the animation's frames)."""
+    scene = parse_scene(scene_text, source="synthesis")
+    return solve(scene, cycle_values(scene, TURN_FRAMES), order=0)
 
 
 def counted(n: int) -> str:
@@ -137,11 +145,8 @@ def path_part() -> None:
     result = kept[1] if kept is not None else None
     with right:
         shown_points = [complex(x, y) for x, y in points[list(COLUMNS)].to_numpy(dtype=float)]
-        if result is not None:
-            link = result.linkage
-            figure = synthesis_figure(shown_points, t, curve=result.curve, pivots=(link.O, link.D),
-                                      joints=tuple(result.positions[p][0] for p in "ABM"),
-                                      reached=result.positions["M"], unit=UNIT)
+        if result is not None and kept[0] == task:
+            figure = found_figure(turning(result.scene_toml), shown_points, result.positions["M"], t)
         else:
             figure = synthesis_figure(shown_points, t, unit=UNIT)
         drawn = chart(figure, "synthesis", "synthesis_chart", editable=True)

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
@@ -89,7 +89,6 @@ class Result:
     evaluations: int
     seconds: float
     searched: float  # the optimiser's own objective, for the record
-    curve: np.ndarray = field(repr=False, default_factory=lambda: np.zeros(0, complex))
 
 
 # ---------------------------------------------------------------------------------------
@@ -642,7 +641,7 @@ def certify(task: SynthesisTask, link: Linkage, evaluations: int, seconds: float
     errors = np.abs(got["M"] - np.array(task.points))
     return Result(linkage=link, scene=scene, scene_toml=text, objective=float(np.sum(errors ** 2)),
                   errors=errors, positions=got, crank_deg=np.degrees(at), evaluations=evaluations,
-                  seconds=seconds, searched=searched, curve=turn.points["M"].z)
+                  seconds=seconds, searched=searched)
 
 
 def scene_toml(task: SynthesisTask, link: Linkage) -> str:
