@@ -76,6 +76,12 @@ class Parser(argparse.ArgumentParser):
         super().__init__(*args, **kwargs)
         self._negative_number_matcher = self.NEGATIVE
 
+    def error(self, message: str):
+        """A refusal of the command line itself in one line and exit 2, as every other
+        refusal is (argparse printed a usage block of 3–6 lines first; it is one --help
+        away)."""
+        self.exit(2, f"error: {message} ({self.prog} --help)\n")
+
 
 def _parser() -> argparse.ArgumentParser:
     parser = Parser(prog="python -m solvers",

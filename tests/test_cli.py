@@ -222,3 +222,14 @@ def test_a_gear_trains_stages_come_with_stages_json():
 def test_a_locked_differential_prints_its_stage_without_a_ratio_of_speeds():
     text = run("solve", "zbirka-6.10", "--stages").stdout
     assert "i9,11 = -1 from the radii, 0/0 from the speeds" in text
+
+
+@pytest.mark.parametrize("args", [("solve", "zbirka-3.1", "--at", "1,5"),
+                                  ("variants", "zbirka-3.1", "--count", "1.5"),
+                                  ("practice", "zbirka-3.1", "--method", "bogus"),
+                                  ("synthesize", "task.toml", "--budget", "abc"), ("bogus",)])
+def test_the_command_lines_own_refusals_are_one_line_and_exit_2(args):
+    out = run(*args)
+    assert out.returncode == 2 and out.stdout == ""
+    assert len(out.stderr.strip().splitlines()) == 1 and out.stderr.startswith("error: ")
+    assert "--help" in out.stderr and "usage:" not in out.stderr
