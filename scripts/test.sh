@@ -22,6 +22,8 @@ if [ ! -x /usr/bin/chromium ] || ! command -v npm >/dev/null || ! command -v ngi
 fi
 bash scripts/bundles.sh
 python3 -m venv .venv
-.venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements-dev.txt
+# --no-compile: Python compiles what is imported, on import; compiling every installed file
+# (plotly alone ships thousands) took about twenty seconds of a fresh clone's run
+.venv/bin/python -m pip install --quiet --disable-pip-version-check --no-compile -r requirements-dev.txt
 .venv/bin/python scripts/icon_font.py  # once per Streamlit version: its icon font, cut
 exec .venv/bin/python -m pytest "$@"
