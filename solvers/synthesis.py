@@ -162,18 +162,22 @@ def nearest(curve: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarr
     return best, k
 
 
-def outside(task: SynthesisTask, x: np.ndarray, pivot: np.ndarray, rot: np.ndarray) -> np.ndarray:
-    """How far each candidate breaks its bounds (0 when it keeps them): a link longer than
-    ``max_length``, a pivot outside the box."""
-    r1, r2, r3, r4 = lengths(x)
+def overreach(task: SynthesisTask, x: np.ndarray, pivot: np.ndarray,
+              rot: np.ndarray) -> list[np.ndarray]:
+    """How far each candidate (a column of ``x``; ``pivot``, ``rot`` one each) breaks each
+    bound the search's box cannot hold, one array per rule, 0 where it keeps it: the frame,
+    the coupler and the rocker against ``max_length``; O's and D's x and y against the box.
+    (Grashof and the crank's shortness are the box bounds of r2, x, y, z.)"""
+    r1, _, r3, r4 = lengths(x)
     big, box = task.max_length, task.box
-    over = sum(np.maximum(0, r - big) for r in (r1, r3, r4))
-    pivot, rot = pivot[..., 0], rot[..., 0]
-    d = pivot + r1.reshape(pivot.shape) * rot
-    for p in (pivot, d):
-        over = over + (np.maximum(0, np.abs(p.real) - box)
-                       + np.maximum(0, np.abs(p.imag) - box)).reshape(over.shape)
-    return over
+    d = pivot + r1 * rot
+    return ([np.maximum(0, r - big) for r in (r1, r3, r4)]
+            + [np.maximum(0, np.abs(c) - box) for q in (pivot, d) for c in (q.real, q.imag)])
+
+
+def outside(task: SynthesisTask, x: np.ndarray, pivot: np.ndarray, rot: np.ndarray) -> np.ndarray:
+    """The search's penalty: all of ``overreach`` together (``pivot``, ``rot``: (S, 1))."""
+    return sum(overreach(task, x, pivot[..., 0], rot[..., 0]))
 
 
 class _Scale:
@@ -225,9 +229,9 @@ class _Problem:
         self.spread = float(np.sum(np.abs(self.target - self.target.mean()) ** 2)) or 1.0
         big, box = task.max_length, task.box
         low = max(task.min_length, 1e-9 * big)
-        self.margin = MARGIN * big
-        self.shape_bounds = [(low, big), (self.margin, big), (self.margin, big),
-                             (self.margin, big), (-box, box), (-box, box)]
+        margin = MARGIN * big
+        self.shape_bounds = [(low, big), (margin, big), (margin, big), (margin, big),
+                             (-box, box), (-box, box)]
         self.free_pivot = task.crank_pivot is None
         self.free_angle = task.frame_angle is None
         # the placement the search varies (the rest is fixed, or found in closed form)
@@ -403,11 +407,7 @@ class _Polish:
         pivot, rot, theta = self.unpack(x)
         _, _, m = coupler(x, theta, self.branch)
         miss = (pivot[:, None] + rot[:, None] * m - self.p.target).T  # (n, S)
-        r1, _, r3, r4 = lengths(x)
-        big, box = self.task.max_length, self.task.box
-        d = pivot + r1 * rot
-        over = [np.maximum(0, r - big) for r in (r1, r3, r4)]
-        over += [np.maximum(0, np.abs(c) - box) for q in (pivot, d) for c in (q.real, q.imag)]
+        over = overreach(self.task, x, pivot, rot)
         if self.task.timing == "free":
             over.append(np.maximum(0, theta[:, -1] - theta[:, 0] - TAU))
         return np.vstack([miss.real, miss.imag, self.weight * np.array(over)])
@@ -464,20 +464,6 @@ def positions_of(link: Linkage, angles=None) -> tuple[np.ndarray, np.ndarray, np
     a, b, m = coupler(shape, theta, link.branch)
     rot = np.exp(1j * link.frame_angle)
     return tuple(link.O + rot * v[0] for v in (a, b, m))
-
-
-def breaches(link: Linkage, task: SynthesisTask) -> np.ndarray:
-    """How far the linkage breaks each rule the box bounds cannot hold (0 where it keeps
-    it): a link over ``max_length``, a pivot outside the box, more than one turn between the
-    first and the last point. (Grashof and the crank's shortness are the box bounds of
-    r2, x, y, z.)"""
-    big, box = task.max_length, task.box
-    over = [max(0.0, r - big) for r in (link.frame, link.coupler, link.rocker)]
-    for p in (link.O, link.D):
-        over += [max(0.0, abs(p.real) - box), max(0.0, abs(p.imag) - box)]
-    if task.timing == "free":
-        over.append(max(0.0, link.angles[-1] - link.angles[0] - TAU))
-    return np.array(over)
 
 
 def settle(link: Linkage, task: SynthesisTask) -> Linkage:

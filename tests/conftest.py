@@ -45,7 +45,7 @@ settings.register_profile("explore", database=DirectoryBasedExampleDatabase(".hy
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "suite"))
 
 SHARED = {"module", "package", "session"}
-BUILT_IN = {"tmp_path_factory", "worker_id", "testrun_uid", "monkeypatch"}
+BUILT_IN = {"tmp_path_factory", "worker_id", "testrun_uid"}  # (session-wide, but cheap)
 
 
 @pytest.hookimpl(tryfirst=True)

@@ -52,7 +52,7 @@ def test_a_four_bars_own_coupler_points_give_an_error_of_about_zero(name):
     task = _task(**TASKS[name])
     result = synthesize(task, seed=1, budget=60_000, seconds=60)
     size = np.max(np.abs(np.array(task.points)))
-    assert result.objective < 1e-16 * size ** 2 * len(task.points) * 1e6, result.objective
+    assert result.objective < 1e-10 * size ** 2 * len(task.points), result.objective
     assert keeps_rules(result.linkage, task)
     # the answer is the kinematics core's: the scene, loaded anew, passes the points
     again = solve(parse_scene(result.scene_toml), np.radians(result.crank_deg), order=0)
