@@ -120,7 +120,7 @@ def path_part() -> None:
         speed = st.select_slider(t("syn.speed"), options=list(range(len(BUDGETS))), value=3,
                                  format_func=lambda i: counted(BUDGETS[i]),
                                  key="syn_speed",
-                                 help=t("syn.speed_help", budget=counted(BUDGETS[3]),
+                                 help=t("syn.speed_help", budget=f"{counted(BUDGETS[0])} … {counted(BUDGETS[-1])}",
                                         seconds=num(DEFAULT_SECONDS)))
         fields = {"syn_step": t("syn.step"), f"syn_max_{example}": t("syn.max_length", unit=UNIT),
                   f"syn_box_{example}": t("syn.box", unit=UNIT)}
