@@ -22,6 +22,7 @@ import asyncio
 import importlib
 import os
 import pkgutil
+from concurrent.futures import ThreadPoolExecutor
 
 import pytest
 from hypothesis import settings
@@ -62,13 +63,23 @@ def pytest_collection_modifyitems(config, items):
             item.add_marker(pytest.mark.xdist_group(item.module.__name__))
 
 
-@pytest.fixture(scope="module")
+def run_async(coroutine):
+    """``asyncio.run`` in a thread of its own: a module's sync Playwright keeps an event loop
+    running in the test's thread, where ``asyncio.run`` refuses to start."""
+    with ThreadPoolExecutor(1) as pool:
+        return pool.submit(asyncio.run, coroutine).result()
+
+
+@pytest.fixture(scope="session")
 def app_url(tmp_path_factory):
+    """One app server for a worker's whole run (a server start is ~2 s of imports, and its
+    first page run warms the caches every later module then finds warm); each test opens
+    its own browser context, so nothing of one test's session reaches another's."""
     port = free_port()
     log = open(tmp_path_factory.mktemp("server") / "streamlit.log", "w")
     server = start_server(port, log=log)
     try:
-        asyncio.run(wait_ready(f"ws://127.0.0.1:{port}/_stcore/stream"))
+        run_async(wait_ready(f"ws://127.0.0.1:{port}/_stcore/stream"))
         yield f"http://127.0.0.1:{port}"
     finally:
         server.terminate()
