@@ -12,10 +12,12 @@ from classes import store, summary
 from classes.steps import steps_of
 from classes.store import variant_of
 from lti.grades import close_test
-from mechanisms import SceneError, load_preset
-from mechanisms.link import PARAMETER
+from mechanisms import Scene, SceneError, load_preset
+from mechanisms.link import PARAMETER, decode
 from mechanisms.messages import Text, strings
 from methods.progress import Progress, score
+
+from . import arguments
 
 
 def add(sub) -> None:
@@ -26,7 +28,7 @@ def add(sub) -> None:
     v = verbs.add_parser("create", help="a new class: its join code and the lecturer's key")
     v.add_argument("scene", help="a preset id, or a builder link's s= text")
     v.add_argument("--method", required=True, choices=store.METHODS)
-    v.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres")
+    v.add_argument("--at", type=arguments.POSITION, help="φ₂ in degrees, or s in metres")
     v.add_argument("--variants", metavar="SET", help="a variant set's code (3.1-S42): each "
                                                      "student who joins gets the next variant")
     v.add_argument("--test", action="store_true",
@@ -67,8 +69,10 @@ def add(sub) -> None:
 
 
 def _create(args) -> int:
-    if not args.scene.startswith(f"{PARAMETER}="):
-        load_preset(args.scene)  # an unknown preset: SceneError, exit code 2
+    scene = (decode(args.scene) if args.scene.startswith(f"{PARAMETER}=")
+             else load_preset(args.scene))  # an unknown preset or a damaged link: SceneError, exit 2
+    if isinstance(scene, Scene):
+        args.at = arguments.at(scene, args.at)
     code, key = store.create(args.scene, args.method, args.at, args.variants, test=args.test)
     join = f"/class?join={code}"
     if args.json:

@@ -38,7 +38,7 @@ from solvers.structure import StructureError, decompose
 
 from solvers.synthesis import SynthesisError
 
-from . import check, classes, lti, practice, synthesis
+from . import arguments, check, classes, lti, practice, synthesis
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -47,6 +47,9 @@ def main(argv: list[str] | None = None) -> int:
         code = args.run(args)
         sys.stdout.flush()  # (a closed pipe shows here, not at the interpreter's exit)
         return code
+    except argparse.ArgumentTypeError as exc:  # (a value checked against the scene: --at)
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     except BrokenPipeError:  # `… | head` closed the pipe: what was wanted was read; quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
@@ -91,7 +94,7 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(run=_list)
     p = sub.add_parser("solve", help="positions, velocities and accelerations at one instant")
     _scene_arguments(p)
-    p.add_argument("--at", type=float, help="driver coordinate: φ₂ in degrees for a rotating "
+    p.add_argument("--at", type=arguments.POSITION, help="driver coordinate: φ₂ in degrees for a rotating "
                                              "driver, s in metres for a linear one")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.add_argument("--stages", action="store_true", help="a gear train: also each carrier's "
@@ -99,7 +102,7 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(run=_solve)
     p = sub.add_parser("plan", help="the velocity and acceleration plans at one instant")
     _scene_arguments(p)
-    p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver")
+    p.add_argument("--at", type=arguments.POSITION, help="φ₂ in degrees, or s in metres for a linear driver")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
     p.set_defaults(run=_plan)
     p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
@@ -108,7 +111,7 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(run=_structure)
     p = sub.add_parser("forces", help="joint reactions and the driving torque at one instant")
     _scene_arguments(p)
-    p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver")
+    p.add_argument("--at", type=arguments.POSITION, help="φ₂ in degrees, or s in metres for a linear driver")
     p.add_argument("--no-inertia", action="store_true",
                    help="leave the inertia forces out (as tasks 5.1–5.2 do)")
     p.add_argument("--json", action="store_true", help="print JSON (SI units)")
@@ -119,9 +122,9 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--method", required=True, choices=list(practice_steps.KINDS),
                    help="compass, plans, forces, lever (linkages), willis (gear trains), "
                         "balance (rotors), three (a four-bar's three-position construction)")
-    p.add_argument("--at", type=float, help="φ₂ in degrees, or s in metres for a linear driver "
+    p.add_argument("--at", type=arguments.POSITION, help="φ₂ in degrees, or s in metres for a linear driver "
                                             "(plans, forces, lever)")
-    p.add_argument("--answers", metavar="FILE", help='a JSON file {"answers": {"<step id>": '
+    p.add_argument("--answers", metavar="FILE", type=arguments.input_file(practice.ANSWERS_MAX), help='a JSON file {"answers": {"<step id>": '
                                                       '[x, y] or a number}} to grade')
     p.add_argument("--class", dest="class_code", metavar="CODE",
                    help="store each graded answer as a check of this class (with --student)")
@@ -138,24 +141,24 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(run=_link)
     p = sub.add_parser("variants", help="exam and homework variants of a task, with answer keys")
     p.add_argument("scene", help="the task's preset id (one with printed answers, e.g. zbirka-3.1)")
-    p.add_argument("--count", type=int, default=30, help=f"how many (1 … {MAX_COUNT})")
-    p.add_argument("--seed", type=int, default=1, help="the same seed gives the same variants")
-    p.add_argument("--spread", type=int, default=DEFAULT_SPREAD,
+    p.add_argument("--count", type=arguments.number(1, MAX_COUNT, integer=True), default=30, help=f"how many (1 … {MAX_COUNT})")
+    p.add_argument("--seed", type=arguments.number(integer=True), default=1, help="the same seed gives the same variants")
+    p.add_argument("--spread", type=arguments.number(integer=True), default=DEFAULT_SPREAD,
                    help="± %% around the book's values (angles: ± spread/2 degrees)")
     p.add_argument("--hold", action="append", default=[], metavar="GIVEN",
                    help="keep a given at the book's value: its label (AB) or number (1, 2, …)")
     p.add_argument("--json", action="store_true", help="print JSON (the same bytes for the same arguments)")
-    p.add_argument("--sheets", metavar="FILE.html", help="write the students' sheets and the key (A4)")
-    p.add_argument("--key", metavar="FILE.csv", help="write the answer key as CSV")
-    p.add_argument("--moodle", metavar="FILE.xml",
+    p.add_argument("--sheets", metavar="FILE.html", type=arguments.output_file, help="write the students' sheets and the key (A4)")
+    p.add_argument("--key", metavar="FILE.csv", type=arguments.output_file, help="write the answer key as CSV")
+    p.add_argument("--moodle", metavar="FILE.xml", type=arguments.output_file,
                    help="write the set as a Moodle question bank (one cloze question a variant)")
     p.add_argument("--language", choices=("sr", "en"), default="sr",
                    help="of the sheets and the Moodle questions")
     p.set_defaults(run=_variants)
     p = sub.add_parser("bench", help="time the solver against a closed-form numpy baseline")
     p.add_argument("scene")
-    p.add_argument("--steps", type=int, default=3600, help="positions per cycle")
-    p.add_argument("--repeat", type=int, default=200, help="timed repetitions (median is shown)")
+    p.add_argument("--steps", type=arguments.COUNT, default=3600, help="positions per cycle")
+    p.add_argument("--repeat", type=arguments.COUNT, default=200, help="timed repetitions (median is shown)")
     p.set_defaults(run=_bench)
     return parser
 
@@ -205,7 +208,10 @@ def _load(args):
     if (args.scene is None) == (args.link is None):
         raise SceneError("give a scene (a preset id or a .toml file) or --link TEXT, not both "
                          "and not neither")
-    return decode(args.link) if args.link is not None else load_any(args.scene)
+    scene = decode(args.link) if args.link is not None else load_any(args.scene)
+    if getattr(args, "at", None) is not None and isinstance(scene, Scene):
+        args.at = arguments.at(scene, args.at)
+    return scene
 
 
 def _link(args) -> int:

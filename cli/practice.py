@@ -51,11 +51,9 @@ ANSWERS_MAX = 1_000_000  # bytes: a method's answers are a few kB; a 50 MB file 
 
 
 def read_answers(path: str) -> dict:
-    """The answers file: ``{"answers": {"<id>": [x, y] or number}}`` (SceneError if not)."""
+    """The answers file: ``{"answers": {"<id>": [x, y] or number}}`` (SceneError if not).
+    Its size and encoding were checked with the command line (``arguments.input_file``)."""
     try:
-        if Path(path).stat().st_size > ANSWERS_MAX:
-            raise SceneError(f"answers: {path} is over {ANSWERS_MAX // 1000} kB; an answers "
-                             "file holds a number or a pair per step")
         data = json.loads(Path(path).read_text(encoding="utf-8"), parse_constant=_not_json)
     except OSError as exc:
         raise SceneError(f"answers: cannot read {path}: {exc.strerror}") from None

@@ -7,13 +7,13 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 
 import numpy as np
 
-from mechanisms import SceneError
 from mechanisms.synthesis import load_task
 from solvers.synthesis import DEFAULT_BUDGET, DEFAULT_SECONDS, Result, synthesize
+
+from . import arguments
 
 MOST_BUDGET = 10_000_000
 MOST_SECONDS = 600.0
@@ -24,21 +24,17 @@ def add(sub) -> None:
                                           "points in order (path synthesis)")
     p.add_argument("task", metavar="TASK.toml", help="the points, timing and bounds "
                                                      "(docs/synthesis.md)")
-    p.add_argument("--seed", type=int, default=1, help="the same seed gives the same four-bar")
-    p.add_argument("--budget", type=int, default=DEFAULT_BUDGET,
+    p.add_argument("--seed", type=arguments.number(integer=True), default=1, help="the same seed gives the same four-bar")
+    p.add_argument("--budget", type=arguments.number(100, MOST_BUDGET, integer=True), default=DEFAULT_BUDGET,
                    help=f"evaluations the search may spend (100 … {MOST_BUDGET:,}; more: slower, "
                         f"closer)")
-    p.add_argument("--seconds", type=float, default=DEFAULT_SECONDS,
+    p.add_argument("--seconds", type=arguments.number(0.1, MOST_SECONDS), default=DEFAULT_SECONDS,
                    help="wall-clock seconds the search may spend, whatever the budget")
     p.add_argument("--json", action="store_true", help="print JSON (the task's units)")
     p.set_defaults(run=_synthesize)
 
 
 def _synthesize(args: argparse.Namespace) -> int:
-    if not 100 <= args.budget <= MOST_BUDGET:
-        raise SceneError(f"--budget must be 100 … {MOST_BUDGET:,} evaluations, got {args.budget}")
-    if not (math.isfinite(args.seconds) and 0 < args.seconds <= MOST_SECONDS):
-        raise SceneError(f"--seconds must be above 0 and at most {MOST_SECONDS:g}, got {args.seconds:g}")
     task = load_task(args.task)
     result = synthesize(task, seed=args.seed, budget=args.budget, seconds=args.seconds)
     if args.json:

@@ -284,8 +284,8 @@ async def lecturer(url: str, code: str, key: str, until: float, report: ClassRep
             await asyncio.sleep(1.0)
 
 
-async def fault(kind: str | None, deploy: Deploy, at: float) -> None:
-    """The failure in the middle of the run."""
+async def fault(kind: str | None, deploy: Deploy, at: float, gap: float = GAP) -> None:
+    """The failure in the middle of the run (PostgreSQL down for ``gap`` seconds)."""
     if kind is None:
         return
     await asyncio.sleep(max(0.0, at - time.monotonic()))
@@ -298,7 +298,7 @@ async def fault(kind: str | None, deploy: Deploy, at: float) -> None:
     pg_ctl = str(next(iter(sorted(Path("/usr/lib/postgresql").glob("*/bin")))) / "pg_ctl")
     await asyncio.to_thread(subprocess.run, [*as_postgres, pg_ctl, "-D", str(deploy.pgdata),
                                              "-m", "fast", "-w", "stop"], capture_output=True)
-    await asyncio.sleep(GAP)
+    await asyncio.sleep(gap)
     await asyncio.to_thread(subprocess.run, [  # as deploy/start.sh starts it
         *as_postgres, pg_ctl, "-D", str(deploy.pgdata), "-w", "-l", f"{deploy.pgdata}/server.log",
         "-o", f"-k {deploy.pgdata} -c listen_addresses=''", "start"], capture_output=True)
@@ -334,7 +334,8 @@ def compare(report: ClassReport, rows: list[dict]) -> tuple[int, int]:
     return missing, disagree
 
 
-async def _run(deploy: Deploy, students: int, seconds: float, kind: str | None) -> tuple:
+async def _run(deploy: Deploy, students: int, seconds: float, kind: str | None,
+               gap: float = GAP) -> tuple:
     code, key = store.create(TASK, "plans", url=deploy.database)
     tokens = [store.join(code, f"s{i}", url=deploy.database) for i in range(students)]
     steps = {s.id: s for s in steps_for(load_preset(TASK), "plans")}
@@ -346,7 +347,7 @@ async def _run(deploy: Deploy, students: int, seconds: float, kind: str | None) 
     pg = postgres_pids(deploy.pgdata)
     cpu = (cpu_seconds([p for p in apps if p]), cpu_seconds(pg))
     work = [student(url, code, t, steps, until, report, random.Random(i)) for i, t in enumerate(tokens)]
-    await asyncio.gather(lecturer(url, code, key, until + 5.0, report), fault(kind, deploy, start + seconds / 2),
+    await asyncio.gather(lecturer(url, code, key, until + 5.0, report), fault(kind, deploy, start + seconds / 2, gap),
                          *work)
     wall = time.monotonic() - start
     apps_now = [app_pid(p) for p in deploy.ports]
@@ -365,11 +366,12 @@ FLOOR = "bench/floor_class_app.py"  # a class's pages with nothing but the store
 
 
 def class_load(students: int, seconds: float, kind: str | None = None, floor: bool = False,
-               clients_cpu: int | None = None) -> dict:
+               clients_cpu: int | None = None, gap: float = GAP) -> dict:
     """The whole run on a deploy of its own (of the floor's pages with ``floor``): the
     figures as one dict (the JSON line). ``clients_cpu``: the simulated phones on that core
     alone and the deployment (app processes, PostgreSQL, nginx) on the others, so that the
-    server's own capacity shows apart from the clients' (both shared two cores before)."""
+    server's own capacity shows apart from the clients' (both shared two cores before).
+    ``gap``: how long PostgreSQL stays down in the ``database`` fault."""
     every = os.sched_getaffinity(0)
     server = every - {clients_cpu} if clients_cpu is not None else None
     if clients_cpu is not None and (clients_cpu not in every or not server):
@@ -379,7 +381,7 @@ def class_load(students: int, seconds: float, kind: str | None = None, floor: bo
         os.sched_setaffinity(0, {clients_cpu})
     clients = os.times()
     try:
-        report, rows, usage = asyncio.run(_run(deploy, students, seconds, kind))
+        report, rows, usage = asyncio.run(_run(deploy, students, seconds, kind, gap))
     finally:
         deploy.stop()
         if clients_cpu is not None:

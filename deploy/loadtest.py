@@ -129,6 +129,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--url", help="a running app (http://127.0.0.1:PORT); default: start one")
     parser.add_argument("--sessions", type=int, default=30)
     parser.add_argument("--seconds", type=float, default=120.0)
+    parser.add_argument("--warm", type=float, default=5.0, metavar="SECONDS",
+                        help="warm the server's caches first with six sessions (0: open cold)")
     parser.add_argument("--class", dest="students", type=int, metavar="N",
                         help="a class of N students on deploy/start.sh (deploy/classload.py)")
     parser.add_argument("--fault", choices=("kill", "database"),
@@ -157,7 +159,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         asyncio.run(wait_ready(url))
         before = memory_mb(server.pid) if server else None
-        asyncio.run(load(url, min(args.sessions, 6), 5.0))  # warm the caches
+        if args.warm > 0:
+            asyncio.run(load(url, min(args.sessions, 6), args.warm))  # warm the caches
         warm = memory_mb(server.pid) if server else None
         report = asyncio.run(load(url, args.sessions, args.seconds, server.pid if server else None))
         after = memory_mb(server.pid) if server else None

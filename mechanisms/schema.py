@@ -96,6 +96,16 @@ class Driver:
     speed: float
     accel: float = 0.0
 
+    def range(self) -> tuple[float, float]:
+        """Where the driver may be put (the pages' position slider, the command line's
+        ``--at``): φ₂ in degrees within one turn either way, or s in metres within three
+        times the scene's own s either way (at least ±0.3 m). Beyond it no position is
+        meant: a φ₂ of −1e308° is no angle at all."""
+        if self.kind == "rotating":
+            return -360.0, 360.0
+        reach = max(abs(self.at), 0.1)
+        return round(-3 * reach, 3), round(3 * reach, 3)
+
 
 @dataclass(frozen=True)
 class Force:

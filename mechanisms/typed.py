@@ -10,6 +10,8 @@ import math
 import re
 from dataclasses import dataclass
 
+from .reader import LARGEST
+
 NUMBER = re.compile(r"[+\-\u2212]?(?:[0-9]+(?:[.,][0-9]*)?|[.,][0-9]+)(?:[eE][+\-\u2212]?[0-9]+)?")
 
 
@@ -40,4 +42,19 @@ def parse(text: str, language: str, *, integer: bool = False) -> float:
         raise Refused("not_number", text)
     if integer and not value.is_integer():
         raise Refused("integer", text)
+    return value
+
+
+def check(text: str, language: str, *, minimum: float | None = None,
+          maximum: float | None = None, integer: bool = False) -> float:
+    """``parse`` and the field's range: a value outside it is refused, not clamped. Every
+    range lies within the scene loader's (±``LARGEST``): no solver or scale is handed a
+    number whose square overflows (ω = 1e154 on the rotor page was an OverflowError)."""
+    value = parse(text, language, integer=integer)
+    minimum = -LARGEST if minimum is None else max(minimum, -LARGEST)
+    maximum = LARGEST if maximum is None else min(maximum, LARGEST)
+    if value < minimum:
+        raise Refused("below", text, minimum)
+    if value > maximum:
+        raise Refused("above", text, maximum)
     return value

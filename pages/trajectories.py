@@ -45,7 +45,7 @@ from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
-from ui.numbers import bound_link, bound_slider, link_option
+from ui.numbers import bound_choices, bound_link, bound_slider, link_note, link_option
 from ui.present import look
 from ui.scenes import length_range, length_slider, scene_download, scene_picker
 from ui.selfcheck import answer_box, computed, named
@@ -150,7 +150,8 @@ def length_control(base: Scene, scene: Scene, smooth: int | None, numbered: tupl
         return length_frames(base.with_(lengths=others, speed=scene.driver.speed), number,
                              values, smooth, numbered, current(), look())
 
-    return slider_control(sliders, CHART_LENGTH, "lengths", asked, frames, "fig.unbuildable")
+    return slider_control(sliders, CHART_LENGTH, "lengths", asked, frames, "fig.unbuildable",
+                          t("traj.chart_length_pick"))
 
 
 @page_cache(st.cache_resource(max_entries=8, show_spinner=False, hash_funcs=BY_REPR))
@@ -189,7 +190,8 @@ def travel_control(scene: Scene, steps: int, cycles: int, point: str,
         fixed = scene.with_(travel=replace(scene.travel, **{field: sliders[key].lo}))
         return travel_frames(fixed, field, values, steps, cycles, point, current(), look())
 
-    return slider_control(sliders, CHART_TRAVEL, "travel", asked, frames, "fig.unreachable")
+    return slider_control(sliders, CHART_TRAVEL, "travel", asked, frames, "fig.unreachable",
+                          t("traj.chart_travel_pick"))
 
 
 controls, main = page_columns()
@@ -344,8 +346,10 @@ with controls:
     view = link_option(st.radio, t("traj.view"), list(views), "view",
                       format_func=lambda v: t(views[v]), horizontal=True)
     movable = [p for p in base.point_names if p not in base.frame]
-    points = st.multiselect(t("traj.points"), movable, key="points",
-                            bind="query-params") or movable[-1:]
+    bound_choices("points", t("traj.points"), movable)
+    chosen = st.multiselect(t("traj.points"), movable, key="points", bind="query-params")
+    link_note("points", t("traj.points"), chosen)
+    points = chosen or movable[-1:]
     geometry = st.container()  # ω₂ (or the travel), the lengths, the readouts: the fragment's
 
 

@@ -8,7 +8,7 @@ import json
 import pandas as pd
 import streamlit as st
 
-from exams.codes import DEFAULT_SPREAD, MAX_SEED, Settings
+from exams.codes import DEFAULT_SPREAD, MAX_SEED, Settings, parse
 from exams.moodle import moodle_xml
 from exams.sheets import sheets_html
 from exams.variants import (
@@ -22,7 +22,7 @@ from exams.variants import (
     symbol,
     task,
 )
-from mechanisms import load_preset, preset_ids
+from mechanisms import SceneError, load_preset, preset_ids
 from mechanisms.messages import strings
 from ui.cache import page_cache
 from ui.chapters import VARIANTS, page_for
@@ -47,8 +47,32 @@ def tasks() -> list[str]:
     return [pid for pid in preset_ids() if load_preset(pid).book]
 
 
+def open_code() -> None:
+    """A variant's code in the link (``?v=``, as each variant's link and sheet carry it):
+    its set's task, seed, spread and held givens become the page's settings, so a lecturer
+    makes the same set again; a damaged code is said, and the page keeps its own."""
+    code = st.query_params.get("v")
+    if code is None:
+        return
+    st.query_params.pop("v", None)
+    try:
+        settings, _ = parse(code)
+        if settings.task not in tasks():
+            raise VariantError(t("var.no_task", task=settings.task))
+    except (SceneError, VariantError) as exc:
+        st.session_state["var_code_said"] = ("error", t("var.bad_set_code", reason=message(exc)))
+        return
+    st.session_state.update({"var_task": settings.task, "var_seed": settings.seed,
+                             "var_spread": settings.spread,
+                             f"var_hold_{settings.task}": sorted(settings.held)})
+    st.session_state["var_code_said"] = ("info", t("var.set_opened", code=code))
+
+
 st.title(f"{VARIANTS.icon} {t(VARIANTS.title)}")
 st.write(t("var.intro"))
+open_code()
+if said := st.session_state.pop("var_code_said", None):  # (said once, as the page opens)
+    getattr(st, said[0])(said[1], icon=":material/link:" if said[0] == "info" else ":material/link_off:")
 titles = {pid: f"{pid} — {title_of(load_preset(pid))}" for pid in tasks()}  # in this language
 choice = st.selectbox(t("var.task"), tasks(), key="var_task", format_func=titles.__getitem__,
                       index=tasks().index("zbirka-3.1"))  # the course's exam favourite

@@ -22,6 +22,7 @@ import sqlalchemy as sa
 
 from classes import store, summary
 from deploy.client import free_port
+from .test_cli import run
 
 ROOT = Path(__file__).resolve().parents[1]
 PG_BIN = next(iter(sorted(Path("/usr/lib/postgresql").glob("*/bin"))), None) \
@@ -286,16 +287,16 @@ def test_with_the_database_stopped_a_check_is_not_saved_and_later_stored_once(po
 
 
 def _command_line(database: Path):
-    """``python -m solvers …`` on the SQLite store ``database``, as a separate process."""
-    env = {**os.environ, "MEHANIZMI_DATABASE_URL": f"sqlite:///{database}"}
-
+    """``python -m solvers …`` on the SQLite store ``database`` — run in this process, as
+    tests/test_cli.py runs it (a fresh interpreter is 1.5 s of imports a command; the
+    store is a file either way, and the tests below of two processes at once use two)."""
     def cli(*args: str) -> subprocess.CompletedProcess:
-        return subprocess.run([sys.executable, "-m", "solvers", *args], cwd=ROOT, env=env,
-                              capture_output=True, text=True)
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setenv("MEHANIZMI_DATABASE_URL", f"sqlite:///{database}")
+            return run(*args)
     return cli
 
 
-@pytest.mark.server
 def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
     cli = _command_line(tmp_path / "cli.db")
     made = json.loads(cli("class", "create", "zbirka-3.1", "--method", "plans", "--json").stdout)
@@ -322,7 +323,6 @@ def test_the_command_line_scripts_a_class_on_the_same_store(tmp_path):
     assert "purged 0" in cli("class", "purge").stdout
 
 
-@pytest.mark.server
 def test_a_second_hand_in_is_stored_as_the_next_tries_and_hostile_files_store_nothing(tmp_path):
     cli = _command_line(tmp_path / "cli.db")
     made = json.loads(cli("class", "create", "zbirka-3.1", "--method", "plans", "--json").stdout)
@@ -452,4 +452,4 @@ def test_the_command_line_ends_quietly_on_a_closed_pipe_and_refuses_a_huge_answe
     huge.write_text('{"answers": {"v.a-b": [1, 2]}, "pad": "' + "x" * 2_000_000 + '"}')
     cli = _command_line(tmp_path / "cli.db")
     said = cli("practice", "zbirka-3.1", "--method", "plans", "--answers", str(huge))
-    assert said.returncode == 2 and "over 1000 kB" in said.stderr and "Traceback" not in said.stderr
+    assert said.returncode == 2 and "answers.json' is 2,000 kB; at most 1000 kB" in said.stderr and "Traceback" not in said.stderr

@@ -233,3 +233,47 @@ def test_the_command_lines_own_refusals_are_one_line_and_exit_2(args):
     assert out.returncode == 2 and out.stdout == ""
     assert len(out.stderr.strip().splitlines()) == 1 and out.stderr.startswith("error: ")
     assert "--help" in out.stderr and "usage:" not in out.stderr
+
+
+EDGES = {  # (arguments, what the one line must say); {d}: a folder, {big}/{binary}: files
+    "a folder for the sheets": (("variants", "zbirka-3.1", "--sheets", "{d}"), "is a folder"),
+    "a folder for Moodle": (("variants", "zbirka-3.1", "--moodle", "{d}"), "is a folder"),
+    "a key in a missing folder": (("variants", "zbirka-3.1", "--key", "{d}/missing/k.csv"),
+                                  "does not exist"),
+    "negative steps": (("bench", "zbirka-3.1", "--steps", "-5"), "'-5' is less than 1"),
+    "no steps": (("bench", "zbirka-3.1", "--steps", "0"), "'0' is less than 1"),
+    "a negative repeat": (("bench", "zbirka-3.1", "--repeat", "-1"), "'-1' is less than 1"),
+    **{f"solve at {v}": (("solve", "zbirka-3.1", "--at", v), "not one number")
+       for v in ("nan", "inf", "1e999")},
+    **{f"{c} at nan": ((c, "zbirka-3.1", *m, "--at", "nan"), "not one number")
+       for c, m in (("plan", ()), ("forces", ()), ("practice", ("--method", "plans")))},
+    "solve at -1e308": (("solve", "zbirka-3.1", "--at", "-1e308"), "less than -1000000000"),
+    "solve beyond a turn": (("solve", "zbirka-3.1", "--at", "-1000"), "outside this scene's range"),
+    "a slider beyond its range": (("solve", "analitika-2.2", "--at", "50"), "outside this scene's range"),
+    "a class at nan": (("class", "create", "zbirka-3.1", "--method", "plans", "--at", "nan"),
+                       "not one number"),
+    "a class beyond a turn": (("class", "create", "zbirka-3.1", "--method", "plans", "--at", "720"),
+                              "outside this scene's range"),
+    "a binary answers file": (("practice", "zbirka-3.1", "--method", "plans", "--answers", "{binary}"),
+                              "is not text in UTF-8"),
+    "a huge answers file": (("practice", "zbirka-3.1", "--method", "plans", "--answers", "{big}"),
+                            "at most 1000 kB"),
+    "an answers folder": (("practice", "zbirka-3.1", "--method", "plans", "--answers", "{d}"),
+                          "is a folder"),
+}
+
+
+@pytest.mark.parametrize("name", list(EDGES))
+def test_every_command_at_its_edges_says_one_line_and_exits_2(name, tmp_path):
+    """Issue 85's table: a wrong file or number is the user's to fix (exit 2, one line that
+    names what was given), never a traceback, never a run at a position nobody meant."""
+    args, said = EDGES[name]
+    (tmp_path / "binary.json").write_bytes(b"\x80\x81{}")
+    (tmp_path / "big.json").write_text('{"answers": {}, "pad": "' + "x" * 1_100_000 + '"}')
+    where = {"d": str(tmp_path), "big": str(tmp_path / "big.json"),
+             "binary": str(tmp_path / "binary.json")}
+    out = run(*(a.format(**where) for a in args))
+    assert out.returncode == 2 and out.stdout == "", (out.returncode, out.stdout[:200])
+    assert len(out.stderr.strip().splitlines()) == 1 and out.stderr.startswith("error: "), out.stderr
+    assert said in out.stderr and "Traceback" not in out.stderr
+    assert not list(tmp_path.glob("*.html")) and not list(tmp_path.glob("*.xml"))

@@ -11,6 +11,8 @@ import pytest
 
 from streamlit.testing.v1 import AppTest
 
+from ui.url import LINK_KEYS
+
 from .test_pages import ROOT
 
 PAGES = ["app.py", "pages/trajectories.py", "pages/velocity_plans.py", "pages/assur_groups.py",
@@ -37,11 +39,14 @@ def _opened(path: str, query: dict[str, str]):
     return at
 
 
-def _own_link(path: str) -> list[str]:
-    """The parameters a page writes into its own link when it is opened."""
-    at = _opened(path, {})
+def _own_link(path: str, query: dict[str, str] | None = None) -> list[str]:
+    """The parameters a page reads from its link when it is opened (with ``query``): those
+    it writes into it, and those its widgets read (``ui.url.linked``: Streamlit's own
+    binding writes a slider's value in the browser, which AppTest has not)."""
+    at = _opened(path, query or {})
     assert not at.exception, path
-    return list(at.query_params)
+    read = at.session_state[LINK_KEYS] if LINK_KEYS in at.session_state else set()
+    return sorted((set(at.query_params) | read) - set(query or {}) - {"lang"})
 
 
 @pytest.mark.sweep
@@ -79,3 +84,60 @@ def test_the_crawl_reaches_every_page_s_own_parameters():
                                                     "pages/rotor_balancing.py")}
     assert {"scene", "UL", "Uv", "Ua"} <= keys["pages/velocity_plans.py"]
     assert {"xI", "valueI", "omega"} <= keys["pages/rotor_balancing.py"]
+
+
+# every kind of scene each page takes: one group and two, a triad, a driver that slides, a
+# tine with its travel, a gear train, a rotor (a link's bounds are this scene's: the Assur
+# page's group slider ends at its number of groups)
+KINDS = {"pages/trajectories.py": ["zbirka-1.3", "zbirka-2.1", "analitika-2.2"],
+         "pages/velocity_plans.py": ["zbirka-2.1", "triad-full-turn", "analitika-2.2"],
+         "pages/assur_groups.py": ["zbirka-2.1", "triad-full-turn", "analitika-2.2", "zbirka-3.1"],
+         "pages/kinetostatics.py": ["zbirka-5.1", "zbirka-2.1", "analitika-2.2"],
+         "pages/planetary_gears.py": ["zbirka-6.8", "zbirka-6.1"],
+         "pages/rotor_balancing.py": ["zbirka-7.1", "zbirka-7.2"]}
+EDGE_VALUES = ["abc", "0", "99", "-1"]  # not a number, and both sides of every range
+
+
+def _said(at) -> str:
+    return " ".join(e.value for e in (*at.warning, *at.error, *at.info))
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize("path,scene", [(p, s) for p, kinds in KINDS.items() for s in kinds])
+def test_every_link_key_of_every_scene_kind_is_taken_or_said(path, scene):
+    """Issue 85: a link's value is used (the link keeps it) or said in words on the page
+    (quoted as given) — never dropped without a word, never an error sentence (the Assur
+    page once handed its group slider 99 for a scene of two groups)."""
+    keys = _own_link(path, {"scene": scene})
+    assert keys, (path, scene)
+    for value in EDGE_VALUES:
+        at = _opened(path, {"scene": scene, **{key: value for key in keys}})
+        assert not at.exception, (path, scene, value, at.exception[0].message)
+        said = _said(at)
+        for key in keys:
+            kept = at.query_params.get(key)
+            kept = kept[0] if isinstance(kept, list) and kept else kept
+            assert kept == value or f"` {value} `" in said, (path, scene, key, value, kept)
+
+
+@pytest.mark.parametrize("path,query,word", [
+    ("pages/trajectories.py", {"scene": "zbirka-1.3", "view": "smooth", "points": "abc"}, "` abc `"),
+    ("pages/trajectories.py", {"scene": "zbirka-1.3", "view": "smooth", "chart_length": "abc"},
+     "` abc `"),
+    ("app.py", {"present": "abc"}, "` abc `"),
+    ("pages/assur_groups.py", {"scene": "zbirka-2.1", "upto": "9"}, "` 9 `"),
+    ("pages/variants.py", {"v": "3.1-S42-ZZZZZ"}, "3.1-S42-ZZZZZ")])
+def test_the_link_values_issue_85_found_dropped_are_said(path, query, word):
+    at = _opened(path, query)
+    assert not at.exception and word in _said(at), _said(at)
+
+
+def test_the_variants_page_opens_the_set_a_code_names():
+    from exams.codes import Settings, code
+
+    given = code(Settings("zbirka-3.1", 42, 20, frozenset({1})), 7)
+    at = _opened("pages/variants.py", {"v": given})
+    assert at.selectbox(key="var_task").value == "zbirka-3.1"
+    assert at.text_input(key="var_seed").value == "42" and at.slider(key="var_spread").value == 20
+    assert at.multiselect(key="var_hold_zbirka-3.1").value == [1] and given in _said(at)
+

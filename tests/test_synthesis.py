@@ -9,18 +9,18 @@ import math
 import subprocess
 import sys
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from cli import main
 from mechanisms import load_scene, parse_scene
 from mechanisms.synthesis import SynthesisTask, parse_task
 from solvers import solve
 from solvers.synthesis import keeps_rules, synthesize
+
+from .test_cli import run
 
 ROOT = Path(__file__).resolve().parents[1]
 TEMPLATE = ROOT / "mechanisms" / "templates" / "four-bar.toml"
@@ -111,13 +111,6 @@ def test_every_answer_keeps_the_rules_and_is_the_solvers_own(points, timing, fix
                         rel_tol=1e-9, abs_tol=1e-12)
 
 
-def _cli(capsys, *args) -> SimpleNamespace:
-    """The command line run in this process (as ``python -m solvers`` runs it)."""
-    code = main(list(args))
-    out, err = capsys.readouterr()
-    return SimpleNamespace(returncode=code, stdout=out, stderr=err)
-
-
 BAD = {
     "two points": ("points = [[0, 0], [1, 1]]", "points"),
     "NaN": ("points = [[0, 0], [1, 1], [2, nan]]", "points[2]"),
@@ -136,42 +129,42 @@ BAD = {
 
 
 @pytest.mark.parametrize("name", list(BAD))
-def test_a_bad_task_exits_2_with_one_line_naming_the_field(name, tmp_path, capsys):
+def test_a_bad_task_exits_2_with_one_line_naming_the_field(name, tmp_path):
     text, field = BAD[name]
     path = tmp_path / "task.toml"
     path.write_text(text)
-    run = _cli(capsys, "synthesize", str(path))
-    assert run.returncode == 2, run.stderr
-    assert run.stdout == "" and len(run.stderr.strip().splitlines()) == 1, run.stderr
-    assert field in run.stderr and "Traceback" not in run.stderr
+    done = run("synthesize", str(path))
+    assert done.returncode == 2, done.stderr
+    assert done.stdout == "" and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert field in done.stderr and "Traceback" not in done.stderr
 
 
 @pytest.mark.parametrize("args", [["missing.toml"], ["."], ["{task}", "--budget", "0"],
                                   ["{task}", "--seconds", "nan"]])
-def test_a_bad_file_or_number_on_the_command_line_exits_2(args, tmp_path, capsys, monkeypatch):
+def test_a_bad_file_or_number_on_the_command_line_exits_2(args, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     task = tmp_path / "task.toml"
     task.write_text("points = [[0, 0], [1, 1], [2, 0]]")
-    run = _cli(capsys, "synthesize", *[a.format(task=task) for a in args])
-    assert run.returncode == 2 and len(run.stderr.strip().splitlines()) == 1, run.stderr
+    done = run("synthesize", *[a.format(task=task) for a in args])
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
 
 
-def test_the_json_answer_is_what_solve_prints_for_its_scene(tmp_path, capsys):
+def test_the_json_answer_is_what_solve_prints_for_its_scene(tmp_path):
     task = tmp_path / "task.toml"
     task.write_text('points = [[3, 3], [2.759, 3.363], [2.372, 3.663]]\ntiming = "angles"\n'
                     "crank_angles = [30, 45, 60]\ncrank_pivot = [0, 0]\nframe_angle = 0\n"
                     "max_length = 50\nbox = 50\n")
-    run = subprocess.run([sys.executable, "-m", "solvers", "synthesize", str(task), "--json",
-                          "--budget", "20000"], capture_output=True, text=True, cwd=ROOT, timeout=120)
-    assert run.returncode == 0, run.stderr
-    data = json.loads(run.stdout)
+    done = subprocess.run([sys.executable, "-m", "solvers", "synthesize", str(task), "--json",
+                           "--budget", "20000"], capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert done.returncode == 0, done.stderr
+    data = json.loads(done.stdout)
     assert {"objective", "evaluations", "seconds", "mechanism", "positions", "scene"} <= set(data)
     assert set(data["mechanism"]) >= {"O", "D", "crank", "coupler", "rocker"}
     scene = tmp_path / "found.toml"
     scene.write_text(data["scene"])
     total = 0.0
     for position, target in zip(data["positions"], [(3, 3), (2.759, 3.363), (2.372, 3.663)]):
-        solved = json.loads(_cli(capsys, "solve", str(scene), "--at",
+        solved = json.loads(run("solve", str(scene), "--at",
                                  repr(position["crank_angle_deg"]), "--json").stdout)
         for name in ("A", "B", "M"):
             p = solved["points"][name]
@@ -182,12 +175,12 @@ def test_the_json_answer_is_what_solve_prints_for_its_scene(tmp_path, capsys):
     assert [round(p["crank_angle_deg"], 9) for p in data["positions"]] == [30, 45, 60]
 
 
-def test_the_text_answer_has_units_and_each_points_error(tmp_path, capsys):
+def test_the_text_answer_has_units_and_each_points_error(tmp_path):
     task = tmp_path / "task.toml"
     task.write_text("points = [[0, 0], [1, 1], [2, 0], [1, -1]]\n")
-    run = _cli(capsys, "synthesize", str(task), "--budget", "5000")
-    assert run.returncode == 0, run.stderr
-    assert "error" in run.stdout and "φ₂ °" in run.stdout and run.stdout.count("\n") > 8
+    done = run("synthesize", str(task), "--budget", "5000")
+    assert done.returncode == 0, done.stderr
+    assert "error" in done.stdout and "φ₂ °" in done.stdout and done.stdout.count("\n") > 8
 
 
 def test_the_same_seed_gives_the_same_four_bar():

@@ -200,7 +200,7 @@ def test_no_request_leaves_for_another_host(app_url, localised):
         page = localised.new_page()
         page.goto(f"{app_url}/{path}?lang=sr")
         wait_idle(page)
-        page.wait_for_timeout(1500)  # late requests: fonts, icons, the charts' bundles
+        page.wait_for_load_state("networkidle")  # late requests: fonts, icons, the charts' bundles
         page.close()
     own = urlparse(app_url).netloc
     outside = {u for u in localised.asked

@@ -23,7 +23,9 @@ from plotly.io.json import to_json_plotly
 
 from figures.raw import RawFigure
 from mechanisms.schema import Scene
-from ui.url import url_set
+from mechanisms.typed import Refused
+from ui.numbers import link_note
+from ui.url import linked, said_of_link, url_set
 
 STEP_DEG = 5.0  # 72 frames a turn: smooth to scrub, small enough to send
 FRAMES = 36  # about this many frames along a slider's range (a link's length: every 5th step)
@@ -113,18 +115,24 @@ class Ranged(NamedTuple):
 
 def slider_control(sliders: dict[str, Ranged], remembered: str, group: str, asked: bool | str,
                    frames: Callable[[str, tuple[float, ...]], str | None],
-                   unreachable: str) -> Crank:
+                   unreachable: str, label: str) -> Crank:
     """A chart's own control of one of the page's ``sliders`` (by their keys): the one last
     picked in its list (the first at first), kept in the session and in the link as
     ``remembered`` (``?chart_length=L3``), so a reload or a shared link moves the same one;
     at about ``FRAMES`` values along its range, the page's value among them, with their
     frames (``frames(key, values)``, a page's cached crank_frames) when the student asked
-    (``asked``: live()). Letting go sets that slider (ui.export.chart)."""
+    (``asked``: live()). Letting go sets that slider (ui.export.chart). A link's choice
+    that is none of them is said under ``label`` (what the control picks)."""
     first = next(iter(sliders))
     if asked in sliders:
         st.session_state[remembered] = asked
-    key = st.session_state.get(remembered, st.query_params.get(remembered))
+    linked(remembered)
+    given = st.query_params.get(remembered)
+    if remembered not in st.session_state and given is not None and given not in sliders:
+        said_of_link(remembered, Refused("unknown", given), first)  # (``label``: said below)
+    key = st.session_state.get(remembered, given)
     key = st.session_state[remembered] = key if key in sliders else first
+    link_note(remembered, label, key)
     if key == first:
         st.query_params.pop(remembered, None)
     else:

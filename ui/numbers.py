@@ -27,10 +27,9 @@ import numpy as np
 import streamlit as st
 from streamlit.errors import StreamlitAPIException
 
-from mechanisms.reader import LARGEST
-from mechanisms.typed import NUMBER, Refused, comma_is_decimal, parse  # noqa: F401 (the pages' parser)
+from mechanisms.typed import NUMBER, Refused, check, comma_is_decimal, parse  # noqa: F401 (the pages' parser)
 from ui.i18n import current, t
-from ui.url import link_default, link_value, said_of_link, url_choice, url_set, url_toggle
+from ui.url import link_default, link_value, linked, said_of_link, url_choice, url_set, url_toggle
 
 REASONS = ("empty", "not_number", "comma", "integer", "below", "above", "repeated", "unknown")  # num.<reason>
 SHOWN_MAX = 40  # characters of a typed text repeated in a message
@@ -82,21 +81,6 @@ def literal(text: str) -> str:
     return f"{fence} {text} {fence}"
 
 
-def check(text: str, language: str, *, minimum: float | None = None,
-          maximum: float | None = None, integer: bool = False) -> float:
-    """``parse`` and the field's range: a value outside it is refused, not clamped. Every
-    range lies within the scene loader's (±``LARGEST``): no solver or scale is handed a
-    number whose square overflows (ω = 1e154 on the rotor page was an OverflowError)."""
-    value = parse(text, language, integer=integer)
-    minimum = -LARGEST if minimum is None else max(minimum, -LARGEST)
-    maximum = LARGEST if maximum is None else min(maximum, LARGEST)
-    if value < minimum:
-        raise Refused("below", text, minimum)
-    if value > maximum:
-        raise Refused("above", text, maximum)
-    return value
-
-
 def _memo(key: str) -> str:
     return f"_num_{key}"
 
@@ -116,6 +100,8 @@ def number_field(label: str, key: str, value: float | None = None, *,
     the field's last good value is returned, so the rest of the page stays as it was.
     """
     where = where if where is not None else st
+    if url:
+        linked(key)
     language = current()
     state = st.session_state
     memo = state.get(_memo(key))  # (language, text shown, value) of the last good reading
@@ -169,6 +155,7 @@ def bound_link(key: str, label: str, low: float | None = None, high: float | Non
     ("1,5" and "−3" would put a slider at its minimum). A value that is not one number in
     ``[low, high]`` (or not one of ``options``), or a key the link gives twice, is said in
     words and dropped, and the page's own value is used."""
+    linked(key)
     read = f"_link_read_{key}"  # the link is read when the page opens, not after
     given = key in st.query_params and not st.session_state.get(read)
     st.session_state[read] = True  # (later runs: the widget's value, the link written from it)
@@ -189,9 +176,37 @@ def bound_link(key: str, label: str, low: float | None = None, high: float | Non
         except Refused as refused:
             st.query_params.pop(key, None)
             if (own := link_default(key)) is not None:
-                st.session_state[key] = own
+                st.session_state[key] = inside(own, low, high, options)
             said_of_link(key, refused, st.session_state.get(key))
     link_note(key, label, st.session_state.get(key))
+
+
+def bound_choices(key: str, label: str, options) -> None:
+    """Before a multiselect Streamlit binds to the link: the link's values that are none of
+    ``options`` are said in words (Streamlit drops them without a word and keeps the rest,
+    or shows the page's own choice when none is left). Said under the widget by
+    ``link_note`` for as long as it holds what the page chose instead."""
+    linked(key)
+    read = f"_link_read_{key}"
+    if key in st.query_params and not st.session_state.get(read):
+        unknown = [v for v in st.query_params.get_all(key) if v not in options]
+        if unknown:
+            said_of_link(key, Refused("unknown", ", ".join(unknown)), None)
+    st.session_state[read] = True
+
+
+def inside(value, low: float | None, high: float | None, options: list | None = None):
+    """``value`` within the widget's bounds of this scene: the nearest option, or clamped
+    to [low, high]. A page's own value may lie beyond them (the Assur page seeds "every
+    group", 99, and its slider ends at this scene's number of groups): a refused link must
+    not hand the widget a value it then refuses."""
+    if options:
+        return min(options, key=lambda o: abs(o - value))
+    if low is not None and value < low:
+        return low
+    if high is not None and value > high:
+        return high
+    return value
 
 
 def link_switch(label: str, key: str, **kwargs) -> bool:

@@ -5,7 +5,12 @@ from __future__ import annotations
 import streamlit as st
 
 from figures.style import NORMAL, PROJECTOR, Look
+from mechanisms.typed import Refused
 from ui.i18n import t
+from ui.numbers import link_note
+from ui.url import linked, said_of_link
+
+SWITCH = {"1": True, "true": True, "0": False, "false": False}  # what ``?present=`` may say
 
 CSS = """
 <style>
@@ -36,10 +41,15 @@ def _sync_url() -> None:
 
 def projector_switch() -> None:
     """The switch (sidebar normally, top of the page while presenting)."""
+    linked("present")
     if "present" not in st.session_state:
-        st.session_state["present"] = st.query_params.get("present") in ("1", "true")
+        given = st.query_params.get("present")
+        st.session_state["present"] = SWITCH.get(given, False)
+        if given is not None and given not in SWITCH:  # said beside the switch, page as usual
+            said_of_link("present", Refused("unknown", given), False)
+            st.query_params.pop("present", None)
+    where = st if presenting() else st.sidebar
     if presenting():
         st.html(CSS)
-        st.toggle(t("app.projector"), key="present", on_change=_sync_url)
-    else:
-        st.sidebar.toggle(t("app.projector"), key="present", on_change=_sync_url)
+    where.toggle(t("app.projector"), key="present", on_change=_sync_url)
+    link_note("present", t("app.projector"), presenting(), where)

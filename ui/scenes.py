@@ -201,10 +201,9 @@ def driver_position(base: Scene) -> Scene:
         if at == driver_start(base):
             return base  # the file's φ₂ exactly: radians(degrees(φ)) may differ in the last bit
         return base.with_(at=math.radians(at))
-    reach = max(abs(base.driver.at), 0.1)
-    bound_link("at", t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3))
-    at = st.slider(t("plans.s"), round(-3 * reach, 3), round(3 * reach, 3),
-                   step=round(reach / 100, 4), key="at", bind="query-params")
+    low, high = base.driver.range()
+    bound_link("at", t("plans.s"), low, high)
+    at = st.slider(t("plans.s"), low, high, step=round(high / 300, 4), key="at", bind="query-params")
     return base.with_(at=at)
 
 

@@ -24,6 +24,15 @@ def url_set(key: str, text: str) -> None:
         st.query_params[key] = text
 
 
+LINK_KEYS = "_link_keys"  # session: every key this page reads from its link
+
+
+def linked(key: str) -> None:
+    """Note that the page reads ``key`` from its link: one list of what a page's links may
+    carry, which tests/test_hostile_links.py opens with hostile values, key by key."""
+    st.session_state.setdefault(LINK_KEYS, set()).add(key)
+
+
 def link_value(key: str) -> str | None:
     """The link's one value of ``key`` (None when it gives none). A key the link gives more
     than once is refused (``Refused`` "repeated"), never its last value taken."""
@@ -45,6 +54,7 @@ def url_choice(widget: Callable, label: str, options: Sequence[str], key: str,
     """``widget`` (st.selectbox, st.radio, …) seeded from ``?key=`` and writing it back. A
     link's value that is not one of ``options`` (or given twice) gives way to ``default``,
     and is kept to be said (``ui.numbers.link_option``)."""
+    linked(key)
     default = link_default(key, options[0]) if default is None else default  # (seed's, if seeded)
     if key not in st.session_state or st.session_state[key] not in options:
         st.session_state[key] = default
@@ -66,6 +76,7 @@ def url_toggle(label: str, key: str, **kwargs) -> bool:
     bound switch set back to its default from a button (the book's "As in the book") kept
     the URL's old value and so its old state. Any other link value is kept to be said
     (``ui.numbers.link_switch``)."""
+    linked(key)
     if key not in st.session_state and key in st.query_params:
         try:
             wanted = link_value(key)
@@ -109,6 +120,7 @@ def url_table(key: str, default: pd.DataFrame, scene: str, rows_fixed: bool = Tr
     rows of numbers, columns as in ``default``) when the page opens and it fits, else
     ``default``. It is then kept until the scene changes, because the editor stores its
     edits relative to it."""
+    linked(key)
     memo = f"_{key}_start"
     first = memo not in st.session_state
     if first or st.session_state[memo][0] != scene:
