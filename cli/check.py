@@ -12,6 +12,7 @@ from exams.variants import VariantError, from_code
 from mechanisms import SceneError, load_preset, preset_ids
 from mechanisms.typed import Refused, parse
 from methods.judge import judge
+from methods.practice import printed_tolerance
 
 from .practice import hint
 
@@ -58,5 +59,5 @@ def _check(args) -> int:
         print(json.dumps(out, ensure_ascii=False))
     else:
         print(f"{out['name']}: {out['diagnosis']} — {out['hint']} (exact {answer.value:.6g} "
-              f"± {step.tolerance:.3g} {answer.unit})".rstrip())
+              f"± {printed_tolerance(step.tolerance):.3g} {answer.unit})".rstrip())
     return 0

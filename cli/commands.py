@@ -29,6 +29,7 @@ from mechanisms.messages import strings
 from mechanisms.rotor import Rotor
 from methods import practice_steps
 from methods.plans import build
+from methods.practice import printed_tolerance
 from reports.values import forces_json, gears_json, motion_json, plan_json, rotor_json
 from solvers.balancing import BalanceError, balance
 from solvers.diagnostics import Unsolvable, explain_singular, solve_instant
@@ -191,7 +192,7 @@ def _variants(args) -> int:
         given = ", ".join(f"{g.label} = {value:g} {g.unit}".rstrip() for g, value in v.given)
         print(f"{v.code}: {given}")
         for a in v.key:
-            tol = "" if a.tolerance is None else f"  (± {a.tolerance:.2g})"
+            tol = "" if a.tolerance is None else f"  (± {printed_tolerance(a.tolerance):.3g})"
             extra = "" if a.asked else "  [self-check]"
             print(f"    {variants.symbol(a.key):16s} {a.value:12.6g} {a.unit}{tol}{extra}")
     return 0
@@ -237,7 +238,8 @@ def _practice(args) -> int:
         return _print_json(data)
     if "steps" in data:
         for step in data["steps"]:
-            print(f"{step['id']:24s} {step['asks']}: {step['expected']} ± {step['tolerance']:.3g} "
+            print(f"{step['id']:24s} {step['asks']}: {step['expected']} ± "
+                  f"{printed_tolerance(step['tolerance']):.3g} "
                   f"{step['unit']}")
         return 0
     stored = data.get("stored", {})

@@ -12,6 +12,7 @@ import html
 import math
 
 from exams.variants import VariantSet, symbol
+from methods.practice import printed_tolerance
 
 WORDS = {
     "en": {"variant": "Variant", "name": "Name and index number", "given": "Given",
@@ -152,7 +153,7 @@ def sheets_html(found: VariantSet, title: str, language: str = "sr") -> str:
         parts.append(f"<h2>{_e(v.code)}</h2><table><tr><th>{_e(w['quantity'])}</th>"
                      f"<th>{_e(w['value'])}</th><th>{_e(w['unit'])}</th><th>{_e(w['tolerance'])}</th></tr>")
         for a in v.key:
-            tol = "" if a.tolerance is None else _n(a.tolerance, 2, language)
+            tol = "" if a.tolerance is None else _n(printed_tolerance(a.tolerance), 3, language)
             row = "<tr>" if a.asked else '<tr class="extra">'
             parts.append(f'{row}<td>{_e(symbol(a.key))}</td><td class="n">{_e(_n(a.value, language=language))}</td>'
                          f'<td>{_e(a.unit)}</td><td class="n">{_e(tol)}</td></tr>')

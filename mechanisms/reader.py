@@ -10,11 +10,24 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 from typing import Any
 
 from .messages import Text, given
 
 LARGEST = 1e9  # beyond this a number is a typo or an attack, and squares of it overflow
+
+
+PART = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
+
+
+def key_parts(key: str) -> tuple[str | int, ...]:
+    """The parts of a key the loader names in a refusal, by the one grammar every scene
+    file has: a table's entry by name after a point, a list's by index in brackets —
+    ``members.2.mass`` → ("members", "2", "mass"), ``masses[1].mass`` → ("masses", 1,
+    "mass"), ``pairs[0].members[1]`` → ("pairs", 0, "members", 1). The builder's tables
+    and the pages' small tables find their cell from these (one reader, one cell named)."""
+    return tuple(int(index) if index else name for name, index in PART.findall(key))
 
 
 class SceneError(ValueError):

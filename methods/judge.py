@@ -127,7 +127,7 @@ def value_step(name: str, exact: float, unit: str, drawing: float | None = None,
     tolerance, the values a left-out term would give, and the book's rule its hint adds
     (``rule_of``)."""
     return Step(name, name, symbol or name, "scalar", unit, float(exact),
-                tolerance(exact, drawing), missing=missing, rule=rule)
+                tolerance(exact, drawing), missing=missing, rule=rule, computed=drawing is None)
 
 
 def left_out_sizes(step: Step) -> tuple[Term, ...]:

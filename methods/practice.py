@@ -25,6 +25,7 @@ import cmath
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from decimal import ROUND_FLOOR, Decimal
 
 from mechanisms.messages import Text
 
@@ -83,6 +84,7 @@ class Step:
     terms: tuple[Term, ...] = ()
     missing: tuple[Term, ...] = ()
     rule: str = "sum"
+    computed: bool = False  # its tolerance is a computed value's rounding, not a drawing's
 
     def json(self) -> dict:
         return {"id": self.id, "asks": self.asks, "kind": self.kind, "unit": self.unit,
@@ -275,6 +277,17 @@ def ratio_digits(ratio: float) -> int:
     return 3 if abs(ratio - 1) >= 0.01 else 4
 
 
+def printed_tolerance(tolerance: float, digits: int = 3) -> float:
+    """A tolerance as every surface prints it: rounded *down* to ``digits`` significant
+    digits, so that a value the judge finds outside never reads as inside the printed
+    bound (0,2051 printed "± 0,21" beside "not right" for a value 0,2053 off)."""
+    if not (math.isfinite(tolerance) and tolerance > 0):
+        return tolerance
+    shortest = Decimal(repr(float(tolerance)))  # (0.205, not the binary 0.20499999…)
+    place = shortest.adjusted() - (digits - 1)
+    return float(shortest.scaleb(-place).to_integral_value(ROUND_FLOOR).scaleb(place))
+
+
 def hint_keys(step: Step, verdict: Verdict) -> list[str]:
     """The strings that say a verdict: its diagnosis — of a value and its sign for a scalar
     step, of an arrow otherwise; a unit slip as one — and for a step drawn the wrong way or
@@ -282,6 +295,8 @@ def hint_keys(step: Step, verdict: Verdict) -> list[str]:
     with no rule)."""
     if verdict.unit:
         keys = ["practice.value_unit" if step.kind == "scalar" else "practice.hint_unit"]
+    elif verdict.diagnosis == "ok" and step.computed:
+        keys = ["practice.hint_ok_computed"]  # (not "what a drawing allows": none was drawn)
     else:
         keys = [(VALUE_HINTS if step.kind == "scalar" else HINTS)[verdict.diagnosis]]
     if verdict.diagnosis in ("sense", "direction", "length", "wrong") and step.rule:

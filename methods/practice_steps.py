@@ -119,7 +119,7 @@ def _rates(plans_: Plans, scales: dict[str, float]) -> list[Step]:
             tol = tolerance(value, error.get(symbol))  # (the one rule: methods.judge)
             out.append(Step(f"{name}.{member}", f"{symbol} of member {member}, signed "
                             f"({unit}, counter-clockwise positive)", symbol, "scalar", unit,
-                            value, tol, 1.0, "", rule="rate"))
+                            value, tol, 1.0, "", rule="rate", computed=symbol not in error))
     return out
 
 
@@ -137,7 +137,7 @@ def forces(k: Kinetostatics, index: int, scale_f: float) -> list[Step]:
             out.append(Step(f"forces.{n}.{name}", f"{name} from the {st.kind} equation of "
                             f"members {st.members} ({unit})", latex_name(name), "scalar", unit,
                             value, tol,
-                            scale_f if unit == "N" else 1.0, f"F{n}", missing=missing,
+                            scale_f if unit == "N" else 1.0, f"F{n}", missing=missing, computed=True,
                             rule="balancing" if name == "M_p" else "moment"))  # (as judge.rule_of)
     return out
 
@@ -180,18 +180,18 @@ def lever(k: Kinetostatics, index: int) -> list[Step]:
         out.append(Step(f"lever.{i}.{m.name}", f"the moment of {m.name} about the pole of the "
                         "turned plan, counter-clockwise positive (N·m/s)", f"{m.name}\\cdot h",
                         "scalar", "N·m/s", m.value, tolerance(m.value),
-                        rule="moment"))
+                        rule="moment", computed=True))
     arm = construction.balancing_arm
     missing, torque_missing = balancing_missing(k, index)
     terms = tuple(Term(m.name, -m.value / arm) for m in construction.moments)
     out.append(Step("lever.F_p", "the balancing force F_p at the crank pin's image (N)", "F_p",
                     "scalar", "N", construction.balancing, tolerance(construction.balancing), 1.0,
-                    "", 0j, terms, missing, "balancing"))
+                    "", 0j, terms, missing, "balancing", computed=True))
     if construction.torque is not None:
         out.append(Step("lever.M_p", f"the driving torque M_p = F_p·{construction.crank} (N·m)",
                         "M_p", "scalar", "N·m", construction.torque,
                         tolerance(construction.torque), 1.0, "", 0j, (), torque_missing,
-                        "balancing"))
+                        "balancing", computed=True))
     return out
 
 
@@ -227,7 +227,7 @@ def willis(solution: TrainSolution) -> list[Step]:
     """Each member's ω in the book's order (the inputs are given, not asked), signed."""
     return [Step(f"willis.{s.member}", f"ω{s.member}, signed (s⁻¹, counter-clockwise positive)",
                  f"\\omega_{{{s.member}}}", "scalar", "s⁻¹", s.omega,
-                 tolerance(s.omega), rule="stage")
+                 tolerance(s.omega), rule="stage", computed=True)
             for s in speed_steps(solution) if s.kind != "input"]
 
 

@@ -85,7 +85,8 @@ def balance(rotor: Rotor) -> Balance:
         span = x1 - x2
         scale = max(abs(m.x - x2) for m in rotor.masses) or 1.0
         if abs(span) <= 1e-9 * scale:
-            raise BalanceError(Text("balance.same_plane", x=float(x1)))
+            # in mm, as the page's plane fields (the file's metres read as 0,12 m); + 0.0: no "−0"
+            raise BalanceError(Text("balance.same_plane", x=float(f"{x1 * 1e3:.6g}") + 0.0))
         if abs(span) < 1e-3 * scale:
             notes.append(Text("balance.close_planes", span=float(f"{abs(span):.3g}")))
         moment = sum(u * (m.x - x2) for u, m in zip(us, rotor.masses))

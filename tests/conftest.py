@@ -22,6 +22,7 @@ import asyncio
 import importlib
 import os
 import pkgutil
+import shutil
 from concurrent.futures import ThreadPoolExecutor
 
 import pytest
@@ -31,6 +32,8 @@ from streamlit import config as streamlit_config
 
 import ui
 from deploy.client import free_port, start_server, wait_ready
+
+from .databases import PG_BIN, Postgres
 
 os.environ.setdefault("MEHANIZMI_ERRORS", "raise")
 os.environ.setdefault("STREAMLIT_CLIENT_SHOW_ERROR_DETAILS", "full")
@@ -68,6 +71,28 @@ def run_async(coroutine):
     running in the test's thread, where ``asyncio.run`` refuses to start."""
     with ThreadPoolExecutor(1) as pool:
         return pool.submit(asyncio.run, coroutine).result()
+
+
+@pytest.fixture(scope="session")
+def postgres():
+    """One PostgreSQL for a worker's whole run (the store's tests, LTI's, the faults'):
+    initdb and a start are ~2 s, paid once, not once per module."""
+    if PG_BIN is None:
+        if os.environ.get("CI"):
+            raise RuntimeError("PostgreSQL is missing in CI: scripts/test.sh must install it")
+        pytest.skip("Debian's postgresql is not installed (scripts/test.sh installs it)")
+    server = Postgres()
+    yield server
+    server.stop()
+    shutil.rmtree(server.dir, ignore_errors=True)
+
+
+@pytest.fixture(params=["sqlite", "postgresql"])
+def url(request, tmp_path):
+    """A class store on SQLite and on PostgreSQL: each store test runs on both."""
+    if request.param == "sqlite":
+        return f"sqlite:///{tmp_path / 'classes.db'}"
+    return request.getfixturevalue("postgres").url
 
 
 @pytest.fixture(scope="session")

@@ -9,10 +9,8 @@ import io
 import json
 import multiprocessing
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 import time
 from datetime import UTC, datetime, timedelta
 from pathlib import Path
@@ -21,57 +19,10 @@ import pytest
 import sqlalchemy as sa
 
 from classes import store, summary
-from deploy.client import free_port
+
 from .test_cli import run
 
 ROOT = Path(__file__).resolve().parents[1]
-PG_BIN = next(iter(sorted(Path("/usr/lib/postgresql").glob("*/bin"))), None) \
-    if Path("/usr/lib/postgresql").exists() else None
-
-
-class Postgres:
-    """A PostgreSQL server of our own in a temporary folder, on a free port."""
-
-    def __init__(self):
-        self.dir = Path(tempfile.mkdtemp(prefix="mz-pg-"))
-        self.port = free_port()
-        self.as_user = [] if os.getuid() != 0 else ["runuser", "-u", "postgres", "--"]
-        if self.as_user:
-            shutil.chown(self.dir, "postgres")
-        self.run("initdb", "-D", str(self.dir / "data"), "-A", "trust", "-U", "postgres")
-        self.start()
-        self.url = f"postgresql+psycopg://postgres@127.0.0.1:{self.port}/postgres"
-
-    def run(self, tool: str, *args: str) -> None:
-        subprocess.run([*self.as_user, str(PG_BIN / tool), *args], check=True,
-                       capture_output=True)
-
-    def start(self) -> None:
-        self.run("pg_ctl", "-D", str(self.dir / "data"), "-o",
-                 f"-p {self.port} -k {self.dir} -c listen_addresses=127.0.0.1", "-w", "start",
-                 "-l", str(self.dir / "log"))
-
-    def stop(self) -> None:
-        self.run("pg_ctl", "-D", str(self.dir / "data"), "-m", "fast", "-w", "stop")
-
-
-@pytest.fixture(scope="session")
-def postgres():
-    if PG_BIN is None:
-        if os.environ.get("CI"):
-            raise RuntimeError("PostgreSQL is missing in CI: scripts/test.sh must install it")
-        pytest.skip("Debian's postgresql is not installed (scripts/test.sh installs it)")
-    server = Postgres()
-    yield server
-    server.stop()
-    shutil.rmtree(server.dir, ignore_errors=True)
-
-
-@pytest.fixture(params=["sqlite", "postgresql"])
-def url(request, tmp_path):
-    if request.param == "sqlite":
-        return f"sqlite:///{tmp_path / 'classes.db'}"
-    return request.getfixturevalue("postgres").url
 
 
 def test_a_class_is_joined_and_every_check_comes_back_from_the_store(url):

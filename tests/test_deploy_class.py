@@ -28,7 +28,7 @@ from classes import store
 from deploy.classload import app_pid, class_load, healthy, start_deploy
 
 from .test_browser import CHROMIUM, FLAGS, check_first_step, wait_idle
-from .test_classes import PG_BIN
+from .databases import PG_BIN
 
 ROOT = Path(__file__).resolve().parents[1]
 pytestmark = pytest.mark.browser

@@ -18,7 +18,7 @@ from classes import store
 from deploy.client import free_port, start_server
 
 from .test_browser import check_first_step, keep, wait_idle
-from .test_classes import PG_BIN, Postgres
+from .databases import PG_BIN, Postgres
 
 pytestmark = pytest.mark.browser
 EXCEPTION = "[data-testid='stException'], .st-key-unexpected"

@@ -21,7 +21,7 @@ from figures.plans import plain
 from mechanisms import load_preset, preset_ids
 from mechanisms.messages import KEEP
 from methods.judge import COMPUTED, judge, named_key, tolerance
-from methods.practice import hint_texts
+from methods.practice import hint_texts, printed_tolerance
 from methods.practice_steps import KINDS, steps_for
 from ui import i18n
 from ui.practice import hint as page_hint
@@ -82,6 +82,10 @@ def test_the_box_check_and_practice_judge_every_value_alike(pid, language, capsy
             assert (printed["diagnosis"], printed["hint"]) == (ours.diagnosis, said(step, ours, "en"))
             assert printed["tolerance"] == pytest.approx(step.tolerance)
             assert cli_hint(step, ours, "sr") == said(step, ours, "sr")
+        shown = printed_tolerance(step.tolerance)  # what the box, check and sheets print
+        assert 0.99 * step.tolerance <= shown <= step.tolerance, (pid, step.id)
+        inside = float(step.expected) + shown * (1 - 1e-9)  # (the bound itself: a float's last bit)
+        assert judge(step, inside).ok  # inside what is printed: right
     for step in asking:
         named_step = judged[named_key(step.id)][1]
         for typed in typed_values(float(step.expected), step.tolerance, step.unit):
@@ -168,3 +172,32 @@ def test_check_refuses_in_words(capsys):
     assert main(["check", "zbirka-3.1", "points.E.a", "1,5", "--language", "sr", "--json"]) == 0
     assert set(json.loads(capsys.readouterr().out)) == {"name", "exact", "unit", "tolerance",
                                                         "diagnosis", "hint"}
+
+
+@pytest.mark.parametrize("lang,page_file,scene,key,typed,shown", [
+    ("sr", "pages/planetary_gears.py", "zbirka-6.1", "members.12.omega", "41,2235", "± 0,205"),
+    ("en", "pages/rotor_balancing.py", "zbirka-7.1", "corrections.II.angle_deg", "158.6", "± 1.25")])
+def test_the_tolerance_the_box_prints_is_the_one_it_judges(lang, page_file, scene, key, typed, shown):
+    """Issue 85: ω₁₂ of 6.1 typed 0,2053 off (0,2051 allowed) read "within ± 0,21 counts as
+    right" beside "not right"; φ_II of 7.1 1,27 off (1,256 allowed) "± 1,3 °". The bound is
+    now printed rounded down: a value judged outside never reads as inside."""
+    from .test_pages import page
+
+    at = page(page_file, lang=lang, scene=scene, self_open=True)
+    box = at.selectbox(key="self_quantity")
+    quantity = next(q for q in named(load_preset(scene), load_preset(scene)) if q.step.id == key)
+    at = box.select_index(box.options.index(quantity.label)).run()
+    at = at.text_input(key="self_value").input(typed).run()
+    text = " ".join(w.value for w in (*at.warning, *at.success))
+    assert shown in text and not at.success, text  # judged not right, and printed so
+
+
+def test_a_computed_value_right_says_its_own_rule():
+    """A computed value's "right" named a drawing's scales beside "(a computed value's
+    rounding, 0.5 %)": each rule its own sentence."""
+    step = next(s for a, s in table(load_preset("zbirka-5.1")) if a.tolerance is None)
+    drawn = next(s for a, s in table(load_preset("zbirka-3.1")) if a.tolerance is not None)
+    assert "drawing" not in said(step, judge(step, float(step.expected)), "en")
+    assert "computed" in said(step, judge(step, float(step.expected)), "en")
+    assert "drawing" in said(drawn, judge(drawn, float(drawn.expected)), "en")
+

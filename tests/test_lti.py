@@ -32,7 +32,6 @@ from lti.routes import ROUTES
 from mechanisms import SceneError, load_preset, preset_ids
 from methods.practice_steps import steps_for
 
-from .test_classes import postgres, url  # noqa: F401  (fixtures: both databases)
 
 LEARNER = "http://purl.imsglobal.org/vocab/lis/v2/membership#Learner"
 INSTRUCTOR = "http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor"

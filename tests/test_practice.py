@@ -161,9 +161,9 @@ def test_a_bad_answers_file_gets_a_message_and_code_2(tmp_path, capsys):
         path.write_text(text)
         assert main(["practice", "zbirka-3.1", "--method", "plans", "--answers", str(path)]) == 2
         assert says in capsys.readouterr().err
-    assert main(["practice", "zbirka-3.1", "--method", "plans", "--answers",
-                 str(tmp_path / "none.json")]) == 2
-    assert "cannot read" in capsys.readouterr().err
+    with pytest.raises(SystemExit) as stopped:  # (the command line's own check of a file)
+        main(["practice", "zbirka-3.1", "--method", "plans", "--answers", str(tmp_path / "none.json")])
+    assert stopped.value.code == 2 and "none.json' does not exist" in capsys.readouterr().err
 
 
 def test_a_missing_term_candidate_is_the_sum_without_it():

@@ -10,7 +10,6 @@ while typing leaves both alone. The document the tables show now is saved every 
 from __future__ import annotations
 
 import dataclasses
-import re
 from collections.abc import Mapping
 
 import numpy as np
@@ -20,6 +19,7 @@ from mechanisms import Scene, SceneError
 from mechanisms.link import PARAMETER, decode, encode
 from mechanisms.loader import build_scene
 from mechanisms.messages import Text, text_of
+from mechanisms.reader import key_parts
 from mechanisms.sketch import add_point, drag, drawn, from_scene, snap, tables, template
 from solvers.assembly import closures
 from solvers.diagnostics import Unsolvable, dead_zones, solve_instant, sweep_values
@@ -102,8 +102,7 @@ FIELD_COLUMNS = {"points": "first", "centre": "centre_along", "members": "p", "g
                  "label": "label", "point": "point", "through": "through", "angle": "angle",
                  "slider_angle": "slider_angle", "type": "type", "magnitude": "magnitude",
                  "member": "member", "value": "value", "follows_member": "follows_member"}
-KEY = re.compile(r"^(?P<table>frame|members|pairs|forces|moments)"
-                 r"(?:\.(?P<name>[^.\[\]]+)|\[(?P<index>\d+)\])?(?P<rest>(?:\.[^.]+)*)$")
+TABLES = ("frame", "members", "pairs", "forces", "moments")  # the builder's tabs, by the loader's keys
 
 
 def in_tables(said: BaseException | Text | str, doc: Mapping) -> Text | str:
@@ -116,16 +115,16 @@ def in_tables(said: BaseException | Text | str, doc: Mapping) -> Text | str:
     key = str(said.values.get("key", ""))
     if key == "driver" or key.startswith("driver."):  # (the driver's own fields, above the tables)
         return Text("build.at", where=Text("build.driver_type"), rule=said.values["rule"])
-    found = KEY.match(key)
-    if found is None:
+    parts = key_parts(key)  # ("members", "2", "mass"), ("pairs", 0, "members")
+    if not parts or parts[0] not in TABLES:
         return said
-    table, name, index, rest = found["table"], found["name"], found["index"], found["rest"]
-    fields = [f for f in rest.split(".") if f]
+    table, which = parts[0], parts[1] if len(parts) > 1 else None
+    fields = [f for f in parts[2:] if isinstance(f, str)]
     if table == "members" and fields[:1] == ["extra"] and len(fields) > 1:  # a member's point
-        table, row = "extra", _row_of(doc, "extra", (name, fields[1]))
+        table, row = "extra", _row_of(doc, "extra", (which, fields[1]))
         fields = fields[2:]
     else:
-        row = int(index) + 1 if index is not None else _row_of(doc, table, name)
+        row = which + 1 if isinstance(which, int) else _row_of(doc, table, which)
     column = next((FIELD_COLUMNS[f] for f in fields if f in FIELD_COLUMNS), None)
     rule = said.values["rule"]
     if isinstance(rule, Text) and rule.key in ("scene.frame_table", "scene.frame_missing"):

@@ -17,7 +17,6 @@ builder, where these take 0.4–0.5 ms (measured on the four-bar template's memb
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 
 import numpy as np
@@ -26,6 +25,7 @@ import streamlit as st
 
 from mechanisms import SceneError
 from mechanisms.messages import Text, text_of
+from mechanisms.reader import key_parts
 from mechanisms.sketch import COLUMNS
 from ui.i18n import current, message, t
 from ui.numbers import Refused, check, literal, refusal, shown
@@ -232,9 +232,6 @@ def _at_cell(name: str, cell: tuple[int, str, Text | str], headed: Mapping[str, 
     return f"{name} · {t('table.row', row=row + 1)} · {headed.get(column, column)}: {message(rule)}"
 
 
-CELL = re.compile(r"^\w+\[(?P<row>\d+)\](?:\.(?P<field>\w+))?(?:(?:\[|\.)(?P<index>\d+)\]?)?")
-
-
 def _loader_cell(loader: Callable[[pd.DataFrame], None], table: pd.DataFrame,
                  fields: Mapping[str, str]) -> tuple[int, str, Text | str] | None:
     """Where the loader refuses the scene ``table`` makes: (row, column, why), or None."""
@@ -244,12 +241,17 @@ def _loader_cell(loader: Callable[[pd.DataFrame], None], table: pd.DataFrame,
         said = text_of(exc)
         if not isinstance(said, Text) or said.key != "scene.at":
             return 0, "", said
-        found = CELL.match(str(said.values.get("key", "")))
-        if found is None:
+        parts = key_parts(str(said.values.get("key", "")))  # ("masses", 1, "radii", 0)
+        if len(parts) < 2 or not isinstance(parts[1], int):
             return 0, "", said.values["rule"]
-        field = found["field"] or ""
-        column = fields.get(f"{field}[{found['index']}]") or fields.get(field, field)
-        return int(found["row"]), column, said.values["rule"]
+        field = next((p for p in parts[2:] if isinstance(p, str)), "")
+        index = next((p for p in parts[3:] if isinstance(p, int)), None)
+        column = fields.get(f"{field}[{index}]") or fields.get(field, field)
+        rule = said.values["rule"]
+        if isinstance(rule, Text) and "value" in rule.values and column in table.columns \
+                and parts[1] < len(table):  # what was typed, in the column's unit (mm, not m)
+            rule = Text(rule.key, **{**rule.values, "value": float(table.iloc[parts[1]][column])})
+        return parts[1], column, rule
     return None
 
 

@@ -17,7 +17,7 @@ from figures.plans import plain
 from figures.practice import practice_figure
 from figures.raw import RawFigure
 from figures.style import Look
-from methods.practice import RULES, Step, Verdict, hint_texts, polar
+from methods.practice import RULES, Step, Verdict, hint_texts, polar, printed_tolerance
 from methods.progress import Progress, verdict_of
 from ui import classroom
 from ui.export import chart
@@ -359,7 +359,7 @@ def answers_table(steps: list[Step], progress: Progress) -> pd.DataFrame:
 
     rows = [{
         "step": s.id, "symbol": plain(s.symbol), "unit": s.unit, "exact": value(s.expected),
-        "tolerance": f"{s.tolerance:.3g}",
+        "tolerance": num(printed_tolerance(s.tolerance), 3),
         "answers": " | ".join(value(a.answer) for a in progress.record(s).graded),
         "diagnoses": " | ".join(t(DIAGNOSES[a.diagnosis]) for a in progress.record(s).graded),
         "outcome": t(OUTCOMES[progress.outcome(s)])} for s in steps]

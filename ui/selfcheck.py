@@ -15,7 +15,7 @@ import streamlit as st
 from exams.judged import table
 from exams.variants import symbol
 from methods.judge import judge, value_step
-from methods.practice import Step, Verdict
+from methods.practice import Step, Verdict, printed_tolerance
 from solvers.diagnostics import Unsolvable
 from solvers.structure import StructureError
 from ui.cache import BY_REPR
@@ -90,7 +90,7 @@ def answer_box(quantities: list[Quantity] | Callable[[], list[Quantity]], key: s
         if value is None:
             return
         said, step = verdict(value, quantity)
-        allowed = f"± {num(step.tolerance, 2)} {unit}".rstrip()
+        allowed = f"± {num(printed_tolerance(step.tolerance), 3)} {unit}".rstrip()
         exact = t("self.exact", exact=f"{num(float(step.expected), 5)} {unit}".rstrip(),
                   allowed=allowed,
                   why=t("self.why_drawing" if quantity.drawing else "self.why_computed"))
