@@ -18,16 +18,29 @@ import re
 import sys
 from logging.handlers import RotatingFileHandler
 
+def _digit(d: str) -> str:
+    """A hex digit of a percent-encoding, itself written plainly or percent-encoded (a
+    doubly encoded "=" is ``%253D``, or ``%25%33%44`` with its digits encoded too)."""
+    codes = sorted({f"{ord(v):02x}" for v in (d.lower(), d.upper())})
+    return f"(?:{re.escape(d)}|%(?:25)*(?:{'|'.join(codes)}))"
+
+
+def _char(c: str) -> str:
+    """A pattern for one character written plainly, in either case, or percent-encoded —
+    in either case's code, once or more (``k``, ``K``, ``%6B``, ``%4b``, ``%256B`` …)."""
+    codes = sorted({f"{ord(v):02x}" for v in (c.lower(), c.upper())})
+    encoded = "|".join("".join(_digit(h) for h in code) for code in codes)
+    return f"(?:{re.escape(c)}|%(?:25)*(?:{encoded}))"
+
+
 def _encoded(text: str) -> str:
-    """A pattern for ``text`` written plainly or with any letter percent-encoded, once or
-    more (``k``, ``%6B``, ``%256B`` …)."""
-    return "".join(f"(?:{re.escape(c)}|%(?:25)*{ord(c):02x})" for c in text)
+    return "".join(_char(c) for c in text)
 
 
-# a secret's name (however encoded, and as the tail of a longer one: id_token), its "=" and
-# its value, up to the next separator, plain or encoded
+# a secret's name (however encoded, either case, and as the tail of a longer one:
+# id_token), its "=" (however encoded) and its value, up to the next separator
 SECRET = re.compile(
-    rf"(?i)((?:{'|'.join(_encoded(n) for n in ('key', 'student', 'token'))})(?:=|%(?:25)*3d))"
+    rf"(?i)((?:{'|'.join(_encoded(n) for n in ('key', 'student', 'token'))}){_char('=')})"
     r"(?:(?!%(?:25)*26)[^&\s\"',;])+")
 CLIENT = re.compile(r"\bclient: [^,\s]+")  # nginx's error log names the client's address
 

@@ -80,6 +80,13 @@ def sign(claims: dict, lifetime: int = 300) -> str:
     return jwt.encode(body, private_key(), algorithm=ALGORITHM, headers={"kid": kid()})
 
 
+def verify(token: str) -> dict:
+    """The claims of a JWT this tool signed (``sign``), unexpired; ``jwt.PyJWTError`` if
+    not (another key, tampered, expired, not a JWT)."""
+    return jwt.decode(token, private_key().public_key(), algorithms=[ALGORITHM],
+                      options={"require": ["exp", "iat", "jti"]})
+
+
 def lecturer_key(link: str) -> str:
     """The lecturer key of the class a resource link made: the same for every launch."""
     secret = private_key().private_numbers().d.to_bytes(256, "big")

@@ -16,7 +16,7 @@ import jwt
 from mechanisms.messages import Text
 
 from . import store
-from .store import LtiError, Platform
+from .store import LtiError, Platform, web_address
 
 CLAIM = "https://purl.imsglobal.org/spec/lti/claim/"
 DEEP = "https://purl.imsglobal.org/spec/lti-dl/claim/"
@@ -28,6 +28,8 @@ INSTRUCTOR = ("http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor",
               "http://purl.imsglobal.org/vocab/lis/v2/membership#Administrator",
               "http://purl.imsglobal.org/vocab/lis/v2/institution/person#Administrator")
 LEEWAY = 60  # s of clock difference allowed between the platform and the tool
+MOST = 255  # characters of an identifier (LTI: a context's and a resource link's id; OIDC: sub)
+LONG = 2048  # characters of a login's hint or state (the tool's signed state is ~600)
 _LOG = logging.getLogger(__name__)
 
 
@@ -56,24 +58,46 @@ def _keys(jwks_url: str) -> jwt.PyJWKClient:
     return jwt.PyJWKClient(jwks_url, cache_keys=True, lifespan=3600, timeout=10)
 
 
+def identifier(value, name: str, most: int = MOST) -> str:
+    """The one rule for every identifier a platform sends (``iss``, ``client_id``, ``sub``,
+    a deployment, a context, a resource link, a login's hints and state): text, not empty,
+    at most ``most`` characters (LTI's 255 for ids), no control character — PostgreSQL
+    refuses a NUL (a launch once ended in a 500 there), a newline breaks a log line.
+    Refused in words (LtiError) before anything is stored."""
+    if not isinstance(value, str) or not value:
+        raise LtiError(Text("lti.identifier", name=name, why=Text("lti.why_empty")))
+    if len(value) > most:
+        raise LtiError(Text("lti.identifier", name=name, why=Text("lti.why_long", most=most)))
+    if any(ord(c) < 32 or ord(c) == 127 for c in value):
+        raise LtiError(Text("lti.identifier", name=name, why=Text("lti.why_control")))
+    return value
+
+
 def checked(id_token: str, state: str, url: str | None = None) -> Launch:
-    """The launch ``id_token`` carries, checked; ``state`` (the login's) is used up once
-    the token's signature verified (a tampered token leaves it to the honest one)."""
-    platform_id, nonce = store.peek_state(state, url)
-    found = store.platform_by_id(platform_id, url)
+    """The launch ``id_token`` carries, checked whole — the login's ``state`` (signed by
+    the tool), the platform's signature, every claim — and only then the state used up
+    (a tampered token, or one carrying another login's nonce, leaves it to the honest
+    launch)."""
+    said = store.read_state(identifier(state, "state", LONG))
+    found = store.platform_by_id(said.platform_id, url)
     try:
         key = _keys(found.jwks_url).get_signing_key_from_jwt(id_token)
         claims = jwt.decode(id_token, key.key, algorithms=["RS256"], audience=found.client_id,
                             issuer=found.issuer, leeway=LEEWAY,
                             options={"require": ["exp", "iat", "iss", "aud", "sub", "nonce"]})
     except jwt.PyJWKClientError as exc:
-        _LOG.warning("a launch's keys could not be read: %s", exc)
-        raise LtiError(Text("lti.token", why=Text("lti.why_keys"))) from None
+        _LOG.warning("a launch's keys could not be read from %s: %s", found.jwks_url, exc)
+        raise LtiError(Text("lti.keys")) from None
     except jwt.PyJWTError as exc:
         _LOG.warning("a launch's token was refused: %s", exc)
         raise LtiError(Text("lti.token", why=Text("lti.why_signature"))) from None
-    store.take_state(state, url)
-    return _launch(found, _typed(claims), nonce)
+    except (ValueError, TypeError, OSError) as exc:  # an answer that is no key set (a login page)
+        _LOG.warning("a launch's keys at %s are not a JSON key set: %s", found.jwks_url,
+                     str(exc)[:200])
+        raise LtiError(Text("lti.keys")) from None
+    launch = _launch(found, _typed(claims), said.nonce)
+    store.use_state(said, url)
+    return launch
 
 
 # the claims the tool reads, and the type each must have: a claim of another type (a
@@ -107,10 +131,11 @@ def _launch(found: Platform, claims: dict, nonce: str) -> Launch:
     """The claims of a signed, unexpired token for this tool, held to LTI's rules."""
     if claims.get("nonce") != nonce:
         raise LtiError(Text("lti.token", why=Text("lti.why_nonce")))
+    sub = identifier(claims["sub"], "sub")
     azp = claims.get("azp")
     if azp is not None and azp != found.client_id:
         raise LtiError(Text("lti.token", why=Text("lti.why_azp")))
-    deployment = str(claims.get(CLAIM + "deployment_id", ""))
+    deployment = identifier(str(claims.get(CLAIM + "deployment_id", "")), "deployment_id")
     if deployment not in found.deployments:
         raise LtiError(Text("lti.deployment", deployment=deployment or "—"))
     if claims.get(CLAIM + "version") != "1.3.0":
@@ -119,13 +144,20 @@ def _launch(found: Platform, claims: dict, nonce: str) -> Launch:
     if kind not in (RESOURCE, DEEP_LINKING):
         raise LtiError(Text("lti.token", why=Text("lti.why_message", kind=str(kind)[:40])))
     roles = claims.get(CLAIM + "roles") or []
-    context = (claims.get(CLAIM + "context") or {}).get("id", "")
-    link = (claims.get(CLAIM + "resource_link") or {}).get("id", "")
+    context = (claims.get(CLAIM + "context") or {}).get("id")
+    context = "" if context is None else identifier(context, "context.id")
+    link = (claims.get(CLAIM + "resource_link") or {}).get("id")
     if kind == RESOURCE and not link:
         raise LtiError(Text("lti.token", why=Text("lti.why_link")))
+    link = "" if link is None else identifier(link, "resource_link.id")
     deep = claims.get(DEEP + "deep_linking_settings") or {}
+    if deep.get("deep_link_return_url") is not None:
+        web_address(deep["deep_link_return_url"], "deep_link_return_url")
     ags = claims.get(AGS) or {}
-    return Launch(found, deployment, kind, str(claims["sub"]),
+    for name in ("lineitem", "lineitems"):
+        if ags.get(name) is not None:
+            web_address(ags[name], name)
+    return Launch(found, deployment, kind, sub,
                   any(role in INSTRUCTOR for role in roles), str(context), str(link),
                   {k: str(v) for k, v in (claims.get(CLAIM + "custom") or {}).items()},
                   ags.get("lineitem"),

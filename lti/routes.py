@@ -37,7 +37,7 @@ from mechanisms.messages import KEEP, Text, strings
 from methods.practice_steps import steps_for
 
 from . import keys, store
-from .launch import CLAIM, DEEP, DEEP_LINKING, Launch, checked
+from .launch import CLAIM, DEEP, DEEP_LINKING, LONG, MOST, Launch, checked, identifier
 from .store import LtiError
 
 MAX_BODY = 256 * 1024  # bytes a platform's form may have (a launch's id_token is a few kB)
@@ -52,18 +52,28 @@ PICKER_STYLE = ("body{font-family:'Source Sans Pro',system-ui,sans-serif;max-wid
 
 
 def base_url(request: Request) -> str:
-    """The tool's address as users reach it (``MEHANIZMI_BASE_URL`` behind a proxy)."""
-    return os.environ.get("MEHANIZMI_BASE_URL", str(request.base_url)).rstrip("/")
+    """The tool's address as users reach it: ``MEHANIZMI_BASE_URL`` where it is set, else
+    the address the proxy says the user reached (``X-Forwarded-Proto``/``-Host``, port
+    included: deploy/nginx.conf.in sends ``$http_host``), else the request's own."""
+    if os.environ.get("MEHANIZMI_BASE_URL"):
+        return os.environ["MEHANIZMI_BASE_URL"].rstrip("/")
+    host = request.headers.get("x-forwarded-host", "").split(",")[0].strip()
+    proto = request.headers.get("x-forwarded-proto", "").split(",")[0].strip()
+    if host and proto in ("http", "https") and not any(c in host for c in "/\\@ "):
+        return f"{proto}://{host}"
+    return str(request.base_url).rstrip("/")
 
 
-def refused(said: Text | str, status: int = 400) -> HTMLResponse:
-    """A refusal in words, in Serbian and in English."""
+def refused(said: Text | str, status: int = 400, language: str | None = None) -> HTMLResponse:
+    """A refusal in words: in the user's language once a launch said it, else in Serbian and
+    in English (no language is known before a launch is checked)."""
     def said_in(language: str) -> str:
         if isinstance(said, str):
             return said
         return said.render(lambda key: KEEP.sub(r"\1", strings(language)[key]),
                            comma=language == "sr")
-    body = "".join(f"<p>{html.escape(said_in(language))}</p>" for language in ("sr", "en"))
+    languages = (language,) if language in ("sr", "en") else ("sr", "en")
+    body = "".join(f"<p>{html.escape(said_in(language))}</p>" for language in languages)
     return HTMLResponse(f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>Mehanizmi</title>"
                         f"</head><body>{body}</body></html>", status_code=status)
 
@@ -123,6 +133,10 @@ async def login(request: Request) -> Response:
     if not issuer or not hint:
         return refused(Text("lti.login_missing"))
     try:
+        for name, most in (("iss", MOST), ("client_id", MOST), ("login_hint", LONG),
+                           ("lti_message_hint", LONG)):
+            if name in given:
+                identifier(given[name], name, most)
         found = store.platform(issuer, given.get("client_id"))
         state, nonce = store.new_state(found)
     except LtiError as exc:
@@ -146,13 +160,20 @@ async def launch(request: Request) -> Response:
         return refused(Text("lti.launch_missing"))
     try:
         said = checked(id_token, state)
-        if said.kind == DEEP_LINKING:
-            return picker(request, said)
-        return go(request, said)
     except LtiError as exc:
-        return refused(exc.args[0], 401 if exc.args[0].key in ("lti.token", "lti.state") else 400)
+        return refused(exc.args[0], STATUS.get(exc.args[0].key, 400))
     except StoreDown as exc:
         return refused(exc.args[0], 503)
+    try:  # (a checked launch: its refusals in the user's language alone)
+        return picker(request, said) if said.kind == DEEP_LINKING else go(request, said)
+    except LtiError as exc:
+        return refused(exc.args[0], STATUS.get(exc.args[0].key, 400), said.locale)
+    except StoreDown as exc:
+        return refused(exc.args[0], 503, said.locale)
+
+
+# a launch's refusals that are not the platform's or the user's request being wrong
+STATUS = {"lti.token": 401, "lti.state": 401, "lti.keys": 502}
 
 
 def go(request: Request, said: Launch) -> Response:
@@ -180,12 +201,17 @@ def practised(task: str, method: str) -> tuple[object, list]:
     if method not in METHODS:
         raise LtiError(Text("lti.no_method", method=method or "—", methods=", ".join(METHODS)))
     if task not in preset_ids():
-        raise LtiError(Text("lti.no_task", task=task or "—", why=Text("lti.why_no_preset")))
+        raise LtiError(Text("lti.no_task", task=shortened(task) or "—", why=Text("lti.why_no_preset")))
     scene = load_preset(task)
     steps = _steps(scene, method)
     if not steps:
         raise LtiError(Text("lti.no_task", task=task, why=Text("lti.why_no_steps")))
     return scene, steps
+
+
+def shortened(text: str, most: int = 60) -> str:
+    """What a platform or a user sent, as a refusal quotes it: cut to ``most`` characters."""
+    return text if len(text) <= most else text[:most] + "…"
 
 
 def _steps(scene, method: str) -> list:
@@ -272,9 +298,9 @@ async def deeplink(request: Request) -> Response:
     try:
         scene, steps = practised(task, method)
     except LtiError:  # (the picker offers only pairs that work: a changed form)
-        return refused(Text("lti.deep_pair", task=task[:60] or "—",
-                            method=method_name(method, serbian) if method in METHODS else method[:20] or "—"))
-    serbian = context.get("locale") == "sr"
+        return refused(Text("lti.deep_pair", task=shortened(task) or "—",
+                            method=Text(f"class.method_{method}") if method in METHODS
+                            else shortened(method, 20) or "—"), language="sr" if serbian else "en")
     name = activity_name(scene, method, serbian)
     claims = {"iss": found.client_id, "aud": found.issuer, "azp": found.client_id,
               "nonce": secrets.token_urlsafe(16),
@@ -307,6 +333,19 @@ async def posted_only(request: Request) -> Response:
     return refused(Text("lti.method"), 405)
 
 
+class Unknown:
+    """Any other address under /lti/, or a method no route of its address takes (OPTIONS,
+    an unknown verb): said in words, 404 or 405 — not the app's page (a GET once answered
+    200 with it), not the server's plain text. An ASGI app rather than a function, so that
+    its route takes every method (a function's route takes only those it names)."""
+
+    async def __call__(self, scope, receive, send) -> None:
+        known = {route.path for route in ROUTES if route.path != "/lti/{rest:path}"}
+        answer = (refused(Text("lti.not_this_method", method=scope["method"][:12]), 405)
+                  if scope["path"] in known else refused(Text("lti.unknown"), 404))
+        await answer(scope, receive, send)
+
+
 ROUTES = [Route("/lti/jwks", jwks, methods=["GET"]),
           Route("/lti/login", answered(login), methods=["GET", "POST"]),
           Route("/lti/login", posted_only, methods=["PUT", "DELETE", "PATCH"]),
@@ -314,4 +353,5 @@ ROUTES = [Route("/lti/jwks", jwks, methods=["GET"]),
           Route("/lti/launch", answered(launch), methods=["POST"]),
           Route("/lti/launch", posted_only, methods=["GET", "HEAD", "PUT", "DELETE", "PATCH"]),
           Route("/lti/deeplink", answered(deeplink), methods=["POST"]),
-          Route("/lti/deeplink", posted_only, methods=["GET", "HEAD", "PUT", "DELETE", "PATCH"])]
+          Route("/lti/deeplink", posted_only, methods=["GET", "HEAD", "PUT", "DELETE", "PATCH"]),
+          Route("/lti/{rest:path}", Unknown())]

@@ -1,26 +1,28 @@
 """What the tool keeps (migration 0004, in the class store): the platforms registered and
-their deployments, the one-use states of logins under way, the resource links — each a
-class — and their learners, a platform's pseudonymous ``sub`` each, with what was last sent
-to the platform's gradebook. No name or e-mail: a launch's other claims are not stored.
+their deployments, the login states of the launches that passed (a replay's guard; a login
+itself stores nothing), the resource links — each a class — and their learners, a
+platform's pseudonymous ``sub`` each, with what was last sent to the platform's gradebook.
+No name or e-mail: a launch's other claims are not stored.
 """
 
 from __future__ import annotations
 
 import secrets
+import urllib.parse
 from dataclasses import dataclass
 from datetime import UTC, datetime, timedelta
 
+import jwt
 import sqlalchemy as sa
 
 from classes import store
-from classes.store import ClassError, aware, engine
+from classes.store import ClassError, engine
 from mechanisms.messages import Text
 
 from . import keys
 
 STATE_LIFETIME = timedelta(minutes=10)  # a login's state and nonce, until the launch uses them
-STATES_KEPT = 2000  # logins under way kept per platform: above it the oldest go (a flood of
-# logins cannot fill the store; an honest launch takes seconds, 2,000 logins after it)
+STATE_USE = "lti-login"  # what a state the tool signs is for (no other signed value passes)
 LINK_DAYS = 400  # a class a link made lives a course's year (the store's default is 30 days)
 
 meta = sa.MetaData()
@@ -71,9 +73,24 @@ class Platform:
     deployments: tuple[str, ...]
 
 
+def web_address(value, name: str) -> str:
+    """The one check of an address the tool sends a user or a request to (a platform's
+    login, token and key addresses, a deep link's return, a gradebook's line item): an
+    http(s) URL with a host and no control character. A ``javascript:`` return address
+    would otherwise become a form's action on the tool's own origin."""
+    parsed = urllib.parse.urlsplit(value) if isinstance(value, str) else None
+    if parsed is None or parsed.scheme not in ("http", "https") or not parsed.netloc \
+            or any(ord(c) < 32 or ord(c) == 127 for c in value):
+        raise LtiError(Text("lti.not_web", name=name, value=str(value)[:60]))
+    return value
+
+
 def add_platform(issuer: str, client_id: str, deployment: str, auth_url: str, token_url: str,
                  jwks_url: str, url: str | None = None) -> Platform:
-    """Register a platform (or add a deployment to one registered): once per Moodle site."""
+    """Register a platform (or add a deployment to one registered): once per Moodle site.
+    Its addresses must be web addresses (``web_address``)."""
+    for address, name in ((auth_url, "--auth-url"), (token_url, "--token-url"), (jwks_url, "--jwks-url")):
+        web_address(address, name)
     with engine(url).begin() as db:
         found = db.execute(sa.select(platforms.c.id).where(
             platforms.c.issuer == issuer, platforms.c.client_id == client_id)).scalar()
@@ -141,42 +158,52 @@ def remove_platform(issuer: str, client_id: str, url: str | None = None) -> bool
     return True
 
 
-def new_state(found: Platform, url: str | None = None) -> tuple[str, str]:
-    """A login's one-use ``state`` and ``nonce``, kept until its launch (or ten minutes, or
-    until ``STATES_KEPT`` newer logins of the platform came)."""
-    state, nonce = secrets.token_urlsafe(32), secrets.token_urlsafe(32)
-    with engine(url).begin() as db:
-        db.execute(states.delete().where(states.c.expires < datetime.now(UTC)))
-        mine = states.c.platform_id == found.id
-        kept = db.execute(sa.select(sa.func.count()).select_from(states).where(mine)).scalar()
-        if kept >= STATES_KEPT:
-            oldest = (sa.select(states.c.state).where(mine).order_by(states.c.expires)
-                      .limit(kept - STATES_KEPT + 1))
-            db.execute(states.delete().where(states.c.state.in_(oldest.scalar_subquery())))
-        db.execute(states.insert().values(state=state, nonce=nonce, platform_id=found.id,
-                                          expires=datetime.now(UTC) + STATE_LIFETIME))
+def new_state(found: Platform) -> tuple[str, str]:
+    """A login's ``state`` and ``nonce``, with nothing stored: the state is a short-lived
+    value the tool signs, carrying the platform and the nonce (a flood of strangers' logins
+    grows no table and evicts no honest login's state)."""
+    nonce = secrets.token_urlsafe(32)
+    state = keys.sign({"use": STATE_USE, "platform": found.id, "nonce": nonce},
+                      int(STATE_LIFETIME.total_seconds()))
     return state, nonce
 
 
-def peek_state(state: str, url: str | None = None) -> tuple[int, str]:
-    """The platform and nonce of a login's ``state``, left in place: a launch's signature is
-    checked against that platform's keys before the state is used up (``take_state``), so a
-    tampered token cannot use up the honest one's state."""
-    with engine(url).connect() as db:
-        row = db.execute(sa.select(states).where(states.c.state == state)).first()
-    if row is None or aware(row.expires) < datetime.now(UTC):
+@dataclass(frozen=True)
+class State:
+    """What a login's state says: the platform, the nonce, its id and end."""
+
+    platform_id: int
+    nonce: str
+    id: str
+    expires: datetime
+
+
+def read_state(state: str) -> State:
+    """A login's ``state`` read back: signed by this tool, for a login, unexpired (LtiError
+    if not). Nothing is used up here: a launch is checked whole first (``use_state``)."""
+    try:
+        claims = keys.verify(state)
+    except jwt.PyJWTError:
+        raise LtiError(Text("lti.state")) from None
+    if claims.get("use") != STATE_USE or not isinstance(claims.get("platform"), int) \
+            or not isinstance(claims.get("nonce"), str):
         raise LtiError(Text("lti.state"))
-    return row.platform_id, row.nonce
+    return State(claims["platform"], claims["nonce"], str(claims["jti"]),
+                 datetime.fromtimestamp(claims["exp"], UTC))
 
 
-def take_state(state: str, url: str | None = None) -> None:
-    """Use up a login's ``state`` (its token verified): a second launch with it (a replay)
-    is refused, as is one after ten minutes."""
+def use_state(said: State, url: str | None = None) -> None:
+    """Use up a login's state once its launch passed every check: a second launch with it
+    (a replay) is refused. The row is the only thing a launch's login leaves, kept until the
+    state would have expired anyway."""
     with engine(url).begin() as db:
-        taken = db.execute(states.delete().where(states.c.state == state,
-                                                 states.c.expires >= datetime.now(UTC))).rowcount
-    if taken != 1:
-        raise LtiError(Text("lti.state"))
+        db.execute(states.delete().where(states.c.expires < datetime.now(UTC)))
+    try:
+        with engine(url).begin() as db:
+            db.execute(states.insert().values(state=said.id, nonce="", platform_id=said.platform_id,
+                                              expires=said.expires))
+    except sa.exc.IntegrityError:
+        raise LtiError(Text("lti.state")) from None
 
 
 @dataclass(frozen=True)

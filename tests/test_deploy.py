@@ -92,6 +92,9 @@ def test_every_variable_the_deploy_scripts_read_is_documented():
     ("referrer: /velocity_plans?class=A&student%253DT5%2526lang%3Dsr", "T5"),
     ("POST id_token=T6&state=s", "T6"),
     ("x=1%26%73tudent%3dT7", "T7"),
+    ("GET /?%4B%45%59%3DK8", "K8"),  # upper-case letters encoded (issue 81)
+    ("GET /?key%25%33%44K9", "K9"),  # "=" encoded twice, its digits too
+    ("GET /?KEY=K10&x", "K10"), ("GET /?Student%3DT11", "T11"),
     ("connect() failed, client: 192.168.1.20, server: , request: \"GET / HTTP/1.1\"", "192.168.1.20"),
 ])
 def test_every_form_of_a_secret_is_redacted(line, hidden):

@@ -54,6 +54,7 @@ class Platform:
         self.claims: dict = {}  # what the next launches claim besides the defaults
         self.down = False
         self.tool_jwks: str | None = None  # the tool's public keyset URL (else its key here)
+        self.jwks_html = False  # its key address answers a login page instead (issue 81)
         platform = self
 
         class Handler(BaseHTTPRequestHandler):
@@ -79,6 +80,8 @@ class Platform:
                     asked = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(self.path).query))
                     return self._send(200, json.dumps([i for i in platform.lineitems if i.get(
                         "resourceLinkId") == asked.get("resource_link_id")]).encode())
+                if platform.jwks_html:
+                    return self._send(200, b"<html><body>Log in</body></html>", "text/html")
                 key = json.loads(RSAAlgorithm.to_jwk(platform.key.public_key()))
                 self._send(200, json.dumps({"keys": [{**key, "kid": platform.kid, "alg": "RS256"}]}).encode())
 
@@ -271,23 +274,144 @@ def test_an_oversized_or_broken_form_is_refused_in_both_languages(tool, path, se
     assert counts(db) == before
 
 
-def test_login_states_are_bounded_per_platform(tool, monkeypatch):
-    """A flood of logins keeps at most STATES_KEPT states of a platform; the newest still
-    launches, the oldest is gone (its launch refused in words)."""
+def test_a_login_stores_nothing_and_an_honest_launch_survives_2000_strangers(tool):
+    """Issue 81: ~2,000 strangers' logins once each stored a state and evicted the honest
+    ones (a class locked out). A login's state is now a short value the tool signs, and
+    only a launch that passed every check leaves a row (to refuse its replay)."""
     client, platform, db = tool
-    monkeypatch.setattr(lti, "STATES_KEPT", 5)
-    first = login(client, platform)
-    for _ in range(7):
-        asked = login(client, platform)
-    mine = lti.states.c.platform_id == lti.platform(platform.issuer, url=db).id
-    with store.engine(db).connect() as connection:  # (the store's other platforms aside)
-        assert connection.execute(sa.select(sa.func.count()).select_from(lti.states).where(mine)).scalar() == 5
-    honest = client.post("/lti/launch", data={"id_token": platform.token(asked["nonce"]),
-                                              "state": asked["state"]}, follow_redirects=False)
+    honest = login(client, platform)
+    rows = lambda: _rows(db, lti.states)  # noqa: E731
+    before = rows()
+    for k in range(2000):
+        client.get("/lti/login", params={"iss": platform.issuer, "login_hint": f"x{k}"},
+                   follow_redirects=False)
+    assert rows() == before  # no table grew
+    answer = client.post("/lti/launch", data={"id_token": platform.token(honest["nonce"]),
+                                              "state": honest["state"]}, follow_redirects=False)
+    assert answer.status_code == 303 and rows() == before + 1
+
+
+def _rows(db: str, table) -> int:
+    with store.engine(db).connect() as connection:
+        return connection.execute(sa.select(sa.func.count()).select_from(table)).scalar()
+
+
+def test_another_login_s_nonce_leaves_the_state_to_its_honest_launch(tool):
+    """A correctly signed token carrying one login's nonce, posted with a second login's
+    state, once used that state up: the honest launch then failed."""
+    client, platform, _ = tool
+    first, second = login(client, platform), login(client, platform)
+    mixed = client.post("/lti/launch", data={"id_token": platform.token(first["nonce"]),
+                                             "state": second["state"]}, follow_redirects=False)
+    assert mixed.status_code == 401
+    honest = client.post("/lti/launch", data={"id_token": platform.token(second["nonce"]),
+                                              "state": second["state"]}, follow_redirects=False)
     assert honest.status_code == 303
-    oldest = client.post("/lti/launch", data={"id_token": platform.token(first["nonce"]),
-                                              "state": first["state"]}, follow_redirects=False)
-    assert oldest.status_code == 401 and "ten minutes" in oldest.text
+
+
+NUL, LONG_ID = "a\x00b", "x" * 300
+BAD_IDS = {  # what a launch claims → the identifier it names
+    "sub with NUL": ({"sub": NUL}, "sub"), "empty sub": ({"sub": ""}, "sub"),
+    "sub of 150 kB": ({"sub": "s" * 150_000}, "sub"), "sub of 300": ({"sub": LONG_ID}, "sub"),
+    "context with NUL": ({CLAIM + "context": {"id": NUL}}, "context.id"),
+    "context of 300": ({CLAIM + "context": {"id": LONG_ID}}, "context.id"),
+    "empty context": ({CLAIM + "context": {"id": ""}}, "context.id"),
+    "resource link with NUL": ({CLAIM + "resource_link": {"id": NUL}}, "resource_link.id"),
+    "resource link of 300": ({CLAIM + "resource_link": {"id": LONG_ID}}, "resource_link.id"),
+    "deployment with NUL": ({CLAIM + "deployment_id": NUL}, "deployment_id"),
+}
+
+
+@pytest.mark.parametrize("name", list(BAD_IDS))
+def test_an_identifier_with_nul_empty_or_too_long_is_refused_in_words_storing_nothing(tool, name):
+    """Issue 81: a NUL in an identifier was a 500 on PostgreSQL (a class and a link left
+    behind for the context); an empty or a 150-kB ``sub`` was taken. One rule refuses them
+    all in words (lti.launch.identifier), on either store, before anything is stored."""
+    client, platform, db = tool
+    claims, field = BAD_IDS[name]
+    before = (counts(db), _rows(db, lti.links), _rows(db, lti.learners), _rows(db, lti.states))
+    answer = launch(client, platform, **claims)
+    assert answer.status_code == 400 and field in answer.text and "<p>" in answer.text, answer.text[:300]
+    assert (counts(db), _rows(db, lti.links), _rows(db, lti.learners), _rows(db, lti.states)) == before
+
+
+@pytest.mark.parametrize("field", ["iss", "client_id", "login_hint", "lti_message_hint"])
+@pytest.mark.parametrize("value", [NUL, "y" * 3000])
+def test_a_login_with_a_bad_identifier_is_refused_in_words(tool, field, value):
+    client, platform, _ = tool
+    given = {"iss": platform.issuer, "login_hint": "u-1", "client_id": platform.client_id,
+             field: value}
+    answer = client.get("/lti/login", params=given, follow_redirects=False)
+    assert answer.status_code == 400 and field in answer.text and answer.text.count("<p>") == 2
+
+
+def test_a_state_with_nul_or_not_the_tool_s_is_refused_in_words(tool):
+    client, platform, _ = tool
+    asked = login(client, platform)
+    for state in (NUL, "x" * 3000, asked["state"][:-6] + "AAAAAA", keys.sign({"use": "other"})):
+        answer = client.post("/lti/launch", data={"id_token": platform.token(asked["nonce"]),
+                                                  "state": state}, follow_redirects=False)
+        assert answer.status_code in (400, 401) and "<p>" in answer.text, state[:20]
+
+
+def test_a_platform_whose_key_address_answers_a_page_is_refused_in_words(tool, caplog):
+    """Issue 81: a JWKS address answering an HTML page with 200 (a login wall) was a 500
+    on every launch. Now 502, in words, and the log says why."""
+    client, platform, db = tool
+    platform.jwks_html = True
+    answer = launch(client, platform)
+    assert answer.status_code == 502 and "keys" in answer.text and answer.text.count("<p>") == 2
+    assert any("not a JSON key set" in r.getMessage() for r in caplog.records)
+
+
+def test_a_javascript_return_address_never_becomes_a_form_s_action(tool):
+    client, platform, _ = tool
+    answer = launch(client, platform, sub="teacher-1", **{
+        CLAIM + "message_type": "LtiDeepLinkingRequest", CLAIM + "roles": [INSTRUCTOR],
+        DEEP + "deep_linking_settings": {"deep_link_return_url": "javascript:alert(document.cookie)"}})
+    assert answer.status_code == 400 and "<form" not in answer.text
+    assert "deep_link_return_url" in answer.text and "javascript" not in answer.text
+
+
+@pytest.mark.parametrize("address", ["javascript:alert(1)", "file:///etc/passwd", "ftp://x/y",
+                                     "moodle.example/auth", ""])
+def test_lti_platform_add_refuses_an_address_that_is_not_http(address, tmp_path, monkeypatch):
+    from .test_cli import run
+
+    monkeypatch.setenv("MEHANIZMI_DATABASE_URL", f"sqlite:///{tmp_path / 'lti.db'}")
+    done = run("lti", "platform", "add", "--issuer", "https://m.example", "--client-id", "c",
+               "--deployment", "1", "--auth-url", "https://m.example/auth", "--token-url",
+               "https://m.example/token", "--jwks-url", address)
+    assert done.returncode == 2 and "--jwks-url" in done.stderr and "http" in done.stderr
+    assert len(done.stderr.strip().splitlines()) == 1
+
+
+def test_an_unknown_lti_address_or_method_is_said_in_words(tool):
+    client, _, _ = tool
+    for method, path, status in (("GET", "/lti/unknown", 404), ("POST", "/lti/x/y", 404),
+                                 ("OPTIONS", "/lti/launch", 405), ("PROPFIND", "/lti/login", 405),
+                                 ("FOO", "/lti/launch", 405)):
+        answer = client.request(method, path)
+        assert answer.status_code == status and answer.text.count("<p>") == 2, (method, path)
+
+
+def test_the_address_users_reached_behind_a_proxy_keeps_its_port(tool):
+    client, platform, _ = tool
+    answer = client.get("/lti/login", params={"iss": platform.issuer, "login_hint": "u-1"},
+                        headers={"X-Forwarded-Host": "tool.example:8443",
+                                 "X-Forwarded-Proto": "https"}, follow_redirects=False)
+    asked = dict(urllib.parse.parse_qsl(urllib.parse.urlsplit(answer.headers["location"]).query))
+    assert asked["redirect_uri"] == "https://tool.example:8443/lti/launch"
+
+
+def test_a_checked_launch_s_refusal_is_in_its_language_and_quotes_once(tool):
+    """Issue 81: a 150-kB custom task was echoed twice (both languages) in full; a checked
+    launch knows its user's language, and a sent value is cut to 60 characters."""
+    client, platform, _ = tool
+    task = "t" * 150_000
+    answer = launch(client, platform, **{CLAIM + "custom": {"task": task, "method": "plans"}})
+    assert answer.status_code == 400 and answer.text.count("<p>") == 1  # Serbian alone (locale sr)
+    assert answer.text.count("t" * 60) == 1 and "t" * 61 not in answer.text
 
 
 @pytest.mark.parametrize("method, path, status", [("PUT", "/lti/login", 405), ("DELETE", "/lti/launch", 405),
@@ -418,7 +542,8 @@ def test_the_picker_offers_only_pairs_that_have_steps(tool):
     context = answer.text.split("name='context' value='")[1].split("'")[0]
     forced = client.post("/lti/deeplink", data={"context": context, "task": "zbirka-6.1",
                                                 "method": "plans"})
-    assert forced.status_code == 400 and "go back and pick another method" in forced.text
+    assert forced.status_code == 400 and "izaberite drugu metodu" in forced.text  # (its locale's)
+    assert forced.text.count("<p>") == 1 and "Planovi" in forced.text  # the method named in Serbian
     assert "vratite se" in forced.text and "Traceback" not in forced.text
 
 
