@@ -570,6 +570,10 @@ def test_the_served_app_publishes_its_key_and_refuses_an_unknown_platform(app_ur
         urllib.request.urlopen(f"{app_url}/lti/login?iss=https://nobody.example&login_hint=x",
                                timeout=10)
     assert refused.value.code == 400 and "No platform is registered" in refused.value.read().decode()
+    for method, path, status in (("GET", "/lti/unknown", 404), ("OPTIONS", "/lti/launch", 405)):
+        with pytest.raises(urllib.error.HTTPError) as refused:  # not the app's page with 200
+            urllib.request.urlopen(urllib.request.Request(f"{app_url}{path}", method=method), timeout=10)
+        assert refused.value.code == status and refused.value.read().decode().count("<p>") == 2
 
 
 @pytest.mark.server

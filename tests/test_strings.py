@@ -52,7 +52,8 @@ def used_keys() -> set[str]:
     return (keys - places - files - results - LIBRARY_NAMES) | rules | message_families()
 
 
-LIBRARY_NAMES = {"http.request", "server.address"}  # ASGI's message type, Streamlit's option
+# ASGI's message type, Streamlit's option, LTI's claims as a refusal names them
+LIBRARY_NAMES = {"http.request", "server.address", "context.id", "resource_link.id"}
 
 # the heads of a result's key (reports.values: "driving.torque", "members.3.omega"), which no
 # message key shares
