@@ -97,6 +97,16 @@ class OneTry(ClassError):
     """A second try of a step in a test: refused in words, not stored."""
 
 
+class TestClosed(ClassError):
+    """A try, or a new student, after the lecturer closed the test: refused in words, not
+    stored (the grades sent at closing stay the class summary's)."""
+
+
+def closed_at(found: "Class") -> str:
+    """When the test was closed, as a student reads it: the hour and minute, local time."""
+    return aware(found.closed).astimezone().strftime("%H:%M") if found.closed else ""
+
+
 class NotSaved(RuntimeError):
     """The store could not take a check: the student is told, and no verdict is shown."""
 
@@ -309,6 +319,8 @@ def nickname_of(text: str) -> str:
 def join(code: str, nickname: str = "", url: str | None = None) -> str:
     """A student joins: their token. In a class of variants each gets the next one."""
     found = find(code, url)
+    if found.test and found.closed is not None:  # (its grades are given: no new seat)
+        raise TestClosed(Text("class.test_closed_join", at=closed_at(found)))
     token = secrets.token_hex(16)  # 32 characters, 128 bits; never a leading '-'
     with engine(url).begin() as db:
         count = db.execute(sa.select(sa.func.count()).select_from(students)
@@ -422,6 +434,8 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
         if known is None or known[0].expires < _now():
             known = seated(code, token, url)
         found, who = known
+        if found.test and found.closed is not None:
+            raise TestClosed(Text("class.test_closed_try", at=closed_at(found)))
         if found.test and diagnosis == REVEALED:
             raise OneTry(Text("class.one_try", step=step))
         if variant is None:  # in a class of variants, the student's own
@@ -434,7 +448,11 @@ def record(code: str, token: str, step: str, answer, diagnosis: str, check: str,
         for _ in range(RACES):
             try:
                 with _autocommit(url) as db:  # (one statement: numbered and inserted at once)
-                    return db.execute(*_numbered(values, first=found.test)).scalar_one()
+                    number = db.execute(*_numbered(values, first=found.test)).scalar()
+                if number is None:  # the test closed since ``known`` was read: not stored
+                    now = find(code, url)
+                    raise TestClosed(Text("class.test_closed_try", at=closed_at(now)))
+                return number
             except sa.exc.IntegrityError:  # this check sent again, or a number taken meanwhile
                 stored = _stored_try(url, check)
                 if stored is not None:
@@ -470,7 +488,11 @@ def _numbering(names: tuple[str, ...], first: bool):
              sa.select(sa.func.coalesce(sa.func.max(checks.c["try"]), 0) + 1)
              .where(checks.c.student == value["student"], checks.c.step == value["step"])
              .scalar_subquery())
-    return (checks.insert().from_select([*names, "try"], sa.select(*value.values(), after))
+    # the closing time is a rule of the store, in the statement that inserts: a test closed
+    # a moment ago takes no try, whatever the page read before (none is stored, no row)
+    open_ = ~sa.exists().where(classes.c.id == value["class_id"], classes.c.closed.is_not(None))
+    return (checks.insert().from_select([*names, "try"], sa.select(*value.values(), after)
+                                        .where(open_))
             .returning(checks.c["try"]))
 
 

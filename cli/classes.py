@@ -140,9 +140,12 @@ def stored(data: dict, code: str, token: str, answers: dict) -> dict[str, int]:
     dropped). Step id → the try it was stored as. Then each result says what the class's
     fold made of it: a try of a step settled before (on a page, by an earlier hand-in)
     counts for nothing and is said so, and in a test not yet closed no verdict is given.
-    In a test a step already tried is refused whole, before anything is stored (OneTry)."""
+    In a test a step already tried is refused whole, before anything is stored (OneTry); a
+    closed test takes no hand-in at all (TestClosed, exit 2: nothing stored)."""
     found = store.find(code)
     answered = [r["id"] for r in data["results"] if r["id"] in answers]
+    if found.test and found.closed is not None:
+        raise store.TestClosed(Text("class.test_closed_try", at=store.closed_at(found)))
     if found.test:
         again = sorted({r["step"] for r in store.tries(code, token)} & set(answered))
         if again:

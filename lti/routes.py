@@ -31,7 +31,7 @@ from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Re
 from starlette.routing import Route
 
 from classes.steps import practice_link
-from classes.store import METHODS, StoreDown, find
+from classes.store import METHODS, ClassError, StoreDown, find
 from mechanisms import SceneError, load_preset, preset_ids
 from mechanisms.messages import KEEP, Text, strings
 from methods.practice_steps import steps_for
@@ -166,10 +166,10 @@ async def launch(request: Request) -> Response:
         return refused(exc.args[0], 503)
     try:  # (a checked launch: its refusals in the user's language alone)
         return picker(request, said) if said.kind == DEEP_LINKING else go(request, said)
-    except LtiError as exc:
-        return refused(exc.args[0], STATUS.get(exc.args[0].key, 400), said.locale)
     except StoreDown as exc:
         return refused(exc.args[0], 503, said.locale)
+    except ClassError as exc:  # the link's task, or a closed test's new learner
+        return refused(exc.args[0], STATUS.get(exc.args[0].key, 400), said.locale)
 
 
 # a launch's refusals that are not the platform's or the user's request being wrong

@@ -8,7 +8,7 @@ from __future__ import annotations
 import streamlit as st
 
 from classes import store
-from classes.store import ClassError
+from classes.store import ClassError, closed_at
 from classes.steps import practice_link
 from exams.codes import parse
 from mechanisms import SceneError
@@ -18,7 +18,7 @@ from ui.classroom import METHODS
 from ui.classview import view
 from ui.i18n import current, message, t
 from ui.joinpanel import MADE, join_panel
-from ui.numbers import number_field
+from ui.numbers import number_field, refused_fields
 from ui.scenes import preset_titles
 
 KINDS = {"compass": "linkage", "plans": "linkage", "forces": "linkage", "lever": "linkage",
@@ -37,7 +37,9 @@ def start() -> None:
     variants = st.text_input(t("class.variants"), key="class_variants", placeholder="3.1-S42-01K")
     at = number_field(t("class.at"), "class_at", optional=True)
     test = st.checkbox(t("class.test"), key="class_test")
-    if st.button(t("class.start"), type="primary", icon=":material/groups:"):
+    why = refused_fields({"class_at": t("class.at")})  # (never at an instant nobody typed)
+    if st.button(t("class.start"), type="primary", icon=":material/groups:",
+                 disabled=why is not None, help=why):
         try:
             if variants.strip():
                 settings, _ = parse(variants.strip())
@@ -61,9 +63,16 @@ def join(code: str) -> None:
         return
     st.header(t("class.join_title", code=found.code))
     st.caption(t(f"class.method_{found.method}"))
+    if found.test and found.closed is not None:  # its grades are given: no new seat
+        st.info(t("class.test_closed_join", at=closed_at(found)), icon=":material/lock:")
+        return
     nickname = st.text_input(t("class.nickname"), key="class_nickname", max_chars=store.NICKNAME_MAX)
     if st.button(t("class.join"), type="primary", icon=":material/login:"):
-        token = store.join(found.code, nickname)
+        try:
+            token = store.join(found.code, nickname)
+        except ClassError as exc:  # (closed, deleted or ended a moment ago)
+            st.error(message(exc.args[0]))
+            return
         go(found, token)
 
 

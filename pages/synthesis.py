@@ -32,7 +32,7 @@ from ui.chapters import SYNTHESIS
 from ui.editor_tables import restart_table, typed_table
 from ui.export import chart
 from ui.i18n import current, message, num, t, title_of
-from ui.numbers import is_refused, link_option, number_field
+from ui.numbers import link_option, number_field, refused_fields
 from ui.scenes import link_choice
 
 UNIT = "m"
@@ -124,14 +124,14 @@ def path_part() -> None:
                                         seconds=num(DEFAULT_SECONDS)))
         fields = {"syn_step": t("syn.step"), f"syn_max_{example}": t("syn.max_length", unit=UNIT),
                   f"syn_box_{example}": t("syn.box", unit=UNIT)}
-        refused = [label for key, label in fields.items() if is_refused(key)]
+        refused = refused_fields(fields)
         try:
             task = task_of(points, timing, step, max_length, box)
-            problem = t("syn.cannot", reason="; ".join(refused)) if refused else None
+            problem = refused
         except SceneError as exc:
             task, problem = None, message(exc)
         find = st.button(t("syn.find"), type="primary", icon=":material/travel_explore:",
-                         disabled=task is None or bool(refused), help=problem, width="stretch")
+                         disabled=task is None or refused is not None, help=problem, width="stretch")
         if problem and not refused:
             st.error(problem, icon=":material/error:")
         if find and task is not None:

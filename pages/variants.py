@@ -28,7 +28,7 @@ from ui.cache import page_cache
 from ui.chapters import VARIANTS, page_for
 from ui.export import dataframe
 from ui.i18n import current, message, num, t, title_of
-from ui.numbers import number_field
+from ui.numbers import number_field, refused_fields
 
 
 @page_cache(st.cache_resource(max_entries=8, show_spinner=False))
@@ -91,7 +91,9 @@ held = st.multiselect(t("var.hold"), range(len(givens)), key=f"var_hold_{choice}
                       format_func=named.__getitem__, placeholder=t("var.hold_none"))
 settings = Settings(choice, int(seed), int(spread), frozenset(held))
 
-if st.button(t("var.make"), type="primary", icon=":material/casino:"):
+why = refused_fields({"var_count": t("var.count"), "var_seed": t("var.seed")})
+if st.button(t("var.make"), type="primary", icon=":material/casino:", disabled=why is not None,
+             help=why):
     try:
         with st.spinner(t("var.making")):
             st.session_state["var_made"] = (settings, int(count), made(settings, int(count)))

@@ -649,3 +649,16 @@ def test_a_test_activity_sends_its_grades_when_its_teacher_closes_it(tool):
     store.close(code, key, db)
     grades.rescore(code, db)
     assert grades.send_due(db) == 1 and platform.scores[-1][1]["scoreGiven"] == 1
+    # closed (issue 82): a late try stores nothing, a new learner gets no seat, in words;
+    # the learner who took the test still opens it, and the grade sent stays the same
+    with pytest.raises(store.TestClosed):
+        store.record(code, token, steps_of(found)[1].id, 1.0, "ok", store.new_check(), url=db)
+    students = counts(db)[1]
+    late = launch(client, platform, sub="learner-late", **{CLAIM + "custom": item["custom"]})
+    assert late.status_code == 400 and "zatvoren u" in late.text and late.text.count("<p>") == 1
+    assert counts(db)[1] == students
+    again = launch(client, platform, **{CLAIM + "custom": item["custom"]})
+    assert again.status_code == 303
+    grades.rescore(code, db)  # scored again after the late tries: the same grade
+    grades.send_due(db)
+    assert platform.scores[-1][1]["scoreGiven"] == 1

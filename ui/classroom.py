@@ -11,9 +11,10 @@ import streamlit as st
 from streamlit.runtime.scriptrunner import get_script_run_ctx
 
 from classes import store
-from classes.store import ClassError, NotSaved, OneTry, StoreDown
+from classes.store import ClassError, NotSaved, OneTry, StoreDown, TestClosed, closed_at
 from classes.steps import PRACTICE_PAGES, practice_link, steps_at
 from classes.summary import tried
+from figures.plans import plain
 from methods.practice import Step, grade
 from methods.progress import Progress, Rules, Try
 from ui.boundary import boundary
@@ -28,6 +29,7 @@ METHODS = {"compass": ("pages/trajectories.py", "pr_compass"),  # (classes.steps
            "balance": ("pages/rotor_balancing.py", "pr_balance")}
 PAGE = "pages/class.py"
 NOT_SAVED = "_class_not_saved"
+LOCKED = ":material/lock:"  # a test's step tried already, or the test closed: not the store's fault
 
 
 RETRY = 3.0  # s between two looks at a store that did not answer
@@ -258,10 +260,34 @@ def verdicts_shown(state: dict) -> bool:
     if state["progress"].rules.hints or state["seat"] is None or state.get("closed"):
         return True
     try:
-        state["closed"] = store.find(state["seat"][0]).verdicts_shown
+        found = store.find(state["seat"][0])
     except ClassError:  # (down or gone: not yet)
         return False
+    state["closed"] = found.verdicts_shown
+    if found.closed is not None:
+        state["closed_at"] = closed_at(found)
     return state["closed"]
+
+
+def closing(state: dict) -> None:
+    """A seated student's page in an open test: said when the lecturer closes it. Until
+    then a fragment of its own asks the store every RETRY seconds (as the live view's
+    refresh) and runs the page again once the test is closed, which then shows the
+    verdicts; after that, when it was closed and what counts."""
+    if state["seat"] is None or state["progress"].rules.hints:
+        return
+    if verdicts_shown(state):  # (closed: asked of the store until then, then kept)
+        if state.get("closed_at"):
+            st.info(t("class.test_closed_seen", at=state["closed_at"]), icon=":material/lock_clock:")
+        return
+
+    @st.fragment(run_every=RETRY)
+    def watching() -> None:
+        with boundary():
+            if verdicts_shown(state):
+                st.rerun(scope="app")
+
+    watching()
 
 
 def _stored(state: dict, step: str, answer, diagnosis: str, term: str) -> tuple[str, int] | None:
@@ -278,8 +304,13 @@ def _stored(state: dict, step: str, answer, diagnosis: str, term: str) -> tuple[
     except (NotSaved, StoreDown):
         st.session_state[NOT_SAVED] = t("class.not_saved")
         return None
-    except OneTry as exc:  # a test's step tried already (on another device)
-        st.session_state[NOT_SAVED] = message(exc.args[0])
+    except OneTry:  # a test's step tried already (on another device): named as the page names it
+        shown = next((plain(s.symbol) for s in state["steps"] if s.id == step), step)
+        st.session_state[NOT_SAVED] = (t("class.one_try", step=shown), LOCKED)
+        return None
+    except TestClosed as exc:  # closed meanwhile: not stored, and the verdicts shown from now
+        st.session_state[NOT_SAVED] = (message(exc.args[0]), LOCKED)
+        verdicts_shown(state)  # (asks the store: closed, and when)
         return None
     except ClassError as exc:  # the class deleted or expired meanwhile: practice goes on, unstored
         st.session_state[NOT_SAVED] = t("class.gone", why=message(exc.args[0]))
@@ -300,7 +331,9 @@ def not_saved() -> bool:
     """The check the store could not take, said where its verdict would have been (and
     nothing else there: an older verdict under it would read as this one's). True if said."""
     said = st.session_state.pop(NOT_SAVED, None)
-    if said:
+    if isinstance(said, tuple):  # (a test's refusal: the one notice with a lock, as practice's)
+        st.info(said[0], icon=said[1])
+    elif said:
         st.error(said, icon=":material/cloud_off:")
     return bool(said)
 

@@ -252,6 +252,14 @@ def is_refused(key: str) -> bool:
     return memo is not None and st.session_state.get(key) != memo[1]
 
 
+def refused_fields(fields: dict[str, str]) -> str | None:
+    """Why a form cannot start anything yet — its number fields (key → label) that show a
+    refused text — or None: the one rule of every button that starts something (a class,
+    variants, a synthesis), said as the disabled button's help."""
+    refused = [label for key, label in fields.items() if is_refused(key)]
+    return t("num.fix_first", fields="; ".join(refused)) if refused else None
+
+
 def last_value(key: str) -> float | None:
     """A number field's value as it last read (for code that needs it before the field is
     drawn in this run)."""

@@ -135,6 +135,7 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
         st.info(t("practice.restarted"), icon=":material/restart_alt:")
     if state["seat"] is None and seated_before(state):
         st.warning(t("class.gone_note"), icon=":material/cloud_off:")
+    classroom.closing(state)  # (a test: said when its lecturer closes it)
     progress: Progress = state["progress"]
     index = min(state["index"], len(steps) - 1)
     step = steps[index]
@@ -146,8 +147,12 @@ def panel(steps: list[Step], key: str, title: str, drawable: bool = True) -> Non
     if zero:  # a question to type, not a drag: a tip cannot be left on its tail
         st.info(t("practice.zero_step"), icon=":material/info:")
     sheet = st.container() if drawn else None  # drawn last, where it shows: above the boxes
+    if progress.rules.hints:
+        hidden = "practice.rule_hidden_value" if step.kind == "scalar" else "practice.rule_hidden"
+    else:  # a test has no hints: its words promise none
+        hidden = "practice.rule_hidden_value_test" if step.kind == "scalar" else "practice.rule_hidden_test"
     rule = (t(RULES[step.rule]) if step.rule in ("sum", "point", "closing", "correction")
-            else t("practice.rule_hidden_value" if step.kind == "scalar" else "practice.rule_hidden"))
+            else t(hidden))
     if drawn:
         _dragged(step, key, state)  # (before the boxes it fills are drawn)
         unit, factor = shown_unit(step)  # (the scale and the rule: one element, two lines)
