@@ -132,4 +132,4 @@ def test_a_test_class_gives_one_try_no_show_it_and_verdicts_once_closed():
     store.close(code, key)
     at.run()  # closed: the outcome and the exact value, now
     text = said(at)
-    assert t("practice.exact", "en") in text and t("practice.wrong", "en") in text
+    assert t("practice.exact", "en") in text and at.warning  # the one try's verdict and hint

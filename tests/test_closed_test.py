@@ -128,3 +128,31 @@ def test_a_refused_instant_keeps_the_class_from_starting():
     assert start.disabled and "Correct the refused field first" in (start.help or "")
     at.text_input(key="class_at").input("30.5").run()
     assert not next(b for b in at.button if b.label == t("class.start", "en")).disabled
+
+
+def test_a_stale_phone_s_show_it_after_another_phone_s_right_answer_says_done_elsewhere():
+    """Issue 82, point 5: the stale phone's *Show it* showed "Right, within …" for an
+    answer it never gave; now the one notice of a step settled on another device."""
+    code, key = store.create("zbirka-3.1", "plans")
+    token = store.join(code, "Ana")
+    steps = steps_of(store.find(code))
+    phone1, phone2 = _seated(code, token), _seated(code, token)
+    _check(phone1, steps[0], steps[0].expected)
+    phone2.button(key="pr_plans_reveal").click().run()
+    assert not phone2.success and any("another device" in i.value for i in phone2.info)
+    assert [r["diagnosis"] for r in store.export(code, key)] == ["ok", store.REVEALED]
+
+
+def test_after_closing_a_step_whose_second_try_was_refused_shows_its_verdict_and_hint():
+    """Issue 82, point 6: such a step said "already done (wrong)" without the hint every
+    other step shows once the test is closed."""
+    code, key = store.create("zbirka-3.1", "plans", test=True)
+    token = store.join(code, "Ana")
+    steps = steps_of(store.find(code))
+    phone1, phone2 = _seated(code, token), _seated(code, token)
+    _check(phone1, steps[0], -complex(steps[0].expected))  # reversed: its one try, wrong
+    _check(phone2, steps[0], steps[0].expected)  # refused: tried already
+    store.close(code, key)
+    phone2.run()
+    assert any(t("practice.hint_sense", "en") in w.value for w in phone2.warning)
+    assert not any("already done" in i.value for i in phone2.info)

@@ -167,7 +167,8 @@ def test_the_builders_drawing_stays_over_the_tables_being_typed(app_url, phone, 
     page.wait_for_timeout(400)
     before = shapes(page)
     grid = page.locator("[data-testid='stDataFrame']").first.bounding_box()
-    for arrows in (3, 4, 2):  # to the length cell from the one tapped (it holds 0,4)
+    for arrows in (3, 4, 2, 3, 4, 2):  # to the length cell from the one tapped (it holds 0,4)
+        wait_idle(page)  # (a click while a rerun redraws the grid lands nowhere, under load)
         page.mouse.click(grid["x"] + 70, grid["y"] + 35 + 35 + 17)  # the coupler's row
         for _ in range(arrows):  # (arrows, not Home: a Home the grid does not take scrolls
             page.keyboard.press("ArrowRight")  # the page)
@@ -178,6 +179,8 @@ def test_the_builders_drawing_stays_over_the_tables_being_typed(app_url, phone, 
             break
         except PlaywrightTimeout:
             page.keyboard.press("Escape")
+    else:
+        pytest.fail("the length cell's editor never opened (six taps)")
     page.keyboard.press("Control+a")
     page.keyboard.type("0,35", delay=60)  # the coupler's length, typed the Serbian way
     page.keyboard.press("Enter")

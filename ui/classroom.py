@@ -231,8 +231,11 @@ def reveal(state: dict, step: Step) -> None:
         return
     if state["seat"] is None:
         state["progress"].reveal(step)
-    elif _folded(state, Try(step.id, store.REVEALED)):
-        state["mine"].pop(step.id, None)
+    elif check := _folded(state, Try(step.id, store.REVEALED)):
+        if state["progress"].late(check):  # settled on another device first: said so, as a check's
+            state["mine"][step.id] = SETTLED
+        else:
+            state["mine"].pop(step.id, None)
 
 
 def _folded(state: dict, made: Try) -> str:
@@ -307,6 +310,8 @@ def _stored(state: dict, step: str, answer, diagnosis: str, term: str) -> tuple[
     except OneTry:  # a test's step tried already (on another device): named as the page names it
         shown = next((plain(s.symbol) for s in state["steps"] if s.id == step), step)
         st.session_state[NOT_SAVED] = (t("class.one_try", step=shown), LOCKED)
+        # the other device's try, which this page had not seen: its verdict once closed
+        state["progress"] = resumed(state["seat"], state["steps"], state["progress"].rules)
         return None
     except TestClosed as exc:  # closed meanwhile: not stored, and the verdicts shown from now
         st.session_state[NOT_SAVED] = (message(exc.args[0]), LOCKED)

@@ -279,11 +279,13 @@ def _feedback(step: Step, state: dict) -> None:
         elif record.counted:
             st.info(t("practice.test_stored"), icon=":material/lock:")
         return
-    if mine in (classroom.SETTLED, classroom.DONE_HERE):
+    elsewhere = mine in (classroom.SETTLED, classroom.DONE_HERE)
+    if elsewhere and progress.rules.hints:
         st.info(t("practice.settled" if mine == classroom.SETTLED else "practice.settled_here",
                   outcome=t(OUTCOMES[record.outcome])), icon=":material/devices:")
-    else:
-        last = mine or (verdict_of(step, record.graded[-1]) if record.graded else None)
+    else:  # (a closed test: the step's one stored try, with its hint, as every other step)
+        last = (None if elsewhere else mine) or (verdict_of(step, record.graded[-1])
+                                                 if record.graded else None)
         if last is not None:
             (st.success if last.ok else st.warning)(hint(step, last))
     if record.outcome == "revealed":
