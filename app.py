@@ -11,7 +11,8 @@ from ui.present import projector_switch
 
 # an emoji, drawn by the browser: a ":material/…:" favicon is fetched from Google's font CDN,
 # which fails in a room without internet and tells a third party of every visit
-st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide")
+st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide",
+                   initial_sidebar_state="auto")
 with boundary():  # no traceback on any page: one sentence, and the server's log
     language_picker()
     page = st.navigation(navigation_pages())

@@ -10,6 +10,7 @@ import sys
 
 from classes import store, summary
 from classes.steps import steps_of
+from figures.plans import plain
 from classes.store import variant_of
 from lti.grades import close_test
 from mechanisms import Scene, SceneError, load_preset
@@ -148,8 +149,10 @@ def stored(data: dict, code: str, token: str, answers: dict) -> dict[str, int]:
         raise store.TestClosed(Text("class.test_closed_try", at=store.closed_at(found)))
     if found.test:
         again = sorted({r["step"] for r in store.tries(code, token)} & set(answered))
-        if again:
-            raise store.OneTry(Text("class.one_try", step=", ".join(again)))
+        if again:  # (named as the pages name them, with the answers file's id beside)
+            named = {s.id: plain(s.symbol) for s in steps_of(found, store.student(code, token)["variant"])}
+            raise store.OneTry(Text("class.one_try", step=", ".join(f"{named.get(i, i)} ({i})"
+                                                                     for i in again)))
     out, checks = {}, {}
     for result in data["results"]:
         if result["id"] in answers:

@@ -14,7 +14,7 @@ from exams.codes import parse
 from mechanisms import SceneError
 from mechanisms.link import PARAMETER
 from ui.chapters import CLASSROOM
-from ui.classroom import METHODS
+from ui.classroom import METHODS, close_sidebar
 from ui.classview import view
 from ui.i18n import current, message, t
 from ui.joinpanel import MADE, join_panel
@@ -56,6 +56,7 @@ def start() -> None:
 
 def join(code: str) -> None:
     """A student's first visit: a nickname (or the one given), then off to practise."""
+    close_sidebar()
     try:
         found = store.find(code)
     except ClassError as exc:

@@ -156,3 +156,14 @@ def test_after_closing_a_step_whose_second_try_was_refused_shows_its_verdict_and
     phone2.run()
     assert any(t("practice.hint_sense", "en") in w.value for w in phone2.warning)
     assert not any("already done" in i.value for i in phone2.info)
+
+
+def test_the_command_line_names_a_step_tried_already_as_the_pages_do(tmp_path, monkeypatch):
+    """Issue 82, point 3: the command line said "v.a-b, v.b has been tried already"."""
+    monkeypatch.setenv("MEHANIZMI_DATABASE_URL", f"sqlite:///{tmp_path / 'cli.db'}")
+    code, key, token, steps = _test_with_two_answers()
+    answers = tmp_path / "answers.json"
+    answers.write_text(json.dumps({"answers": {steps[0].id: [1.0, 2.0]}}))
+    done = run("practice", "--method", "plans", "--answers", str(answers), "--class", code,
+               "--student", token)
+    assert done.returncode == 2 and "v_BA (v.a-b) has been tried already" in done.stderr

@@ -343,6 +343,28 @@ def not_saved() -> bool:
     return bool(said)
 
 
+SIDEBAR_CLOSES = "_sidebar_closes"  # session: a code typed in the sidebar, its page opening
+
+
+# the sidebar's own « button, pressed where the sidebar lies over the page (a phone's width)
+CLOSE_SIDEBAR = """<script>
+if (innerWidth < 768) {
+  const sidebar = document.querySelector('[data-testid="stSidebar"]');
+  const close = sidebar && sidebar.querySelector('[data-testid="stSidebarCollapseButton"] button, '
+                                                 + '[data-testid="stSidebarHeader"] button');
+  if (close && sidebar.getBoundingClientRect().right > 0) close.click();
+}
+</script>"""
+
+
+def close_sidebar() -> None:
+    """The join page opened from a code typed in the sidebar closes the sidebar on a phone,
+    where it lies over the page: *Join and practise* could not be tapped until it was
+    closed by hand. (Streamlit's page config does not close a sidebar already open.)"""
+    if st.session_state.pop(SIDEBAR_CLOSES, False):
+        st.html(CLOSE_SIDEBAR, unsafe_allow_javascript=True)
+
+
 def sidebar_join() -> None:
     """A class code typed in the sidebar of any page opens the class's join page. The box
     is emptied as it is read, so a page that runs again (a restart, a reconnect) does not
@@ -350,6 +372,7 @@ def sidebar_join() -> None:
     def typed() -> None:
         st.session_state["_class_join"] = st.session_state["class_code_typed"].strip().upper()
         st.session_state["class_code_typed"] = ""
+        st.session_state[SIDEBAR_CLOSES] = True
 
     st.sidebar.text_input(t("class.sidebar_code"), key="class_code_typed", on_change=typed,
                           placeholder="ABC123", max_chars=12, autocomplete="off")
