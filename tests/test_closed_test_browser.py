@@ -1,8 +1,10 @@
 """A test's life in chromium, on phones, in Serbian and English (issue 82): a student joins by
-typing the code in the sidebar (which then gets out of the way), answers a step; the
-lecturer closes the test on the live view; the open page says so within seconds, a late
-check is refused in words and not stored, and a student who opens the join link after the
-closing gets no seat. The export and the summary keep what was answered before."""
+typing the code in the sidebar (which then gets out of the way), answers a step; the same
+student's second, stale phone tries that step — refused with the step named as the page
+shows it, a lock, no hint promised; the lecturer closes the test; the open page says so
+within seconds, a late check is refused in words and not stored, the stale phone shows the
+step's one verdict with its hint, and a student who opens the join link after the closing
+gets no seat. And a class form with a refused instant starts nothing."""
 
 from __future__ import annotations
 
@@ -49,9 +51,19 @@ def test_a_closed_test_takes_no_answer_and_no_late_student(app_url, chromium, tm
     join.click(trial=True, timeout=10_000)  # tappable: the sidebar is not lying over it
     join.tap()
     page.locator("[data-testid='stForm'] input").first.wait_for(timeout=30_000)
+    stale = browser.new_context(**phone, locale=locale).new_page()  # the student's other phone
+    stale.goto(page.url)
+    stale.locator("[data-testid='stForm'] input").first.wait_for(timeout=30_000)
+    wait_idle(stale)
+    hint_promised = t("practice.rule_hidden", language).split("? ")[1]
+    assert stale.get_by_text(hint_promised).count() == 0  # "no hints", not contradicted
     _answer(page, steps[0], language)
     page.get_by_text(t("practice.test_stored", language)[:20]).first.wait_for(timeout=30_000)
     wait_idle(page)
+    _answer(stale, steps[0], language)  # the step is taken: refused, named as shown
+    tried = t("class.one_try", language, step="v_BA")
+    stale.get_by_text(tried).first.wait_for(timeout=30_000)
+    assert stale.locator("[data-testid='stAlertContentError']").count() == 0  # a lock, no cloud
 
     store.close(code, key)  # the lecturer's Close the test (tests/test_classview_browser.py)
     closed = t("class.test_closed_seen", language, at="")[:18]
@@ -68,6 +80,15 @@ def test_a_closed_test_takes_no_answer_and_no_late_student(app_url, chromium, tm
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
 
+    stale.reload()  # after the closing: the step's one try, its verdict and its hint
+    stale.get_by_text(t("practice.step", language, n=2, of=len(steps), part="")[:12]).first.wait_for(
+        timeout=30_000)  # (it opens at the first step not done)
+    wait_idle(stale)
+    stale.get_by_role("button", name=t("practice.previous", language)).click()
+    stale.locator("[data-testid='stAlertContentSuccess']").first.wait_for(timeout=30_000)
+    assert stale.get_by_text(t("practice.settled_here", language, outcome="")[:20]).count() == 0
+    stale.context.close()
+
     newcomer = browser.new_context(**phone, locale=locale).new_page()
     newcomer.goto(f"{app_url}/class?join={code}&lang={language}")
     newcomer.get_by_text(t("class.test_closed_join", language, at="")[:18]).first.wait_for(
@@ -78,3 +99,25 @@ def test_a_closed_test_takes_no_answer_and_no_late_student(app_url, chromium, tm
     assert page.locator("[data-testid='stException']").count() == 0
     newcomer.context.close()
     context.close()
+
+
+@pytest.mark.parametrize("language", ["sr", "en"])
+def test_a_refused_instant_keeps_the_class_from_starting(app_url, chromium, language):
+    """Issue 82, point 2: "30,5" on the English class page was refused at its field, and
+    *Start the class* then made a class at the task's own instant without a word."""
+    context = chromium[0].new_context(locale="en-US", viewport={"width": 1400, "height": 900})
+    page = context.new_page()
+    page.goto(f"{app_url}/class?lang={language}")
+    box = page.get_by_label(t("class.at", language))
+    box.fill("30,5" if language == "en" else "30;5")
+    box.press("Enter")
+    label = t("class.start", language)
+    state = "t => [...document.querySelectorAll('button')].some(b => b.innerText.includes(t[0]) && b.disabled === t[1])"
+    page.wait_for_function(state, arg=[label, True], timeout=30_000)  # refused: it starts nothing
+    page.get_by_role("button", name=label).hover(force=True)
+    page.get_by_text(t("num.fix_first", language, fields="")[:20]).first.wait_for(timeout=10_000)
+    box.fill("30.5" if language == "en" else "30,5")
+    box.press("Enter")
+    page.wait_for_function(state, arg=[label, False], timeout=30_000)
+    context.close()
+
