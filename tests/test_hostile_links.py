@@ -141,3 +141,16 @@ def test_the_variants_page_opens_the_set_a_code_names():
     assert at.text_input(key="var_seed").value == "42" and at.slider(key="var_spread").value == 20
     assert at.multiselect(key="var_hold_zbirka-3.1").value == [1] and given in _said(at)
 
+
+
+def test_the_builder_opens_the_scene_a_link_carries():
+    """Issue 85: /builder?s=<python -m solvers link zbirka-3.1> opened the default template
+    and kept s= in its address; docs/links.md says any page's address can carry a scene."""
+    from mechanisms import load_preset
+    from mechanisms.link import encode
+
+    own = _opened("pages/builder.py", {}).session_state["build_doc"]
+    at = _opened("pages/builder.py", {"s": encode(load_preset("zbirka-3.1"))})
+    doc = at.session_state["build_doc"]
+    assert not at.exception and doc != own
+    assert set(doc["frame"]) == set(load_preset("zbirka-3.1").frame)  # the task's fixed points
