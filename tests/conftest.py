@@ -52,10 +52,17 @@ SHARED = {"module", "package", "session"}
 BUILT_IN = {"tmp_path_factory", "worker_id", "testrun_uid"}  # (session-wide, but cheap)
 
 
+LONG = ("browser", "server", "sweep")  # the markers of the suite's long groups
+
+
 @pytest.hookimpl(tryfirst=True)
 def pytest_collection_modifyitems(config, items):
     """A test that uses a fixture of module scope or wider runs in its module's group (one
-    worker pays for the fixture once); the rest are spread freely."""
+    worker pays for the fixture once); the rest are spread freely. The long groups (a
+    browser's, a server's, a sweep's) are handed out first and the many short tests fill
+    in after them: begun last, a 60-s group kept one worker busy while the other idled at
+    the end of the run (the longest-first order; each module's own order is kept)."""
+    items.sort(key=lambda item: not any(item.get_closest_marker(m) for m in LONG))
     for item in items:
         info = getattr(item, "_fixtureinfo", None)
         if info is None or item.get_closest_marker("xdist_group"):
