@@ -106,7 +106,7 @@ def url(request, tmp_path):
 def app_url(tmp_path_factory):
     """One app server for a worker's whole run (a server start is ~2 s of imports, and its
     first page run warms the caches every later module then finds warm); each test opens
-    its own browser context, so nothing of one test's session reaches another's."""
+    its own pages, so nothing of one test's session reaches another's."""
     port = free_port()
     log = open(tmp_path_factory.mktemp("server") / "streamlit.log", "w")
     server = start_server(port, log=log)
@@ -120,7 +120,8 @@ def app_url(tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
-def browser(tmp_path_factory):
+def profile(tmp_path_factory):
+    """One chromium per test module (a launch is ~0.3 s; tests open pages in it)."""
     from playwright.sync_api import sync_playwright
 
     from .test_browser import CHROMIUM, FLAGS
@@ -131,6 +132,17 @@ def browser(tmp_path_factory):
             viewport={"width": 1400, "height": 900})
         yield context
         context.close()
+
+
+@pytest.fixture
+def browser(profile):
+    """The module's chromium; the pages a test opened are closed at its end (an open page keeps
+    its app session alive, and the next test's clicks shared the machine with it)."""
+    kept = set(profile.pages)  # (the profile's own blank page)
+    yield profile
+    for page in profile.pages:
+        if page not in kept:
+            page.close()
 
 
 @pytest.fixture(scope="module")

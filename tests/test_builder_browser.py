@@ -77,6 +77,19 @@ def drag_point(page, name: str, to: complex) -> None:
     wait_idle(page)
 
 
+def click_in(page, grid, x: float, y: float, seen: list) -> bool:
+    """Click (x, y) and say whether the grid took the focus; if not, note in ``seen`` what lay
+    at that point (a header, a toast, another element), for the failure's message."""
+    page.mouse.click(x, y)
+    if grid.evaluate("g => g.contains(document.activeElement)"):
+        return True
+    seen.append("click taken by " + page.evaluate(
+        "([x, y]) => { const e = document.elementFromPoint(x, y); if (!e) return 'nothing';"
+        " const named = e.closest('[data-testid]'); return named ?"
+        " named.getAttribute('data-testid') : e.tagName; }", [x, y]))
+    return False
+
+
 def type_cell(page, header: str, row: int, column: int, text: str, redraws: bool = True) -> None:
     """Type into a data editor's cell as a keyboard user does: click the row, Home and arrow to
     the column, Enter to edit, replace the value, Enter to commit. A fresh editor may drop
@@ -89,13 +102,13 @@ def type_cell(page, header: str, row: int, column: int, text: str, redraws: bool
     seen = []  # what each try's focused element held, for the failure's message
     for _ in range(5):
         page.wait_for_timeout(300)  # the tab's content laid out
-        grid.scroll_into_view_if_needed()  # (a button below it may have left it off screen)
+        # centred, not scrolled "if needed": that aligns a grid above the view with its top
+        # edge, where the page's fixed header lies over the first rows and takes the click
+        grid.evaluate("g => g.scrollIntoView({block: 'center'})")
         box = grid.bounding_box()
-        page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * row + 17)
-        if not grid.evaluate("g => g.contains(document.activeElement)"):
-            seen.append("click missed the grid")
-            continue  # the click missed the grid (still laid out): the keys below would go to
-            # the tabs, whose arrow keys switch tabs and take the table away
+        if not click_in(page, grid, box["x"] + 70, box["y"] + 35 + 35 * row + 17, seen):
+            continue  # the keys below would go to the tabs, whose arrow keys switch tabs and
+            # take the table away
         page.keyboard.press("Home")  # the row's first column, however the grid is scrolled
         for _ in range(column):
             page.keyboard.press("ArrowRight")

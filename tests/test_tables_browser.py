@@ -108,7 +108,8 @@ def test_an_empty_row_added_is_left_out_and_a_row_deleted_is_taken(app_url, engl
     grid = page.locator("[data-testid='stDataFrame']").filter(has_text="m [kg]")
     rows = len(cells(grid)) // 4
     before, link = main_text(page), page.url
-    grid.scroll_into_view_if_needed()  # (under the polygons)
+    grid.evaluate("g => g.scrollIntoView({block: 'center'})")  # (under the polygons; centred:
+    # clear of the page's fixed header)
     box = grid.bounding_box()
     page.mouse.click(box["x"] + 70, box["y"] + 35 + 35 * rows + 17)  # the row to add one
     page.wait_for_function("([g, n]) => document.querySelectorAll(g).length > n",

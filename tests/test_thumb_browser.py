@@ -19,7 +19,7 @@ from cli.practice import steps_for
 from mechanisms import load_preset
 
 from .test_browser import CHROMIUM, FLAGS, keep, settle, wait_idle
-from .test_builder_browser import SHAPES, open_tab, shapes
+from .test_builder_browser import SHAPES, click_in, open_tab, shapes
 
 pytestmark = pytest.mark.browser
 
@@ -166,10 +166,13 @@ def test_the_builders_drawing_stays_over_the_tables_being_typed(app_url, phone, 
         {MAIN}.scrollTop += grid.top - sheet.bottom - 8; }}""")
     page.wait_for_timeout(400)
     before = shapes(page)
-    grid = page.locator("[data-testid='stDataFrame']").first.bounding_box()
+    table = page.locator("[data-testid='stDataFrame']").first
+    seen = []  # what each tap landed on, for the failure's message
     for arrows in (3, 4, 2, 3, 4, 2):  # to the length cell from the one tapped (it holds 0,4)
         wait_idle(page)  # (a click while a rerun redraws the grid lands nowhere, under load)
-        page.mouse.click(grid["x"] + 70, grid["y"] + 35 + 35 + 17)  # the coupler's row
+        grid = table.bounding_box()  # (where it is now: an Escape or a rerun may scroll it)
+        if not click_in(page, table, grid["x"] + 70, grid["y"] + 35 + 35 + 17, seen):
+            continue  # the coupler's row missed: the arrows would scroll the page
         for _ in range(arrows):  # (arrows, not Home: a Home the grid does not take scrolls
             page.keyboard.press("ArrowRight")  # the page)
         page.keyboard.press("Enter")
@@ -178,9 +181,10 @@ def test_the_builders_drawing_stays_over_the_tables_being_typed(app_url, phone, 
                                    timeout=5_000)
             break
         except PlaywrightTimeout:
+            seen.append("no editor with 0,4")
             page.keyboard.press("Escape")
     else:
-        pytest.fail("the length cell's editor never opened (six taps)")
+        pytest.fail(f"the length cell's editor never opened (six taps): {seen}")
     page.keyboard.press("Control+a")
     page.keyboard.type("0,35", delay=60)  # the coupler's length, typed the Serbian way
     page.keyboard.press("Enter")
