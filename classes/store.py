@@ -216,11 +216,17 @@ def reachable(url: str | None = None) -> bool:
     return True
 
 
+MIGRATION_LOCK = 0x6D656861  # PostgreSQL's advisory lock key for the schema's upgrade ("meha")
+
+
 def migrate(made: sa.Engine, to: str = "head") -> None:
     """Bring the schema to the newest migration (``classes/migrations``), or to ``to``."""
     config = Config()
     config.set_main_option("script_location", str(Path(__file__).with_name("migrations")))
     with made.begin() as connection:
+        if made.dialect.name == "postgresql":  # hosts starting together: one migrates, the
+            # others wait here until it commits and then find nothing left to do
+            connection.execute(sa.text("SELECT pg_advisory_xact_lock(:key)"), {"key": MIGRATION_LOCK})
         config.attributes["connection"] = connection
         command.upgrade(config, to)
 

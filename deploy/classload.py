@@ -24,8 +24,8 @@ import socket
 import subprocess
 import tempfile
 import time
-import urllib.request
 from collections import Counter
+from contextlib import nullcontext
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -36,7 +36,8 @@ from mechanisms import load_preset
 from methods.practice import TRIES, Step
 from methods.practice_steps import steps_for
 
-from .client import Report, Session, free_port, memory_mb, percentile
+from . import hosts as lab
+from .client import Report, Session, free_port, healthy, memory_mb, percentile
 
 ROOT = Path(__file__).resolve().parents[1]
 TASK = "zbirka-3.1"
@@ -53,6 +54,7 @@ class Seen:
     planted: str  # the diagnosis the answer was made to get
     verdict: str  # what the page showed: "success" or "warning"
     at: float  # monotonic time the verdict arrived
+    host: str | None = None  # the app host that served it (with several hosts)
 
 
 @dataclass
@@ -65,6 +67,11 @@ class ClassReport:
     reconnects: int = 0
     pages: Report = field(default_factory=Report)  # the students' page openings and reruns
     opened: list[float] = field(default_factory=list)  # when each student's page had opened
+    on: dict[str, tuple[str | None, str]] = field(default_factory=dict)  # student → (host, step)
+    lost: str | None = None  # the app host killed
+    moved: dict[str, str] = field(default_factory=dict)  # its students → the step each was on
+    resumed: set[str] = field(default_factory=set)  # of those, who went on at it on another host
+    fault_at: float | None = None  # when the fault struck (monotonic)
 
 
 @dataclass
@@ -78,6 +85,16 @@ class Deploy:
     pgdata: Path
     script: subprocess.Popen
     logs: Path
+
+    def app_pids(self) -> list[int]:
+        return [p for p in map(app_pid, self.ports) if p]
+
+    def database_pids(self) -> list[int]:
+        return postgres_pids(self.pgdata)
+
+    def host_of(self, upstream: str) -> None:
+        """One machine: no host to tell apart."""
+        return None
 
     def stop(self, keep: bool = False) -> None:
         """Stopped as Ctrl-C stops it; its data and logs removed unless ``keep``."""
@@ -132,18 +149,6 @@ def start_deploy(processes: int = 2, app: str = "asgi.py", cpus: set[int] | None
     for address in [port, *ports]:
         healthy(f"http://127.0.0.1:{address}")
     return Deploy(f"http://127.0.0.1:{port}", ports, database, pgdata, script, logs)
-
-
-def healthy(address: str, seconds: float = 90) -> None:
-    deadline = time.monotonic() + seconds
-    while True:
-        try:
-            urllib.request.urlopen(f"{address}/_stcore/health", timeout=2)
-            return
-        except OSError:
-            if time.monotonic() > deadline:
-                raise
-            time.sleep(0.5)
 
 
 def app_pid(port: int) -> int | None:
@@ -202,9 +207,17 @@ def _plant(step: Step, rng: random.Random) -> str:
     return rng.choices(["ok", "sense", wrong], [0.6, 0.2, 0.2])[0]
 
 
+def _resumed(steps: list[str], was: str, now: str, done: set[str]) -> bool:
+    """A page reopened at the step the student was on (or, that one done, the next)."""
+    if now == was:
+        return True
+    return was in done and steps.index(now) == steps.index(was) + 1
+
+
 async def student(url: str, code: str, token: str, steps: dict[str, Step], until: float,
-                  report: ClassReport, rng: random.Random) -> None:
-    """A student on a phone: checks a step every 3–8 s; reconnects when cut off."""
+                  report: ClassReport, rng: random.Random, host_of=lambda upstream: None) -> None:
+    """A student on a phone: checks a step every 3–8 s; reconnects when cut off.
+    ``host_of``: the app host nginx's ``X-Mehanizmi-Upstream`` names (several hosts)."""
     tries: Counter = Counter()
     done: set[str] = set()
     pending: tuple[str, str] | None = None  # (step, planted) not saved: sent again
@@ -213,6 +226,8 @@ async def student(url: str, code: str, token: str, steps: dict[str, Step], until
         try:
             async with websockets.connect(url, subprotocols=["streamlit"], max_size=None,
                                           open_timeout=30, ping_timeout=60) as ws:
+                host = host_of(ws.response.headers.get("X-Mehanizmi-Upstream", ""))
+                fresh = True
                 session = Session(url, "velocity_plans", link, report.pages)
                 await session.run(ws)
                 report.opened.append(time.monotonic())
@@ -223,6 +238,12 @@ async def student(url: str, code: str, token: str, steps: dict[str, Step], until
                         await asyncio.sleep(1.0)
                         await session.run(ws)
                         continue
+                    if fresh:  # the page's first step on this connection
+                        fresh = False
+                        was = report.moved.get(token)
+                        if was is not None and host != report.lost and _resumed(list(steps), was, step_id, done):
+                            report.resumed.add(token)
+                    report.on[token] = (host, step_id)
                     if any(text.startswith(EXACT) for text in session.texts):
                         done.add(step_id)  # done on the page (a check whose verdict a fall cut off)
                     if step_id in done and "pr_plans_next" in session.buttons:
@@ -249,7 +270,7 @@ async def student(url: str, code: str, token: str, steps: dict[str, Step], until
                         continue
                     pending = None
                     report.check_times.append(took)
-                    report.seen.append(Seen(token, step_id, planted, verdicts[0], time.monotonic()))
+                    report.seen.append(Seen(token, step_id, planted, verdicts[0], time.monotonic(), host))
                     tries[step_id] += 1
                     if planted == "ok" or tries[step_id] >= TRIES:
                         done.add(step_id)
@@ -284,11 +305,18 @@ async def lecturer(url: str, code: str, key: str, until: float, report: ClassRep
             await asyncio.sleep(1.0)
 
 
-async def fault(kind: str | None, deploy: Deploy, at: float, gap: float = GAP) -> None:
-    """The failure in the middle of the run (PostgreSQL down for ``gap`` seconds)."""
+async def fault(kind: str | None, deploy, at: float, report: ClassReport, gap: float = GAP) -> None:
+    """The failure in the middle of the run (PostgreSQL down for ``gap`` seconds; ``host``:
+    every process of the first app host killed, its students and their steps noted first)."""
     if kind is None:
         return
     await asyncio.sleep(max(0.0, at - time.monotonic()))
+    report.fault_at = time.monotonic()
+    if kind == "host":
+        report.lost = deploy.apps[0]
+        report.moved = {t: step for t, (host, step) in report.on.items() if host == report.lost}
+        await asyncio.to_thread(deploy.kill, report.lost)
+        return
     if kind == "kill":
         pid = app_pid(deploy.ports[0])
         if pid:
@@ -343,20 +371,19 @@ async def _run(deploy: Deploy, students: int, seconds: float, kind: str | None,
     report = ClassReport()
     start = time.monotonic()
     until = start + seconds
-    apps = [app_pid(p) for p in deploy.ports]
-    pg = postgres_pids(deploy.pgdata)
-    cpu = (cpu_seconds([p for p in apps if p]), cpu_seconds(pg))
-    work = [student(url, code, t, steps, until, report, random.Random(i)) for i, t in enumerate(tokens)]
-    await asyncio.gather(lecturer(url, code, key, until + 5.0, report), fault(kind, deploy, start + seconds / 2, gap),
-                         *work)
+    cpu = (cpu_seconds(deploy.app_pids()), cpu_seconds(deploy.database_pids()))
+    work = [student(url, code, t, steps, until, report, random.Random(i), deploy.host_of)
+            for i, t in enumerate(tokens)]
+    await asyncio.gather(lecturer(url, code, key, until + 5.0, report),
+                         fault(kind, deploy, start + seconds / 2, report, gap), *work)
     wall = time.monotonic() - start
-    apps_now = [app_pid(p) for p in deploy.ports]
-    pg_now = postgres_pids(deploy.pgdata)
-    app_cpu = cpu_seconds([p for p in apps_now if p]) - cpu[0]
+    apps_now = deploy.app_pids()
+    pg_now = deploy.database_pids()
+    app_cpu = cpu_seconds(apps_now) - cpu[0]  # (a killed host's CPU is not counted)
     stored = store.export(code, key, url=deploy.database)
     usage = {"app_cpu_percent": round(100 * app_cpu / wall, 1),
              "app_cpu_ms_per_check": round(1e3 * app_cpu / max(len(stored), 1), 1), "wall": wall,
-             "app_memory_mb": [round(memory_mb(p)) for p in apps_now if p],
+             "app_memory_mb": [round(memory_mb(p)) for p in apps_now],
              "database_cpu_percent": round(100 * (cpu_seconds(pg_now) - cpu[1]) / wall, 1),
              "database_memory_mb": round(sum(memory_mb(p) for p in pg_now))}
     return report, stored, usage
@@ -366,22 +393,30 @@ FLOOR = "bench/floor_class_app.py"  # a class's pages with nothing but the store
 
 
 def class_load(students: int, seconds: float, kind: str | None = None, floor: bool = False,
-               clients_cpu: int | None = None, gap: float = GAP) -> dict:
+               clients_cpu: int | None = None, gap: float = GAP, hosts: int = 0) -> dict:
     """The whole run on a deploy of its own (of the floor's pages with ``floor``): the
     figures as one dict (the JSON line). ``clients_cpu``: the simulated phones on that core
     alone and the deployment (app processes, PostgreSQL, nginx) on the others, so that the
     server's own capacity shows apart from the clients' (both shared two cores before).
-    ``gap``: how long PostgreSQL stays down in the ``database`` fault."""
+    ``gap``: how long PostgreSQL stays down in the ``database`` fault. ``hosts``: that many
+    app hosts, PostgreSQL and nginx each on a machine of its own (deploy/hosts.py), the
+    phones on another; the ``host`` fault kills every process of the first app host."""
     every = os.sched_getaffinity(0)
     server = every - {clients_cpu} if clients_cpu is not None else None
     if clients_cpu is not None and (clients_cpu not in every or not server):
         raise SystemExit(f"--clients-cpu {clients_cpu}: this machine's cores are {sorted(every)}")
-    deploy = start_deploy(app=FLOOR if floor else "asgi.py", cpus=server)
+    app = FLOOR if floor else "asgi.py"
+    if hosts:
+        deploy = lab.start(hosts, app=app)
+        where = lab.inside(deploy, "client")  # (the phones' and the store's connections)
+    else:
+        deploy, where = start_deploy(app=app, cpus=server), nullcontext()
     if clients_cpu is not None:
         os.sched_setaffinity(0, {clients_cpu})
     clients = os.times()
     try:
-        report, rows, usage = asyncio.run(_run(deploy, students, seconds, kind, gap))
+        with where:
+            report, rows, usage = asyncio.run(_run(deploy, students, seconds, kind, gap))
     finally:
         deploy.stop()
         if clients_cpu is not None:
@@ -404,4 +439,19 @@ def class_load(students: int, seconds: float, kind: str | None = None, floor: bo
             "view_last": report.view[-1][1] if report.view else None,
             "open_p50_ms": ms(report.pages.opening, 0.5), "open_p95_ms": ms(report.pages.opening, 0.95),
             "seconds": seconds, "server_cpus": len(server) if server else len(every),
-            "clients_cpu": clients_cpu, **usage, "first_errors": report.errors[:5]}
+            "clients_cpu": clients_cpu, **usage, **(_across(report, deploy.apps) if hosts else {}),
+            "first_errors": report.errors[:5]}
+
+
+def _across(report: ClassReport, apps: list[str]) -> dict:
+    """Each app host's share of the checks (before the fault too), and with a host lost:
+    its students, and how many of them went on at their step on another host."""
+    before = report.fault_at if report.fault_at is not None else math.inf
+    found = {"hosts": len(apps),
+             "per_host_checks": {h: sum(s.host == h for s in report.seen) for h in apps},
+             "per_host_checks_before_fault": {h: sum(s.host == h and s.at < before for s in report.seen)
+                                              for h in apps}}
+    if report.lost is not None:
+        found |= {"host_lost": report.lost, "students_moved": len(report.moved),
+                  "students_resumed": len(report.resumed & set(report.moved))}
+    return found

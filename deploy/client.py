@@ -8,6 +8,7 @@ import os
 import subprocess
 import sys
 import time
+import urllib.request
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -174,3 +175,18 @@ async def wait_ready(url: str, seconds: float = 60) -> None:
             if time.monotonic() > deadline:
                 raise
             await asyncio.sleep(0.5)
+
+
+def healthy(address: str, seconds: float = 90, gone=lambda: None) -> None:
+    """Wait until ``address`` answers Streamlit's health check; ``gone()`` names a reason to
+    stop waiting at once (a start script that ended), else None."""
+    deadline = time.monotonic() + seconds
+    while True:
+        try:
+            urllib.request.urlopen(f"{address}/_stcore/health", timeout=2)
+            return
+        except OSError:
+            why = gone()
+            if why or time.monotonic() > deadline:
+                raise RuntimeError(f"{address} did not answer: {why or f'not within {seconds:.0f} s'}")
+            time.sleep(0.5)

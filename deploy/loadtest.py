@@ -4,9 +4,12 @@
     .venv/bin/python deploy/loadtest.py                      # starts the app itself, 30 sessions, 120 s
     .venv/bin/python deploy/loadtest.py --url http://127.0.0.1:8080 --sessions 40 --seconds 300
     .venv/bin/python deploy/loadtest.py --class 150 --seconds 120 --json [--fault kill|database] [--floor] [--clients-cpu 0]
+    .venv/bin/python deploy/loadtest.py --class 150 --hosts 2 [--fault host] --json
 
 ``--class N`` is a class at once (deploy/classload.py): deploy/start.sh started here (two app
-processes behind nginx, on PostgreSQL), N students checking steps, a lecturer's view open.
+processes behind nginx, on PostgreSQL), N students checking steps, a lecturer's view open;
+with ``--hosts H`` the deployment is H app hosts, PostgreSQL and nginx on machines of their
+own (deploy/hosts.py: network namespaces).
 
 Loopback only, and it stops by itself. Each session works one chapter page; on the
 kinetostatics page every answer is checked against the solver run here for that
@@ -133,9 +136,12 @@ def main(argv: list[str] | None = None) -> int:
                         help="warm the server's caches first with six sessions (0: open cold)")
     parser.add_argument("--class", dest="students", type=int, metavar="N",
                         help="a class of N students on deploy/start.sh (deploy/classload.py)")
-    parser.add_argument("--fault", choices=("kill", "database"),
+    parser.add_argument("--fault", choices=("kill", "database", "host"),
                         help="with --class: kill -9 an app process, or stop PostgreSQL for 10 s, "
-                             "half-way through")
+                             "or (with --hosts) kill every process of one app host, half-way through")
+    parser.add_argument("--hosts", type=int, default=0, metavar="H",
+                        help="with --class: H app hosts, PostgreSQL and nginx on machines of their "
+                             "own (network namespaces made here: root)")
     parser.add_argument("--json", action="store_true", help="with --class: end with one JSON line")
     parser.add_argument("--clients-cpu", type=int, metavar="CPU",
                         help="with --class: the simulated phones on this core alone, the deployment "
@@ -144,6 +150,19 @@ def main(argv: list[str] | None = None) -> int:
                         help="with --class: the same class on pages that only store and answer a "
                              "check (bench/floor_class_app.py)")
     args = parser.parse_args(argv)
+    if args.hosts and not args.students:
+        parser.error("--hosts: with --class N")
+    if args.hosts and args.fault in ("kill", "database"):
+        parser.error(f"--fault {args.fault}: on one machine (without --hosts); with --hosts: --fault host")
+    if args.fault == "host" and args.hosts < 2:
+        parser.error("--fault host: with --hosts 2 or more (its students go on on another)")
+    if args.hosts and args.clients_cpu is not None:
+        parser.error("--clients-cpu: on one machine (without --hosts)")
+    if args.hosts:
+        from deploy.hosts import why_not
+
+        if why_not():
+            parser.error(f"--hosts: {why_not()}")
     if args.students:
         return _class(args)
     server = None
@@ -191,7 +210,8 @@ def _class(args) -> int:
     """``--class N``: the figures, and as the last line the JSON the issue asks for."""
     from deploy.classload import class_load
 
-    found = class_load(args.students, args.seconds, args.fault, args.floor, args.clients_cpu)
+    found = class_load(args.students, args.seconds, args.fault, args.floor, args.clients_cpu,
+                       hosts=args.hosts)
     if not args.json:
         for name, value in found.items():
             print(f"{name}: {value}")

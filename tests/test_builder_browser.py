@@ -78,16 +78,22 @@ def drag_point(page, name: str, to: complex) -> None:
 
 
 def click_in(page, grid, x: float, y: float, seen: list) -> bool:
-    """Click (x, y) and say whether the grid took the focus; if not, note in ``seen`` what lay
-    at that point (a header, a toast, another element), for the failure's message."""
+    """Click (x, y) and say whether the grid took the focus (it comes a moment after the
+    click on a loaded machine; a second click on the cell then selected would open its
+    editor); if not, note in ``seen`` what lay at that point (a header, an editor left
+    open, another element), for the failure's message, and Escape whatever it opened."""
     page.mouse.click(x, y)
-    if grid.evaluate("g => g.contains(document.activeElement)"):
+    try:
+        page.wait_for_function("g => g.contains(document.activeElement)",
+                               arg=grid.element_handle(), timeout=3_000)
         return True
-    seen.append("click taken by " + page.evaluate(
-        "([x, y]) => { const e = document.elementFromPoint(x, y); if (!e) return 'nothing';"
-        " const named = e.closest('[data-testid]'); return named ?"
-        " named.getAttribute('data-testid') : e.tagName; }", [x, y]))
-    return False
+    except PlaywrightTimeout:
+        seen.append("click taken by " + page.evaluate(
+            "([x, y]) => { const e = document.elementFromPoint(x, y); if (!e) return 'nothing';"
+            " const named = e.closest('[data-testid], #portal'); return named ?"
+            " (named.getAttribute('data-testid') || named.id) : e.tagName; }", [x, y]))
+        page.keyboard.press("Escape")
+        return False
 
 
 def type_cell(page, header: str, row: int, column: int, text: str, redraws: bool = True) -> None:
