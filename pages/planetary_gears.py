@@ -17,9 +17,9 @@ from ui.benchmarks import speed_panel
 from ui.book import differs, train_changes
 from ui.chapters import page_title
 from ui.docs import method_doc
-from ui.editor_tables import typed_table
+from ui.editor_tables import linked_table, typed_table
 from ui.export import chart, show_table
-from ui.firstpaint import waiting
+from ui.firstpaint import first_run, rerun_whole, waiting
 from ui.fragments import fragment
 from ui.i18n import latex, message, num, t
 from ui.layout import page_columns
@@ -92,16 +92,21 @@ with controls:
     scales_place = st.container()  # U_L, U_v and the pole distance: drawn by the fragment below
 
 with main:
-    with st.container(key="later_meshes"):  # on a phone, after the charts (ui/layout.py)
-        st.markdown(f"**{t('gears.meshes')}**")
-        own = meshes_table(base)
-        table = typed_table("meshes", own, base.id, ("R_a [m]", "R_b [m]"),
-                            name=t("gears.meshes_short"), width="stretch",
-                            disabled=["a", "b"], column_config={
-                                "ring": st.column_config.CheckboxColumn(t("gears.ring"),
-                                                                        help=t("gears.ring_help"))},
-                            loader=lambda rows: as_loaded(base.with_(meshes=meshes_of(rows, base))),
-                            fields={"radii[0]": "R_a [m]", "radii[1]": "R_b [m]", "internal": "ring"})
+    own = meshes_table(base)
+    table_rules = {"name": t("gears.meshes_short"), "column_config": {
+                       "ring": st.column_config.CheckboxColumn(t("gears.ring"), help=t("gears.ring_help"))},
+                   "loader": lambda rows: as_loaded(base.with_(meshes=meshes_of(rows, base))),
+                   "fields": {"radii[0]": "R_a [m]", "radii[1]": "R_b [m]", "internal": "ring"}}
+    # a fresh visit: the meshes' editor (a grid script, the heaviest element here, and above
+    # the charts) after the first chart's paint (ui/firstpaint.py); the link's table meanwhile
+    left_out = first_run()
+    if left_out:
+        table = linked_table("meshes", own, base.id, **table_rules)
+    else:
+        with st.container(key="later_meshes"):  # on a phone, after the charts (ui/layout.py)
+            st.markdown(f"**{t('gears.meshes')}**")
+            table = typed_table("meshes", own, base.id, ("R_a [m]", "R_b [m]"), width="stretch",
+                                disabled=["a", "b"], **table_rules)
     meshes = meshes_of(table, base)
     train: GearTrain = base.with_(inputs=tuple(inputs), meshes=meshes)
     for note in geometry_notes(train):
@@ -109,6 +114,8 @@ with main:
     try:
         solution = solve_train(train)
     except TrainError as exc:
+        if left_out:  # no chart follows to bring the editor
+            rerun_whole()
         st.error(message(exc))
         scale_inputs()
         st.stop()

@@ -110,3 +110,18 @@ def test_the_assur_page_whose_instant_fails_shows_its_groups_at_once():
     at = first_run("pages/assur_groups.py", scene="analitika-2.1", at="140")
     assert at.error and not charts(at)
     assert len(at.dataframe) == 1
+
+
+def test_the_gear_train_draws_first_and_its_meshes_editor_follows():
+    """The meshes' editor sits above the charts on a wide screen: on a fresh visit it waits
+    for the chart's paint (its grid script held the first chart back: issue 83), and the
+    train is solved from the link's table meanwhile — the same table the editor then shows."""
+    at = first_run("pages/planetary_gears.py", scene="zbirka-6.8")
+    assert not at.exception and charts(at)
+    assert len(at.dataframe) == 0
+    shown = at.caption.values
+    rerun(at)
+    assert not at.exception
+    editors = [d for d in at.dataframe if "R_a [m]" in d.value.columns]
+    assert len(editors) == 1  # the meshes' editor, with the whole page
+    assert [c for c in at.caption.values if c in shown] == shown  # the same train solved
