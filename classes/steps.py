@@ -10,12 +10,10 @@ from mechanisms.link import PARAMETER, decode
 from methods.practice import Step
 from methods.practice_steps import steps_for
 
+from .methods import METHODS
 from .store import Class, student, variant_of
 
 # where each method is practised: the page's path, and what the page opens with
-PRACTICE_PAGES = {"compass": ("trajectories", {"view": "compass"}), "plans": ("velocity_plans", {}),
-                  "forces": ("kinetostatics", {}), "lever": ("kinetostatics", {}),
-                  "willis": ("planetary_gears", {}), "balance": ("rotor_balancing", {})}
 
 
 def scene_of(scene: str):
@@ -42,7 +40,7 @@ def practice_link(found: Class, token: str, language: str, url: str | None = Non
     that opens it on the class's scene — or the student's own variant — with the class and
     the student named, so that practice is on. The class page's *Join* and an LTI launch
     send a student there alike."""
-    page, shown = PRACTICE_PAGES[found.method]
+    page, shown = METHODS[found.method].page, METHODS[found.method].link
     params = {"class": found.code, "student": token, "lang": language, **shown}
     if found.variants:
         params["v"] = variant_of(found, student(found.code, token, url)["variant"])

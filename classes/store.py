@@ -36,6 +36,8 @@ from mechanisms.messages import Text
 from methods.practice import finite
 from methods.progress import PRACTICE, REVEALED, TEST, Rules  # (REVEALED: a "Show it" check's diagnosis)
 
+from .methods import METHODS  # (the methods a class may practise: classes.methods)
+
 ROOT = Path(__file__).resolve().parents[1]
 DATA = Path(os.environ.get("MEHANIZMI_DATA", ROOT / "data"))  # the SQLite file's folder
 CODE_LETTERS = CHECK_LETTERS + "34679"  # the variant codes' unambiguous letters, and digits
@@ -44,7 +46,6 @@ LIFETIME_DAYS = int(os.environ.get("MEHANIZMI_CLASS_DAYS", "30"))
 NICKNAME_MAX = 40  # characters
 ANSWER_MAX = 200  # characters of an answer's JSON
 PER_SECOND = 5  # checks a student may send in a second; more are slowed, not refused
-METHODS = ("compass", "plans", "forces", "lever", "willis", "balance")
 FIELDS = ("student", "nickname", "step", "answer", "diagnosis", "term", "try", "time",
           "variant", "check")  # of every try exported, in this order
 

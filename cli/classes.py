@@ -28,7 +28,7 @@ def add(sub) -> None:
     verbs = p.add_subparsers(dest="verb", required=True)
     v = verbs.add_parser("create", help="a new class: its join code and the lecturer's key")
     v.add_argument("scene", help="a preset id, or a builder link's s= text")
-    v.add_argument("--method", required=True, choices=store.METHODS)
+    v.add_argument("--method", required=True, choices=list(store.METHODS))
     v.add_argument("--at", type=arguments.POSITION, help="φ₂ in degrees, or s in metres")
     v.add_argument("--variants", metavar="SET", help="a variant set's code (3.1-S42): each "
                                                      "student who joins gets the next variant")

@@ -8,21 +8,20 @@ from __future__ import annotations
 import streamlit as st
 
 from classes import store
-from classes.store import ClassError, closed_at
+from classes.methods import METHODS
 from classes.steps import practice_link
+from classes.store import ClassError, closed_at
 from exams.codes import parse
 from mechanisms import SceneError
 from mechanisms.link import PARAMETER
 from ui.chapters import CLASSROOM
-from ui.classroom import METHODS, close_sidebar
+from ui.classroom import close_sidebar
 from ui.classview import view
 from ui.i18n import current, message, t
 from ui.joinpanel import MADE, join_panel
 from ui.numbers import number_field, refused_fields
 from ui.scenes import preset_titles
 
-KINDS = {"compass": "linkage", "plans": "linkage", "forces": "linkage", "lever": "linkage",
-         "willis": "gears", "balance": "rotor"}
 
 
 def start() -> None:
@@ -30,8 +29,8 @@ def start() -> None:
     st.write(t("class.intro"))
     method = st.selectbox(t("class.method"), list(METHODS), key="class_method",
                           format_func=lambda m: t(f"class.method_{m}"))
-    titles = preset_titles(KINDS[method], current())
-    scene = st.selectbox(t("class.scene"), list(titles), key=f"class_scene_{KINDS[method]}",
+    titles = preset_titles(METHODS[method].scenes, current())
+    scene = st.selectbox(t("class.scene"), list(titles), key=f"class_scene_{METHODS[method].scenes}",
                          format_func=titles.get)
     link = st.text_input(t("class.link"), key="class_link", placeholder=f"{PARAMETER}=…")
     variants = st.text_input(t("class.variants"), key="class_variants", placeholder="3.1-S42-01K")
@@ -79,8 +78,8 @@ def join(code: str) -> None:
 
 def go(found: store.Class, token: str) -> None:
     """To the method's page, on the class's scene (or this student's variant), practice on."""
-    _, params = practice_link(found, token, current())
-    st.switch_page(METHODS[found.method][0], query_params=params)  # (practice is on there)
+    page, params = practice_link(found, token, current())
+    st.switch_page(f"pages/{page}.py", query_params=params)  # (practice is on there)
 
 
 st.title(f"{CLASSROOM.icon} {t(CLASSROOM.title)}")

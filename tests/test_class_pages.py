@@ -13,7 +13,8 @@ import math
 import pytest
 
 from classes import store
-from classes.steps import PRACTICE_PAGES, steps_of
+from classes.methods import METHODS
+from classes.steps import steps_of
 from ui.i18n import num, t
 from ui.practice import shown_unit
 
@@ -32,7 +33,7 @@ def database(tmp_path, monkeypatch):
 def seated(method: str, **link):
     code, key = store.create(TASKS[method], method)
     token = store.join(code, "Ana")
-    at = page(f"pages/{PRACTICE_PAGES[method][0]}.py", lang="en")
+    at = page(f"pages/{METHODS[method].page}.py", lang="en")
     at.query_params.update({"class": code, "student": token, **link})
     at.run()
     assert not at.exception, at.exception

@@ -12,7 +12,8 @@ from streamlit.runtime.scriptrunner import get_script_run_ctx
 
 from classes import store
 from classes.store import ClassError, NotSaved, OneTry, StoreDown, TestClosed, closed_at
-from classes.steps import PRACTICE_PAGES, practice_link, steps_at
+from classes.methods import METHODS
+from classes.steps import practice_link, steps_at
 from classes.summary import tried
 from figures.plans import plain
 from methods.practice import Step, grade
@@ -21,12 +22,6 @@ from ui.boundary import boundary
 from ui.i18n import message, t
 
 # the practice of each method: its page, its switch's key, the page's state that shows it
-METHODS = {"compass": ("pages/trajectories.py", "pr_compass"),  # (classes.steps: its link)
-           "plans": ("pages/velocity_plans.py", "pr_plans"),
-           "forces": ("pages/kinetostatics.py", "pr_forces"),
-           "lever": ("pages/kinetostatics.py", "pr_lever"),
-           "willis": ("pages/planetary_gears.py", "pr_willis"),
-           "balance": ("pages/rotor_balancing.py", "pr_balance")}
 PAGE = "pages/class.py"
 NOT_SAVED = "_class_not_saved"
 LOCKED = ":material/lock:"  # a test's step tried already, or the test closed: not the store's fault
@@ -47,7 +42,7 @@ def seated_on(page: str) -> bool:
     method: that page shows the class's practice alone, without the projector switch and
     the sidebar's code box (two widgets fewer in each of a class's openings)."""
     memo = _seat()
-    return bool(memo and memo[4]) and PRACTICE_PAGES[memo[4][0].method][0] == page
+    return bool(memo and memo[4]) and METHODS[memo[4][0].method].page == page
 
 
 def waiting_for_store() -> bool:
@@ -88,7 +83,7 @@ def _seat() -> tuple | None:
         except ClassError as exc:
             memo = (code, token, None, message(exc.args[0]), None)
         else:
-            memo = (code, token, METHODS[found.method][1], "", (found, who))
+            memo = (code, token, METHODS[found.method].panel, "", (found, who))
             st.session_state[TRIES] = ((code, token), _this_run(), checks)
         st.session_state["_class_seat"] = memo
     return memo

@@ -13,6 +13,7 @@ import math
 import pandas as pd
 import streamlit as st
 
+from classes.methods import METHODS
 from figures.plans import plain
 from figures.practice import practice_figure
 from figures.raw import RawFigure
@@ -53,11 +54,6 @@ def toggle(key: str) -> bool:
 
 # what a seated student's page shows for each method: its practice key, its sheet's title,
 # whether the steps are drawn
-SEATED = {"compass": ("pr_compass", "practice.sheet_compass", True),
-          "plans": ("pr_plans", "practice.sheet_plans", True),
-          "forces": ("pr_forces", "practice.sheet_forces", True),
-          "lever": ("pr_lever", "", False), "willis": ("pr_willis", "", False),
-          "balance": ("pr_balance", "practice.sheet_rotor", True)}
 
 
 def class_only(*keys: str) -> None:
@@ -77,7 +73,8 @@ def class_only(*keys: str) -> None:
     if seated is None:
         return  # not this page's class, or no such student: the page as it is (its practice switch says why)
     found, steps = classroom.class_steps(seated)
-    key, sheet, drawable = SEATED[found.method]
+    method = METHODS[found.method]
+    key, sheet, drawable = method.panel, method.sheet, method.drawable
     st.caption(t("class.seated", code=found.code)
                + (" · " + t("class.seated_test") if found.test else ""))
     ignored = classroom.fixed_link(found, seated[1])
