@@ -5,13 +5,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # (PostgreSQL: the class store's tests run against a real server they start themselves;
-# nginx: deploy/start.sh is tested as a faculty runs it)
+# nginx: deploy/start.sh is tested as a faculty runs it; iproute2: several machines made of
+# network namespaces, tests/test_across_hosts.py)
 if [ ! -x /usr/bin/chromium ] || ! command -v npm >/dev/null || ! command -v nginx >/dev/null \
-    || ! ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1; then
+    || ! ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1 || ! command -v ip >/dev/null; then
   sudo=""
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
   if command -v apt-get >/dev/null; then
-    wanted="chromium chromium-driver fonts-dejavu-core postgresql nginx-light"
+    wanted="chromium chromium-driver fonts-dejavu-core postgresql nginx-light iproute2"
     # Debian's npm conflicts with a Node.js installed from elsewhere that brings its own npm.
     command -v npm >/dev/null || wanted="$wanted npm"
     $sudo apt-get update -q
