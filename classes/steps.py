@@ -13,8 +13,6 @@ from methods.practice_steps import steps_for
 from .methods import METHODS
 from .store import Class, student, variant_of
 
-# where each method is practised: the page's path, and what the page opens with
-
 
 def scene_of(scene: str):
     """A class's scene from its stored text: a preset id or a builder link's ``s=`` text."""
@@ -40,8 +38,8 @@ def practice_link(found: Class, token: str, language: str, url: str | None = Non
     that opens it on the class's scene — or the student's own variant — with the class and
     the student named, so that practice is on. The class page's *Join* and an LTI launch
     send a student there alike."""
-    page, shown = METHODS[found.method].page, METHODS[found.method].link
-    params = {"class": found.code, "student": token, "lang": language, **shown}
+    method = METHODS[found.method]
+    params = {"class": found.code, "student": token, "lang": language, **method.link}
     if found.variants:
         params["v"] = variant_of(found, student(found.code, token, url)["variant"])
     elif found.scene.startswith(f"{PARAMETER}="):
@@ -50,4 +48,4 @@ def practice_link(found: Class, token: str, language: str, url: str | None = Non
         params["scene"] = found.scene
     if found.at is not None:
         params["at"] = f"{found.at:g}"
-    return page, params
+    return method.page, params

@@ -23,7 +23,6 @@ from ui.numbers import number_field, refused_fields
 from ui.scenes import preset_titles
 
 
-
 def start() -> None:
     """The lecturer's form: what the class practises."""
     st.write(t("class.intro"))

@@ -21,7 +21,6 @@ from methods.progress import Progress, Rules, Try
 from ui.boundary import boundary
 from ui.i18n import message, t
 
-# the practice of each method: its page, its switch's key, the page's state that shows it
 PAGE = "pages/class.py"
 NOT_SAVED = "_class_not_saved"
 LOCKED = ":material/lock:"  # a test's step tried already, or the test closed: not the store's fault

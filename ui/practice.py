@@ -52,10 +52,6 @@ def toggle(key: str) -> bool:
     return st.toggle(t("practice.mode"), key=f"{key}_on", help=t("practice.mode_help"))
 
 
-# what a seated student's page shows for each method: its practice key, its sheet's title,
-# whether the steps are drawn
-
-
 def class_only(*keys: str) -> None:
     """A student seated in a class that practises on this page (one of its practice
     ``keys``) gets the class's practice and nothing else: no readings, tables, book values,
