@@ -25,7 +25,7 @@ from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, show_table
-from ui.firstpaint import first_run, waiting
+from ui.firstpaint import first_run, rerun_whole, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
@@ -180,10 +180,12 @@ with controls:
 
 with main:  # the structure, which φ₂ does not change
     st.caption(title_of(base))
-    counts(base)
+    if not first_run():  # on a fresh visit, after the drawing (ui/firstpaint.py)
+        counts(base)
     try:
         structure = decompose(base)
     except StructureError as exc:
+        rerun_whole()  # (no drawing follows to bring the counts)
         st.error(t("assur.no_structure", reason=message(exc)))
         st.stop()
     st.markdown(t("assur.formula", formula=structure.formula))
@@ -213,6 +215,7 @@ def at_the_instant(base: Scene, tol: float, upto: int) -> None:
         with groups_slot:
             show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
     if problem:
+        rerun_whole()  # (no drawing follows to bring what the first run left out)
         st.error(t("plans.unsolvable", reason=message(problem)))
         return
     surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again

@@ -425,7 +425,7 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
                 book_lever(k, now)
                 method_doc("reduced-mechanism")
 
-    if not practising:  # M_p and F_p are what the construction ends with
+    if not practising and not waiting():  # (what the construction ends with; after the paint)
         with results:
             driving_metrics(k, now)
 

@@ -112,6 +112,29 @@ def test_the_assur_page_whose_instant_fails_shows_its_groups_at_once():
     assert len(at.dataframe) == 1
 
 
+@pytest.mark.parametrize("path, waiting", [("pages/assur_groups.py", 4),  # n, p5, p4, W
+                                           ("pages/kinetostatics.py", 4)])  # M_p three ways, P
+def test_the_counts_and_the_driving_torque_wait_for_the_drawing(path, waiting):
+    """Metrics above the drawing held it back (8 ms each in chromium, and the Assur page's W
+    formula brought KaTeX's 110 kB: issue 83): a fresh visit draws first, the rerun its paint
+    starts brings them."""
+    at = first_run(path)
+    assert not at.exception and charts(at)
+    before, formulas = len(at.metric), len(at.latex)
+    rerun(at)
+    assert not at.exception
+    assert len(at.metric) == before + waiting
+    if path.endswith("assur_groups.py"):
+        assert formulas == 0 and any("W = 3n" in f.value for f in at.latex)
+
+
+def test_an_assur_instant_that_fails_shows_its_counts_at_once():
+    """No drawing follows an instant the mechanism cannot reach: its first run runs again
+    whole at once, so the counts come with the message (analitika-2.1 at φ₂ = 140°)."""
+    at = first_run("pages/assur_groups.py", scene="analitika-2.1", at="140")
+    assert at.error and len(at.metric) == 4
+
+
 def test_the_gear_train_draws_first_and_its_meshes_editor_follows():
     """The meshes' editor sits above the charts on a wide screen: on a fresh visit it waits
     for the chart's paint (its grid script held the first chart back: issue 83), and the
