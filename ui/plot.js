@@ -546,10 +546,13 @@ function keepLabelsInside(gd) {
   const size = gd._fullLayout && gd._fullLayout._size;
   if (!size) return;
   const right = gd.getBoundingClientRect().left + size.l + size.w;
-  for (const text of gd.querySelectorAll(".textpoint text")) {
-    const over = text.getBoundingClientRect().right - right;
-    if (over > 1) text.setAttribute("x", String(Number(text.getAttribute("x")) - over - 2));
-  }
+  // every label measured before any is moved: a move between two measurements made the
+  // browser lay the page out again for the next (a scrub's step paid one layout a label)
+  const texts = [...gd.querySelectorAll(".textpoint text")];
+  const overs = texts.map((text) => text.getBoundingClientRect().right - right);
+  texts.forEach((text, i) => {
+    if (overs[i] > 1) text.setAttribute("x", String(Number(text.getAttribute("x")) - overs[i] - 2));
+  });
 }
 
 // A page's first run in a session leaves out what can wait until its first chart is on the
