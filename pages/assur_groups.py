@@ -34,7 +34,7 @@ from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_start, scene_picker
 from ui.selfcheck import Quantity, answer_box, computed
-from ui.url import seed
+from ui.url import seed, stop
 
 page_title("pages/assur_groups.py")
 CYCLE = 360
@@ -187,7 +187,7 @@ with main:  # the structure, which φ₂ does not change
     except StructureError as exc:
         rerun_whole()  # (no drawing follows to bring the counts)
         st.error(t("assur.no_structure", reason=message(exc)))
-        st.stop()
+        stop()
     st.markdown(t("assur.formula", formula=structure.formula))
     groups_place = st.container()
     groups = len(structure.groups)

@@ -38,7 +38,7 @@ from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_speed, driver_start, scene_picker
 from ui.selfcheck import answer_box, named
-from ui.url import seed
+from ui.url import seed, stop
 
 page_title("pages/kinetostatics.py")
 practice.class_only("pr_forces", "pr_lever")  # a seated student: the class's practice alone
@@ -369,7 +369,7 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
         k = at_instant(scene, st.session_state["inertia"])
     except (Unsolvable, StructureError) as exc:
         st.error(t("plans.unsolvable", reason=message(exc)))
-        st.stop()
+        stop()
     now = 0  # k holds the instant only
     if not np.isfinite(k.driving[now]):
         st.warning(t("forces.singular"))

@@ -27,7 +27,7 @@ from ui.numbers import number_field
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import answer_box, named
-from ui.url import seed
+from ui.url import seed, stop
 
 page_title("pages/planetary_gears.py")
 practice.class_only("pr_willis")  # a seated student: the class's practice alone
@@ -118,7 +118,7 @@ with main:
             rerun_whole()
         st.error(message(exc))
         scale_inputs()
-        st.stop()
+        stop()
     st.caption(t("gears.dof", dof=solution.dof, inputs=len(train.inputs)))
     if solution.status == "solved" and solution.message:
         st.info(message(solution.message))  # the input at rest: the ratios still hold
@@ -126,7 +126,7 @@ with main:
         st.error(message(solution.message))
         chart(schematic_figure(train, t("gears.schematic"), t, look()), f"{train.id}-train", key="train")
         scale_inputs()
-        st.stop()
+        stop()
 
 
 def intercepts(u_l: float, u_v: float, h: float) -> None:

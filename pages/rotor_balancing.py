@@ -29,7 +29,7 @@ from ui.numbers import as_given, bound_link, last_value, link_option, number_fie
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import answer_box, named
-from ui.url import seed
+from ui.url import seed, stop
 
 
 def legend() -> tuple[str, str]:
@@ -130,7 +130,7 @@ except BalanceError as exc:
         rerun_whole()
     with main:
         st.error(message(exc))
-    st.stop()
+    stop()
 with main:
     for note in result.notes:
         st.info(message(note))
@@ -182,7 +182,7 @@ def results_table(result: Balance, as_in_book: bool) -> Rows:
 with main:
     if practising:  # the corrections stay hidden: the student finds them
         practice.panel(practice_steps.balance(result), "pr_balance", t("practice.sheet_rotor"))
-        st.stop()  # (app.py still ends the run)
+        stop()  # (app.py still ends the run)
     results = st.container()  # under the table; filled after the polygons are sent
     names = [f"U{i + 1}" for i in range(len(rotor.masses))]
     us = [m.mass * m.radius * unit(m.angle) * MM for m in rotor.masses]  # kg·mm

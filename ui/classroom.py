@@ -20,6 +20,7 @@ from methods.practice import Step, grade
 from methods.progress import Progress, Rules, Try
 from ui.boundary import boundary
 from ui.i18n import message, t
+from ui.url import stop
 
 PAGE = "pages/class.py"
 NOT_SAVED = "_class_not_saved"
@@ -143,7 +144,7 @@ def resumed(seated: tuple[str, str], steps: list[Step], rules: Rules | None = No
             found, _, checks = store.resume(*seated)
     except StoreDown:
         wait_for_store(t("class.store_down"))
-        st.stop()
+        stop()
     return Progress.of(tried([c for c in checks if c["step"] in known]), rules or found.rules)
 
 

@@ -30,6 +30,8 @@ from typing import NoReturn
 
 import streamlit as st
 
+from ui.url import stop
+
 PAGE = "first_paint_page"  # the page this run draws (its URL path)
 SEEN = "first_paint_seen"  # the pages that have finished a run in this session
 CHARTED = "first_paint_charted"  # this run has sent a chart
@@ -63,7 +65,7 @@ def finish() -> NoReturn:
     and its chart's paint never brought the whole page."""
     if PAGE in st.session_state:  # (run through app.py)
         end_run()
-    st.stop()
+    stop()
 
 
 def rerun_whole() -> None:

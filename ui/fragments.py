@@ -15,6 +15,7 @@ from ui.crank import live
 from ui.firstpaint import whole_run_owed
 from ui.i18n import run_language
 from ui.scenes import driver_position, scene_download
+from ui.url import link_sent
 
 F = TypeVar("F", bound=Callable)
 
@@ -32,7 +33,7 @@ def fragment(func: F) -> F:
         if whole_run_owed():
             st.rerun(scope="app")
         run_language()
-        with boundary():
+        with boundary(), link_sent():
             return func(*args, **kwargs)
 
     return st.fragment(run)  # type: ignore[return-value]

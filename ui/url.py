@@ -8,7 +8,9 @@ editor's rows) travel as compact rows of numbers.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+import contextlib
+from collections.abc import Callable, Iterator, Sequence
+from typing import NoReturn
 
 import pandas as pd
 import streamlit as st
@@ -17,11 +19,58 @@ from mechanisms.reader import LARGEST
 from mechanisms.typed import Refused, parse
 
 
+PENDING = "_link_pending"  # this run's changes to the link, while a run gathers them
+
+
 def url_set(key: str, text: str) -> None:
-    """``?key=text`` in the page's link, written only when it changes: each write sends the
-    browser a message, and a page writes its link on every rerun."""
-    if st.query_params.get(key) != text:
-        st.query_params[key] = text
+    """``?key=text`` in the page's link, when it changes. Inside ``link_sent`` (every run of
+    the app) the run's changes go to the browser together as it ends: written one by one,
+    each was a message the browser handled on its own — 14 on a fresh kinetostatics page,
+    about 20 ms of chromium's time before its first chart (issue 83). Outside it (a page's
+    script run alone, as AppTest runs one) a change is written at once."""
+    pending = st.session_state.get(PENDING)
+    if pending is None:
+        if st.query_params.get(key) != text:
+            st.query_params[key] = text
+    elif pending.get(key, st.query_params.get(key)) != text:
+        pending[key] = text
+
+
+def _send() -> None:
+    """The gathered changes, in one message."""
+    pending = st.session_state.get(PENDING) or {}
+    changed = {k: v for k, v in pending.items() if st.query_params.get(k) != v}
+    pending.clear()
+    if changed:
+        st.query_params.update(changed)
+
+
+@contextlib.contextmanager
+def link_sent() -> Iterator[None]:
+    """Around a whole run (app.py) or a fragment's run (ui.fragments): the link's changes
+    gathered, and sent in one message as the run ends, or fails. A fragment that a whole
+    run calls gathers into the run's changes. A run that stops must stop through ``stop``
+    (after a stop Streamlit sends nothing more); one that reruns writes its link again."""
+    if PENDING in st.session_state:
+        yield
+        return
+    st.session_state[PENDING] = {}
+    try:
+        yield
+    except Exception:  # (an error, said by ui.boundary; not a stop or a rerun)
+        _send()
+        raise
+    else:
+        _send()
+    finally:
+        st.session_state.pop(PENDING, None)
+
+
+def stop() -> NoReturn:
+    """``st.stop()``, with the link's changes sent first: once a stop is asked for, Streamlit
+    raises at the next message instead of sending it, so ``link_sent`` could not."""
+    _send()
+    st.stop()
 
 
 LINK_KEYS = "_link_keys"  # session: every key this page reads from its link
