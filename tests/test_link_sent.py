@@ -15,11 +15,12 @@ ROOT = Path(__file__).resolve().parents[1]
 def gathered():
     import streamlit as st
 
-    from ui.url import link_sent, stop, url_set
+    from ui.url import link_sent, stop, url_set, url_value
 
     with link_sent():
         url_set("a", "1")
-        st.session_state["seen_a"] = st.query_params.get("a")  # not sent yet
+        st.session_state["seen_a"] = st.query_params.get("a")  # not sent yet ...
+        st.session_state["meant_a"] = url_value("a")  # ... but what the run means
         with link_sent():  # a fragment the run calls: its changes join the run's
             url_set("b", "2")
         st.session_state["seen_b"] = st.query_params.get("b")
@@ -40,6 +41,28 @@ def test_a_run_s_changes_are_sent_together_as_it_ends_and_none_is_lost(end, sent
     at.session_state["end"] = end
     at.run()
     assert at.session_state["seen_a"] is None and at.session_state["seen_b"] is None
+    assert at.session_state["meant_a"] == "1"
+    assert dict(at.query_params.items()) == sent
+
+
+def dropped():
+    import streamlit as st
+
+    from ui.url import link_sent, url_drop, url_replace, url_set
+
+    with link_sent():
+        url_set("a", "1")
+        url_set("b", "2")
+        url_drop("a")  # taken out after its change was gathered: not put back at the end
+        if st.session_state.get("replace"):
+            url_replace({"class": "X"})  # the whole link replaced: b goes with it
+
+
+@pytest.mark.parametrize("replace, sent", [(False, {"b": "2"}), (True, {"class": "X"})])
+def test_a_key_taken_out_or_a_link_replaced_is_not_put_back_as_the_run_ends(replace, sent):
+    at = AppTest.from_function(dropped)
+    at.session_state["replace"] = replace
+    at.run()
     assert dict(at.query_params.items()) == sent
 
 

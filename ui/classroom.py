@@ -20,7 +20,7 @@ from methods.practice import Step, grade
 from methods.progress import Progress, Rules, Try
 from ui.boundary import boundary
 from ui.i18n import message, t
-from ui.url import stop
+from ui.url import stop, url_replace, url_value
 
 PAGE = "pages/class.py"
 NOT_SAVED = "_class_not_saved"
@@ -173,7 +173,7 @@ def fixed_link(found: store.Class, token: str) -> list[str]:
     session, not only the one that found them — and the page's link set to the class's
     own, so that a reload or a shared link practises the class."""
     try:
-        _, own = practice_link(found, token, st.query_params.get("lang", ""))
+        _, own = practice_link(found, token, url_value("lang", ""))
     except StoreDown:  # (the note waits for the next run)
         return []
     given = {k: st.query_params.get_all(k) for k in st.query_params}
@@ -181,7 +181,7 @@ def fixed_link(found: store.Class, token: str) -> list[str]:
                      if k not in ("lang", "class", "student") and v != [own.get(k)])
     said = st.session_state.setdefault("_class_fixed", {})  # kept: the link is clean after
     if ignored:
-        st.query_params.from_dict({k: v for k, v in own.items() if v})
+        url_replace({k: v for k, v in own.items() if v})
         said[found.code] = ignored
     return said.get(found.code, [])
 
@@ -373,4 +373,4 @@ def sidebar_join() -> None:
                           placeholder="ABC123", max_chars=12, autocomplete="off")
     code = st.session_state.pop("_class_join", "")
     if code:
-        st.switch_page(PAGE, query_params={"join": code, "lang": st.query_params.get("lang", "")})
+        st.switch_page(PAGE, query_params={"join": code, "lang": url_value("lang", "")})

@@ -25,7 +25,7 @@ from figures.raw import RawFigure
 from mechanisms.schema import Scene
 from mechanisms.typed import Refused
 from ui.numbers import link_note
-from ui.url import linked, said_of_link, url_set
+from ui.url import linked, said_of_link, url_drop, url_set
 
 STEP_DEG = 5.0  # 72 frames a turn: smooth to scrub, small enough to send
 FRAMES = 36  # about this many frames along a slider's range (a link's length: every 5th step)
@@ -134,7 +134,7 @@ def slider_control(sliders: dict[str, Ranged], remembered: str, group: str, aske
     key = st.session_state[remembered] = key if key in sliders else first
     link_note(remembered, label, key)
     if key == first:
-        st.query_params.pop(remembered, None)
+        url_drop(remembered)
     else:
         url_set(remembered, key)
     shown = sliders[key]

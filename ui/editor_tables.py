@@ -29,7 +29,7 @@ from mechanisms.reader import key_parts
 from mechanisms.sketch import COLUMNS
 from ui.i18n import current, message, t
 from ui.numbers import Refused, check, literal, refusal, shown
-from ui.url import refuse_table, table_refused, table_to_url, url_table
+from ui.url import refuse_table, table_refused, table_to_url, url_drop, url_table
 
 TEXT_COLUMNS = {"point", "label", "first", "second", "through", "type", "form", "side"}
 WHOLE_COLUMNS = {"member", "p", "q"}  # member numbers: the editor's own whole-number cells
@@ -262,7 +262,7 @@ def forget_table(key: str) -> None:
         st.session_state.pop(name, None)
     # a new editor: the old one's edits live in the browser, which sends them again
     st.session_state[f"_{key}_resets"] = st.session_state.get(f"_{key}_resets", 0) + 1
-    st.query_params.pop(key, None)
+    url_drop(key)
 
 
 def restart_table(key: str, scene: str, table: pd.DataFrame) -> None:

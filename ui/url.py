@@ -36,6 +36,26 @@ def url_set(key: str, text: str) -> None:
         pending[key] = text
 
 
+def url_value(key: str, default: str | None = None) -> str | None:
+    """The link's value of ``key`` as this run leaves it: its gathered change, if any."""
+    pending = st.session_state.get(PENDING) or {}
+    return pending[key] if key in pending else st.query_params.get(key, default)
+
+
+def url_drop(key: str) -> None:
+    """``?key=`` out of the page's link, with any change the run had gathered for it (else
+    the run's end would put it back)."""
+    (st.session_state.get(PENDING) or {}).pop(key, None)
+    st.query_params.pop(key, None)
+
+
+def url_replace(values: dict[str, str]) -> None:
+    """The page's whole link replaced by ``values``: what the run had gathered goes with the
+    old one."""
+    (st.session_state.get(PENDING) or {}).clear()
+    st.query_params.from_dict(values)
+
+
 def _send() -> None:
     """The gathered changes, in one message."""
     pending = st.session_state.get(PENDING) or {}
@@ -214,7 +234,7 @@ def table_to_url(key: str, table: pd.DataFrame, default: pd.DataFrame) -> None:
     """Put the edited table into the link, or take it out when it is the scene's own."""
     rows = table.dropna()
     if rows.shape == default.shape and (rows.to_numpy(dtype=float) == default.to_numpy(dtype=float)).all():
-        st.query_params.pop(key, None)
+        url_drop(key)
         return
     url_set(key, ";".join(",".join(f"{float(v):.10g}" for v in row)
                           for row in rows.itertuples(index=False)))
