@@ -29,11 +29,11 @@ from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, print_button, show_table
-from ui.firstpaint import waiting
+from ui.firstpaint import rerun_whole, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
-from ui.numbers import bound_link, last_value, link_switch, number_field
+from ui.numbers import bound_link, bound_select_slider, last_value, link_switch, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_speed, driver_start, scene_picker
@@ -346,10 +346,8 @@ with controls:
     base = scene_picker(default="predavanja-kinetostatika")
     seed(defaults(base), st.session_state["scene"])
     position = st.container()  # φ₂ (or s): drawn by the fragment below
-    loaded = load_inputs(base, driver_speed(base))
-    bound_link("steps", t("forces.steps"), options=list(RESOLUTIONS))
-    steps = st.select_slider(t("forces.steps"), options=RESOLUTIONS, key="steps",
-                             bind="query-params")
+    loaded = load_inputs(base, driver_speed(base, wait=True))
+    steps = bound_select_slider(t("forces.steps"), RESOLUTIONS, key="steps", wait=True)
     below = st.container()  # the scene's download, then the answer box
 
 
@@ -368,6 +366,7 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
         instant(scene)  # raises with the reason when the mechanism cannot be in this position
         k = at_instant(scene, st.session_state["inertia"])
     except (Unsolvable, StructureError) as exc:
+        rerun_whole()  # (no chart follows to bring the controls a first run holds back)
         st.error(t("plans.unsolvable", reason=message(exc)))
         stop()
     now = 0  # k holds the instant only

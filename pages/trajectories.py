@@ -45,7 +45,8 @@ from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
-from ui.numbers import bound_choices, bound_link, bound_slider, link_note, link_option
+from ui.numbers import (bound_choices, bound_link, bound_select_slider, bound_slider, link_note,
+                        link_option)
 from ui.present import look
 from ui.scenes import length_range, length_slider, scene_download, scene_picker
 from ui.selfcheck import answer_box, computed, named
@@ -339,9 +340,8 @@ def resolution_table(base: Scene, scene: Scene, fine: Motion, points: list[str],
 with controls:
     base = scene_picker()
     seed(defaults(base), st.session_state["scene"])
-    bound_link("res", t("traj.resolution"), options=list(RESOLUTIONS))
-    steps = st.select_slider(t("traj.resolution"), RESOLUTIONS, value=360, key="res",
-                             bind="query-params")
+    steps = bound_select_slider(t("traj.resolution"), RESOLUTIONS, key="res", value=360,
+                                wait=True)
     views = {"steps": "traj.view_steps", "smooth": "traj.view_smooth", "compass": "traj.view_compass"}
     view = link_option(st.radio, t("traj.view"), list(views), "view",
                       format_func=lambda v: t(views[v]), horizontal=True)
@@ -364,7 +364,7 @@ def drawn(base: Scene, steps: int, view: str, points: list[str]) -> None:
         if base.travel:
             scene = base.with_(travel=travel_sliders(base.travel))
         else:
-            omega = bound_slider(t("traj.omega"), -50.0, 50.0, step=0.5, key="omega")
+            omega = bound_slider(t("traj.omega"), -50.0, 50.0, step=0.5, key="omega", wait=True)
             scene = base.with_(speed=omega)
         with st.expander(t("traj.lengths")):
             scene = scene.with_(lengths=length_sliders(base))

@@ -223,7 +223,7 @@ with controls:
     base = scene_picker()
     seed(defaults(base), st.session_state["scene"])
     position = st.container()  # φ₂ (or s): drawn by the fragment below
-    driven = driver_speed(base)
+    driven = driver_speed(base, wait=True)
     scales = scale_inputs()
     below = st.container()  # the scene's download, then the answer box
 

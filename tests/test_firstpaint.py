@@ -148,3 +148,54 @@ def test_the_gear_train_draws_first_and_its_meshes_editor_follows():
     editors = [d for d in at.dataframe if "R_a [m]" in d.value.columns]
     assert len(editors) == 1  # the meshes' editor, with the whole page
     assert [c for c in at.caption.values if c in shown] == shown  # the same train solved
+
+
+@pytest.mark.parametrize("path, held, link", [
+    ("pages/trajectories.py", {"omega", "res"}, {"omega": "7", "res": "72"}),
+    ("pages/kinetostatics.py", {"omega", "steps"}, {"omega": "7", "steps": "72"}),
+    ("pages/velocity_plans.py", {"omega"}, {"omega": "7"})])
+def test_secondary_sliders_wait_for_the_paint_and_the_chart_is_drawn_with_their_values(
+        path, held, link):
+    """Each slider above the chart cost the first paint about 15 ms (issue 83): ω₂ and the
+    cycle's resolution come with the whole run. The first run draws with the values the
+    sliders then show — the link's here — so the whole run's charts are the same."""
+    at = first_run(path, **link)
+    assert not at.exception and charts(at)
+    sliders = lambda: {w.key: w.value for w in [*at.slider, *at.select_slider] if w.key}  # noqa: E731
+    assert not held & set(sliders())
+    first = {key: c["figure"] for key, c in charts(at).items()}
+    rerun(at)
+    assert not at.exception
+    assert {key: float(sliders()[key]) for key in held} == {k: float(v) for k, v in link.items()}
+    assert {key: c["figure"] for key, c in charts(at).items() if key in first} == first
+
+
+def held_slider():
+    import streamlit as st
+
+    from ui.firstpaint import PAGE, SEEN, settle
+    from ui.numbers import bound_select_slider, bound_slider
+
+    st.session_state[PAGE] = "p"
+    st.session_state.setdefault(SEEN, frozenset())
+    if st.session_state.get("seed"):
+        st.session_state.setdefault("omega", 12.5)
+    omega = bound_slider("ω₂", -50.0, 50.0, step=0.5, key="omega", wait=True)
+    res = bound_select_slider("res", [12, 72, 360], key="res", value=360, wait=True)
+    st.session_state.setdefault("used", []).append((omega, res))
+    settle()  # (no chart: a first run that held a slider runs again, whole)
+    st.session_state[SEEN] = frozenset({"p"})
+
+
+@pytest.mark.parametrize("seed, link, used", [(True, {}, (12.5, 360)),
+                                              (True, {"omega": "3", "res": "72"}, (3.0, 72))])
+def test_a_held_slider_reads_as_its_widget_and_a_run_without_a_chart_runs_again_whole(
+        seed, link, used):
+    at = AppTest.from_function(held_slider)
+    at.session_state["seed"] = seed
+    at.query_params.update(link)
+    at.run()
+    assert not at.exception
+    # the first run held both (no widget) and, drawing no chart, ran again whole at once
+    assert at.session_state["used"] == [used, used]
+    assert at.slider(key="omega").value == used[0] and at.select_slider(key="res").value == used[1]

@@ -8,13 +8,13 @@ tables, metrics and panels held its first chart back by about 0.4 s (docs/perfor
 So a page's first run in a session (a fresh visit, a link opened, or the first time a
 student turns to that page) sends the widgets and the charts, and leaves out what waits
 (``if not waiting(): …`` after a chart, ``if not first_run(): …`` before one): tables,
-metrics, equations, downloads, the answer and speed panels. Widgets are never left out
-(Streamlit forgets a widget a run does not draw), but for an input table's editor where it
-sits under or beside the chart (the rotor's masses, the builder's tables): on a fresh visit
-nothing is typed in it yet, so the page reads the link's table alone
-(``ui.editor_tables.linked_table``) and the editor comes with the whole run. A first run
-that left something out before its chart and then drew none reruns at once, whole
-(``rerun_whole``).
+metrics, equations, downloads, the answer and speed panels. Widgets are left out only
+where their value is known without them, since nothing can have moved them yet: an input
+table's editor under or beside the chart (the rotor's masses, the builder's tables), read
+from the link alone (``ui.editor_tables.linked_table``), and the secondary sliders (ω₂, a
+cycle's resolution: ``hold``), read as the widget would show them. They come with the whole
+run. A first run that left something out before its chart and then drew none reruns at
+once, whole (``rerun_whole`` where it stops, ``settle`` where it ends).
 
 The first chart drawn in the browser reports its paint (``ui/plot.js``, trigger
 "painted"), and the rerun that starts sends the whole page. Any later run of the page is
@@ -36,13 +36,35 @@ PAGE = "first_paint_page"  # the page this run draws (its URL path)
 SEEN = "first_paint_seen"  # the pages that have finished a run in this session
 CHARTED = "first_paint_charted"  # this run has sent a chart
 PAINTED = "first_paint_painted"  # a chart reported its paint: the run it starts is owed whole
+HELD = "first_paint_held"  # this first run left a control out (``hold``)
 
 
 def begin_run(page: str) -> None:
     """Called by app.py before page ``page`` (its URL path) runs."""
     st.session_state[PAGE] = page
     st.session_state[CHARTED] = False
+    st.session_state[HELD] = False
     st.session_state.pop(PAINTED, None)  # a whole run pays what a paint asked for
+
+
+def hold() -> bool:
+    """True where a secondary control (ω₂, a cycle's resolution) may wait for the first
+    chart's paint, its value read as the widget would show it: each slider above the chart
+    cost the first paint about 15 ms in chromium (docs/performance.md). Only in a page's
+    first run; one that then draws no chart runs again whole (``settle``)."""
+    if not first_run():
+        return False
+    st.session_state[HELD] = True
+    return True
+
+
+def settle() -> None:
+    """Called by app.py when a page's run has ended normally: a first run that held a
+    control back and drew no chart (whose paint would have brought it) runs again, whole.
+    A page that stops in its first run calls ``rerun_whole`` first."""
+    if first_run() and st.session_state.get(HELD) and not st.session_state.get(CHARTED):
+        whole()
+        st.rerun(scope="app")
 
 
 def end_run() -> None:

@@ -28,6 +28,7 @@ import streamlit as st
 from streamlit.errors import StreamlitAPIException
 
 from mechanisms.typed import NUMBER, Refused, check, comma_is_decimal, parse  # noqa: F401 (the pages' parser)
+from ui.firstpaint import hold
 from ui.i18n import current, t
 from ui.url import link_default, link_value, linked, said_of_link, url_choice, url_set, url_toggle
 
@@ -238,11 +239,26 @@ def link_note(key: str, label: str, value, where=None) -> None:
     (where or st).warning(t("link.refused", why=refusal(label, kept[0])), icon=":material/link_off:")
 
 
-def bound_slider(label: str, low, high, *, key: str, where=None, **options):
+def bound_slider(label: str, low, high, *, key: str, where=None, wait: bool = False, **options):
     """``st.slider`` kept in the link (``bind="query-params"``), its link value read first
-    by ``bound_link``."""
+    by ``bound_link``. ``wait``: a secondary control, left out of a page's first run when
+    its value is known without it (``ui.firstpaint.hold``)."""
     bound_link(key, label, low, high)
+    if wait and key in st.session_state and hold():
+        return st.session_state[key]  # (the link's, or the page's seeded value: the widget's)
     return (where or st).slider(label, low, high, key=key, bind="query-params", **options)
+
+
+def bound_select_slider(label: str, options: list, *, key: str, value=None, wait: bool = False,
+                        **kwargs):
+    """``st.select_slider`` kept in the link, its link value read first by ``bound_link``;
+    ``value`` is its first value, ``wait`` as for ``bound_slider``."""
+    bound_link(key, label, options=list(options))
+    if wait and hold():  # (the link's, or the page's seeded value, else the first: the widget's)
+        return st.session_state.get(key, options[0] if value is None else value)
+    if value is not None:
+        kwargs["value"] = value
+    return st.select_slider(label, options, key=key, bind="query-params", **kwargs)
 
 
 def is_refused(key: str) -> bool:

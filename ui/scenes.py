@@ -223,10 +223,11 @@ def length_slider(base: Scene, number: int, **options) -> float:
     return st.slider(label, lo, hi, step=step, format="%.4f", key=f"L{number}", **options)
 
 
-def driver_speed(scene: Scene) -> Scene:
-    """The driver's speed slider (``omega`` in the URL): ω₂, or v for a slider."""
+def driver_speed(scene: Scene, wait: bool = False) -> Scene:
+    """The driver's speed slider (``omega`` in the URL): ω₂, or v for a slider; ``wait`` as
+    for ``ui.numbers.bound_slider``."""
     if scene.driver.kind == "rotating":
-        speed = bound_slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega")
+        speed = bound_slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega", wait=wait)
     else:
-        speed = bound_slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega")
+        speed = bound_slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", wait=wait)
     return scene.with_(speed=speed)
