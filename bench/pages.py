@@ -36,11 +36,12 @@ QUIET = 0.02  # s after each rerun: what a server does after its script has ende
 
 
 async def _opened(url: str, name: str, key: str, last) -> tuple[Session, Report, object]:
-    """A session on page ``name``, its page run and one warm rerun done."""
+    """A session on page ``name``, its first run, its whole run and one warm rerun done."""
     report = Report()
     session = Session(url, name, "", report)
     ws = await websockets.connect(url, subprotocols=["streamlit"], max_size=None)
-    await session.run(ws)
+    await session.run(ws)  # a fresh visit: what waits for the first chart's paint is left out
+    await session.run(ws)  # the whole page, as the paint brings it (ω₂ among the sliders)
     await session.run(ws, [(session.widgets[key][0], last)])
     report.times.clear()
     return session, report, ws
