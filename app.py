@@ -5,7 +5,7 @@ import streamlit as st
 from ui.boundary import boundary
 from ui.chapters import navigation_pages
 from ui.classroom import seated_on, sidebar_join
-from ui.firstpaint import begin_run, end_run, settle
+from ui.firstpaint import begin_run, end_run, rerun_whole
 from ui.i18n import language_picker
 from ui.present import projector_switch
 from ui.url import link_sent
@@ -24,6 +24,6 @@ with boundary(), link_sent():  # no traceback on any page: one sentence, and the
     begin_run(page.url_path)
     try:
         page.run()
-        settle()  # (a first run that held a control back and drew no chart: again, whole)
+        rerun_whole()  # (a first run that held something back and drew no chart: again)
     finally:  # (st.stop() and a rerun leave run() by an exception)
         end_run()

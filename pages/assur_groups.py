@@ -25,7 +25,7 @@ from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, show_table
-from ui.firstpaint import first_run, rerun_whole, waiting
+from ui.firstpaint import hold, rerun_whole, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
@@ -180,7 +180,7 @@ with controls:
 
 with main:  # the structure, which φ₂ does not change
     st.caption(title_of(base))
-    if not first_run():  # on a fresh visit, after the drawing (ui/firstpaint.py)
+    if not hold():  # on a fresh visit, after the drawing (ui/firstpaint.py)
         counts(base)
     try:
         structure = decompose(base)
@@ -211,7 +211,7 @@ def at_the_instant(base: Scene, tol: float, upto: int) -> None:
         current, problem = instant(scene, tol), None
     except (Unsolvable, StructureError) as exc:
         current, problem = None, exc
-    if problem or not first_run():  # on a fresh visit, after the drawing (ui/firstpaint.py)
+    if problem or not hold():  # on a fresh visit, after the drawing (ui/firstpaint.py)
         with groups_slot:
             show_table(groups_table(structure), f"{scene.id}-groups.csv", "csv_groups")
     if problem:

@@ -29,7 +29,7 @@ from ui.cache import preset
 from ui.chapters import BUILDER, CHAPTERS
 from ui.editor_tables import MARK, frame_of, marked, marks, refused, rows_of
 from ui.export import chart
-from ui.firstpaint import first_run, rerun_whole, waiting
+from ui.firstpaint import hold, rerun_whole, waiting
 from ui.fragments import fragment
 from ui.i18n import current, latex, message, t, title_of
 from ui.numbers import number_field, refusal
@@ -116,7 +116,7 @@ def edited_tables(doc: dict) -> dict[str, list[dict]]:
     out: dict = {}
     tabs = st.tabs([t(TABS[n][0]) for n in TABLES], key="build_tab", on_change=builder.fold)
     language = current()
-    left_out = first_run()
+    left_out = hold()
     for tab, name in zip(tabs, TABLES):
         if not tab.open or left_out:
             out[name] = rows[name]

@@ -19,7 +19,7 @@ from ui.chapters import page_title
 from ui.docs import method_doc
 from ui.editor_tables import linked_table, typed_table
 from ui.export import chart, show_table
-from ui.firstpaint import first_run, rerun_whole, waiting
+from ui.firstpaint import hold, rerun_whole, waiting
 from ui.fragments import fragment
 from ui.i18n import latex, message, num, t
 from ui.layout import page_columns
@@ -99,8 +99,7 @@ with main:
                    "fields": {"radii[0]": "R_a [m]", "radii[1]": "R_b [m]", "internal": "ring"}}
     # a fresh visit: the meshes' editor (a grid script, the heaviest element here, and above
     # the charts) after the first chart's paint (ui/firstpaint.py); the link's table meanwhile
-    left_out = first_run()
-    if left_out:
+    if hold():
         table = linked_table("meshes", own, base.id, **table_rules)
     else:
         with st.container(key="later_meshes"):  # on a phone, after the charts (ui/layout.py)
@@ -114,8 +113,7 @@ with main:
     try:
         solution = solve_train(train)
     except TrainError as exc:
-        if left_out:  # no chart follows to bring the editor
-            rerun_whole()
+        rerun_whole()  # (no chart follows to bring the editor)
         st.error(message(exc))
         scale_inputs()
         stop()

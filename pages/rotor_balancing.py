@@ -21,7 +21,7 @@ from ui.book import differs, rotor_changes
 from ui.chapters import page_title
 from ui.editor_tables import linked_table, typed_table
 from ui.export import Rows, chart, print_button, show_table
-from ui.firstpaint import first_run, rerun_whole, waiting
+from ui.firstpaint import hold, rerun_whole, waiting
 from ui.fragments import fragment
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
@@ -111,12 +111,11 @@ with main:
     practising = practice.toggle("pr_balance")
 # a fresh visit: the masses' editor (a grid script, the heaviest element here) after the
 # polygons' paint, which it held back by a fifth (ui/firstpaint.py); the link's table meanwhile
-left_out = first_run() and not practising
 own = table_of(base)
 table_rules = {"name": t("rotor.masses_short"), "rows_fixed": False,
                "loader": lambda rows: as_loaded(base.with_(masses=masses_of(rows))),
                "fields": dict(zip(("mass", "radius", "angle", "x"), COLUMNS))}
-if left_out:
+if not practising and hold():
     table = linked_table("masses", own, base.id, **table_rules)
 else:
     with editor:
@@ -126,8 +125,7 @@ rotor = rotor_from_inputs(base, table, typed)
 try:
     result = balance(rotor)
 except BalanceError as exc:
-    if left_out:  # no polygon follows to bring the editor
-        rerun_whole()
+    rerun_whole()  # (no polygon follows to bring the editor)
     with main:
         st.error(message(exc))
     stop()
@@ -225,8 +223,7 @@ with main:
                                    for p, f in result.corrections.items()],
                                   rotor.planes, t("rotor.tab_3d"), t, look()), f"{rotor.id}-3d",
                   key="3d")
-    if left_out:  # (no polygon sent: a static rotor's V tab)
-        rerun_whole()
+    rerun_whole()  # (no polygon sent: a static rotor's V tab)
     if not waiting():  # on a fresh visit, after the polygons' paint (ui/firstpaint.py)
         with results:
             st.header(t("rotor.results"))

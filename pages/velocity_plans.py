@@ -26,7 +26,7 @@ from ui.chapters import page_title
 from ui.crank import crank_frames, cranks, task_turn
 from ui.docs import method_doc
 from ui.export import Rows, chart, print_button, show_table
-from ui.firstpaint import first_run, waiting
+from ui.firstpaint import hold, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
@@ -139,7 +139,7 @@ def plans_tab(scene: Scene, base: Scene, plans: Plans, scales: dict[str, float],
     """The step's equations, both plans and the mechanism, the step's and members' tables."""
     steps = plans.velocity.steps
     index = step - 1
-    later = first_run()  # on a fresh visit the charts below come first (ui/firstpaint.py)
+    later = hold()  # on a fresh visit the charts below come first (ui/firstpaint.py)
     if not later:
         st.latex(latex(steps[index].latex))
         st.latex(latex(plans.acceleration.steps[index].latex))

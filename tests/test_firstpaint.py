@@ -173,7 +173,7 @@ def test_secondary_sliders_wait_for_the_paint_and_the_chart_is_drawn_with_their_
 def held_slider():
     import streamlit as st
 
-    from ui.firstpaint import PAGE, SEEN, settle
+    from ui.firstpaint import PAGE, SEEN, rerun_whole
     from ui.numbers import bound_select_slider, bound_slider
 
     st.session_state[PAGE] = "p"
@@ -183,7 +183,7 @@ def held_slider():
     omega = bound_slider("ω₂", -50.0, 50.0, step=0.5, key="omega", wait=True)
     res = bound_select_slider("res", [12, 72, 360], key="res", value=360, wait=True)
     st.session_state.setdefault("used", []).append((omega, res))
-    settle()  # (no chart: a first run that held a slider runs again, whole)
+    rerun_whole()  # (no chart: a first run that held a slider runs again, whole)
     st.session_state[SEEN] = frozenset({"p"})
 
 

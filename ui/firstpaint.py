@@ -7,14 +7,14 @@ tables, metrics and panels held its first chart back by about 0.4 s (docs/perfor
 
 So a page's first run in a session (a fresh visit, a link opened, or the first time a
 student turns to that page) sends the widgets and the charts, and leaves out what waits
-(``if not waiting(): …`` after a chart, ``if not first_run(): …`` before one): tables,
+(``if not waiting(): …`` after a chart, ``if not hold(): …`` before one): tables,
 metrics, equations, downloads, the answer and speed panels. Widgets are left out only
 where their value is known without them, since nothing can have moved them yet: an input
 table's editor under or beside the chart (the rotor's masses, the builder's tables), read
 from the link alone (``ui.editor_tables.linked_table``), and the secondary sliders (ω₂, a
-cycle's resolution: ``hold``), read as the widget would show them. They come with the whole
-run. A first run that left something out before its chart and then drew none reruns at
-once, whole (``rerun_whole`` where it stops, ``settle`` where it ends).
+cycle's resolution), read as the widget would show them. They come with the whole run. A
+first run that held something back and then drew no chart runs again at once, whole
+(``rerun_whole``: app.py asks as the page's run ends, a page where it stops).
 
 The first chart drawn in the browser reports its paint (``ui/plot.js``, trigger
 "painted"), and the rerun that starts sends the whole page. Any later run of the page is
@@ -36,7 +36,7 @@ PAGE = "first_paint_page"  # the page this run draws (its URL path)
 SEEN = "first_paint_seen"  # the pages that have finished a run in this session
 CHARTED = "first_paint_charted"  # this run has sent a chart
 PAINTED = "first_paint_painted"  # a chart reported its paint: the run it starts is owed whole
-HELD = "first_paint_held"  # this first run left a control out (``hold``)
+HELD = "first_paint_held"  # this first run left something out before its chart (``hold``)
 
 
 def begin_run(page: str) -> None:
@@ -48,23 +48,15 @@ def begin_run(page: str) -> None:
 
 
 def hold() -> bool:
-    """True where a secondary control (ω₂, a cycle's resolution) may wait for the first
-    chart's paint, its value read as the widget would show it: each slider above the chart
-    cost the first paint about 15 ms in chromium (docs/performance.md). Only in a page's
-    first run; one that then draws no chart runs again whole (``settle``)."""
+    """True where what the page draws next may wait for the first chart's paint (a table, a
+    metric, an editor, a secondary slider read as the widget would show it: each slider
+    above the chart cost the first paint about 15 ms in chromium, docs/performance.md).
+    Only in a page's first run, where it is noted: one that then draws no chart runs again
+    whole (``rerun_whole``)."""
     if not first_run():
         return False
     st.session_state[HELD] = True
     return True
-
-
-def settle() -> None:
-    """Called by app.py when a page's run has ended normally: a first run that held a
-    control back and drew no chart (whose paint would have brought it) runs again, whole.
-    A page that stops in its first run calls ``rerun_whole`` first."""
-    if first_run() and st.session_state.get(HELD) and not st.session_state.get(CHARTED):
-        whole()
-        st.rerun(scope="app")
 
 
 def end_run() -> None:
@@ -91,10 +83,10 @@ def finish() -> NoReturn:
 
 
 def rerun_whole() -> None:
-    """Asked where a page's first run has left something out before its chart: if it drew
-    none (a drawing that does not close), no paint will bring the rest, so the page runs
-    again at once, whole. After a chart, nothing."""
-    if waiting() or not first_run():
+    """Asked by app.py as a page's run ends, and by a page before it stops: a first run that
+    held something back (``hold``) and drew no chart (a drawing that does not close) gets no
+    paint to bring the rest, so the page runs again at once, whole. Otherwise, nothing."""
+    if waiting() or not first_run() or not st.session_state.get(HELD):
         return
     whole()
     st.rerun(scope="app")
