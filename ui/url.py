@@ -22,6 +22,11 @@ from mechanisms.typed import Refused, parse
 PENDING = "_link_pending"  # this run's changes to the link, while a run gathers them
 
 
+def _pending() -> dict[str, str]:
+    """This run's gathered changes (none outside ``link_sent``)."""
+    return st.session_state.get(PENDING) or {}
+
+
 def url_set(key: str, text: str) -> None:
     """``?key=text`` in the page's link, when it changes. Inside ``link_sent`` (every run of
     the app) the run's changes go to the browser together as it ends: written one by one,
@@ -38,27 +43,27 @@ def url_set(key: str, text: str) -> None:
 
 def url_value(key: str, default: str | None = None) -> str | None:
     """The link's value of ``key`` as this run leaves it: its gathered change, if any."""
-    pending = st.session_state.get(PENDING) or {}
+    pending = _pending()
     return pending[key] if key in pending else st.query_params.get(key, default)
 
 
 def url_drop(key: str) -> None:
     """``?key=`` out of the page's link, with any change the run had gathered for it (else
     the run's end would put it back)."""
-    (st.session_state.get(PENDING) or {}).pop(key, None)
+    _pending().pop(key, None)
     st.query_params.pop(key, None)
 
 
 def url_replace(values: dict[str, str]) -> None:
     """The page's whole link replaced by ``values``: what the run had gathered goes with the
     old one."""
-    (st.session_state.get(PENDING) or {}).clear()
+    _pending().clear()
     st.query_params.from_dict(values)
 
 
 def _send() -> None:
     """The gathered changes, in one message."""
-    pending = st.session_state.get(PENDING) or {}
+    pending = _pending()
     changed = {k: v for k, v in pending.items() if st.query_params.get(k) != v}
     pending.clear()
     if changed:
