@@ -27,6 +27,7 @@ from classes.steps import steps_of
 from lti import grades, keys
 from lti import store as lti
 from lti.launch import AGS, CLAIM, DEEP, LINEITEM_SCOPE
+from lti.launch import _keys as launch_keys
 from lti import routes
 from lti.routes import ROUTES
 from mechanisms import SceneError, load_preset, preset_ids
@@ -143,6 +144,10 @@ def tool(url, tmp_path, monkeypatch):
     monkeypatch.setenv("MEHANIZMI_DATABASE_URL", url)
     monkeypatch.setenv("MEHANIZMI_LTI_KEY", str(tmp_path / "lti" / "tool-key.pem"))
     monkeypatch.setattr(grades, "_TOKENS", {})  # (platform ids repeat from one store to the next)
+    # each test's platform is a new one, but its port may be an earlier test's: the tool's
+    # keys, kept per key address for the process, would be that platform's, and PyJWT
+    # fetches them again for an unknown key id only after a 30-s cooldown (a 502 in the suite)
+    launch_keys.cache_clear()
     platform = Platform()
     platform.register(url)
     client = TestClient(Starlette(routes=ROUTES), base_url="https://tool.example")
