@@ -29,7 +29,7 @@ from ui.firstpaint import hold, rerun_whole, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current as current_language, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
-from ui.numbers import bound_link, number_field
+from ui.numbers import bound_select_slider, bound_slider, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_start, scene_picker
@@ -173,9 +173,8 @@ with controls:
          st.session_state["scene"])
     position = st.container()  # φ₂ (or s): drawn by the fragment below
     tolerances = [*TOLERANCES[:3], 1e-10, TOLERANCES[3]]
-    bound_link("tol", t("assur.tol"), options=tolerances)
-    tol = st.select_slider(t("assur.tol"), options=tolerances,
-                           key="tol", format_func=lambda v: sci(v, 0), bind="query-params")
+    tol = bound_select_slider(t("assur.tol"), tolerances, key="tol",
+                              format_func=lambda v: sci(v, 0))
     below = st.container()  # the scene's download, then the answer box
 
 with main:  # the structure, which φ₂ does not change
@@ -194,8 +193,7 @@ with main:  # the structure, which φ₂ does not change
     upto = groups
     if groups > 1:
         st.session_state["upto"] = min(st.session_state.get("upto", groups), groups)
-        bound_link("upto", t("assur.upto"), 1, groups, options=list(range(1, groups + 1)))
-        upto = st.slider(t("assur.upto"), 1, groups, key="upto", bind="query-params")
+        upto = bound_slider(t("assur.upto"), 1, groups, key="upto")
 
 
 @fragment

@@ -33,7 +33,7 @@ from ui.firstpaint import rerun_whole, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, scaled_title, sci, t, title_of
 from ui.layout import page_columns
-from ui.numbers import bound_link, bound_select_slider, last_value, link_switch, number_field
+from ui.numbers import bound_select_slider, bound_slider, last_value, link_switch, number_field
 from ui.present import look
 from ui.progress import measured
 from ui.scenes import driver_speed, driver_start, scene_picker
@@ -160,8 +160,7 @@ def construction_steps(k: Kinetostatics, now: int) -> None:
     count = len(construction.steps)
     st.write(t("forces.steps_intro"))
     st.session_state["fstep"] = min(max(int(st.session_state.get("fstep", 1)), 1), count)
-    bound_link("fstep", t("forces.step"), 1, count, options=list(range(1, count + 1)))
-    number = st.slider(t("forces.step"), 1, count, key="fstep", bind="query-params")
+    number = bound_slider(t("forces.step"), 1, count, key="fstep")
     step = construction.steps[number - 1]
     members = ", ".join(str(m) for m in sorted(step.members))
     what = {"moment": t("forces.step_moment", members=members, point=step.about),

@@ -25,7 +25,7 @@ from ui.firstpaint import hold, rerun_whole, waiting
 from ui.fragments import fragment
 from ui.i18n import message, num, scaled_title, t
 from ui.layout import page_columns
-from ui.numbers import as_given, bound_link, last_value, link_option, number_field
+from ui.numbers import as_given, bound_slider, last_value, link_option, number_field
 from ui.present import look
 from ui.scenes import scene_download, scene_picker
 from ui.selfcheck import answer_box, named
@@ -298,9 +298,8 @@ def accuracy() -> None:
     polygons): moving it reruns this alone, not the inputs, the balance and the polygons.
     The slider is drawn on every run (Streamlit forgets a widget a run leaves out)."""
     with precision_slot:
-        bound_link("precision", t("rotor.precision"), 0.1, 2.0)
-        precision = st.slider(t("rotor.precision"), 0.1, 2.0, 0.5, 0.1, key="precision",
-                              bind="query-params")
+        precision = bound_slider(t("rotor.precision"), 0.1, 2.0, value=0.5, step=0.1,
+                                 key="precision")
     with main:  # (a fragment may only write where it wrote in the last full run: every run)
         section = st.empty()
     if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)

@@ -45,7 +45,7 @@ from ui.firstpaint import waiting
 from ui.fragments import fragment
 from ui.i18n import current, message, num, t, title_of
 from ui.layout import page_columns
-from ui.numbers import (bound_choices, bound_link, bound_select_slider, bound_slider, link_note,
+from ui.numbers import (bound_choices, bound_select_slider, bound_slider, link_note,
                         link_option)
 from ui.present import look
 from ui.scenes import length_range, length_slider, scene_download, scene_picker
@@ -266,8 +266,7 @@ def paths_tab(base: Scene, scene: Scene, construction: Motion, steps: int, view:
 def field_tab(scene: Scene, fine: Motion, steps: int, point: str, asked: bool | str) -> None:
     """The tine's path in the field (the linkage and the travel) with the chart's own control
     of the travel, and the drive's figures."""
-    bound_link("cycles", t("traj.cycles"), 1, 6, options=list(range(1, 7)))
-    cycles = st.slider(t("traj.cycles"), 1, 6, 3, key="cycles", bind="query-params")
+    cycles = bound_slider(t("traj.cycles"), 1, 6, value=3, key="cycles")
     times, field = field_path(fine, scene.travel, point, cycles)
     control = travel_control(scene, steps, cycles, point, asked) if steps <= SMOOTH_FRAMES else None
     chart(field_figure(times, field, fine.points[point].z, point, steps,

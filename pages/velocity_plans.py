@@ -30,7 +30,7 @@ from ui.firstpaint import hold, waiting
 from ui.fragments import Places, at_position, fragment
 from ui.i18n import current, latex, message, num, sci, t, title_of
 from ui.layout import page_columns
-from ui.numbers import bound_link, number_field
+from ui.numbers import bound_slider, number_field
 from ui.present import look
 from ui.scenes import driver_speed, driver_start, scene_picker
 from ui.selfcheck import answer_box, named
@@ -77,9 +77,7 @@ def scale_inputs() -> dict[str, float]:
         labels = {"L": "plans.UL", "v": "plans.Uv", "a": "plans.Ua"}
         scales = {k: number_field(t(label), f"U{k}", minimum=1e-9, url=True)
                   for k, label in labels.items()}
-        bound_link("prec", t("plans.precision"), 0.1, 2.0)
-        precision = st.slider(t("plans.precision"), 0.1, 2.0, step=0.1, key="prec",
-                              bind="query-params")
+        precision = bound_slider(t("plans.precision"), 0.1, 2.0, step=0.1, key="prec")
     return {"L": scales["L"], "v": scales["v"], "a": scales["a"], "precision_cm": precision / 10}
 
 
@@ -254,9 +252,7 @@ def at_the_instant(driven: Scene, scales: dict[str, float]) -> None:
         st.session_state["step"] = len(steps)
     step = len(steps)
     if len(steps) > 1:  # a crank alone has one step and nothing to step through
-        bound_link("step", t("plans.step"), 1, len(steps), options=list(range(1, len(steps) + 1)))
-        step = st.slider(t("plans.step"), 1, len(steps), value=len(steps), key="step",
-                         bind="query-params")
+        step = bound_slider(t("plans.step"), 1, len(steps), value=len(steps), key="step")
     tab_plans, tab_loops, tab_accuracy = st.tabs(
         [t("plans.tab_plans"), t("plans.tab_analytic"), t("plans.tab_accuracy")],
         key="tab", on_change="rerun")

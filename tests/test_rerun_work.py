@@ -137,3 +137,46 @@ def test_no_page_shows_a_bare_expression_so_the_server_compiles_without_magic():
                         and not isinstance(statement.value, (ast.Call, ast.Await))):
                     shown.append(f"{path.name}:{statement.lineno}")
     assert not shown
+
+
+def test_every_slider_says_its_first_value_so_streamlit_reads_no_session_state_for_it():
+    """A slider without ``value`` makes Streamlit read every key of the session state to
+    learn whether it is a range (0.3 ms a slider): every slider of the app's own code says
+    its first value, or is made by ``ui.numbers.slider``, which says ``low``."""
+    import ast
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    unsaid, seen = [], 0
+    for path in [root / "app.py", *root.glob("ui/*.py"), *root.glob("pages/*.py")]:
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                    and node.func.attr == "slider"):
+                seen += 1
+                if len(node.args) < 4 and not any(k.arg == "value" for k in node.keywords):
+                    unsaid.append(f"{path.relative_to(root)}:{node.lineno}")
+    assert seen >= 3 and not unsaid, unsaid
+
+
+def test_a_slider_made_by_the_helper_starts_and_links_as_streamlits_own_would():
+    """``ui.numbers.slider`` says ``low`` as the first value: the one Streamlit takes when
+    none is given, and the default a bound link leaves out — and a value the session holds
+    still wins, moved or not."""
+    def page():
+        import streamlit as st
+
+        from ui.numbers import slider
+        st.session_state["shown"] = (slider("fresh", 2.0, 9.0, key="fresh"),
+                                     st.slider("own", 2.0, 9.0, key="own"),
+                                     slider("held", 2.0, 9.0, key="held"))
+
+    at = AppTest.from_function(page)
+    at.session_state["held"] = 4.5
+    at.run()
+    assert not at.exception, [e.message for e in at.exception]
+    assert at.session_state["shown"] == (2.0, 2.0, 4.5)
+    fresh, own = at.slider(key="fresh").proto, at.slider(key="own").proto
+    assert list(fresh.default) == list(own.default) == [2.0]  # (the link leaves this out)
+    at.slider(key="fresh").set_value(3.0).run()
+    assert at.session_state["shown"] == (3.0, 2.0, 4.5)
+

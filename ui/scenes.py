@@ -19,7 +19,7 @@ from mechanisms.writer import to_text
 from ui.cache import preset
 from ui.chapters import page_for
 from ui.i18n import current, message, note_of, source_of, t, title_of
-from ui.numbers import bound_link, bound_slider, link_option
+from ui.numbers import bound_link, bound_slider, link_option, slider
 
 UPLOADED = "upload"
 
@@ -202,8 +202,7 @@ def driver_position(base: Scene) -> Scene:
             return base  # the file's φ₂ exactly: radians(degrees(φ)) may differ in the last bit
         return base.with_(at=math.radians(at))
     low, high = base.driver.range()
-    bound_link("at", t("plans.s"), low, high)
-    at = st.slider(t("plans.s"), low, high, step=round(high / 300, 4), key="at", bind="query-params")
+    at = bound_slider(t("plans.s"), low, high, step=round(high / 300, 4), key="at")
     return base.with_(at=at)
 
 
@@ -220,7 +219,7 @@ def length_slider(base: Scene, number: int, **options) -> float:
     label = t("traj.length", link="".join(member.axis), member=number)
     if options.get("bind"):
         bound_link(f"L{number}", label, lo, hi)
-    return st.slider(label, lo, hi, step=step, format="%.4f", key=f"L{number}", **options)
+    return slider(label, lo, hi, step=step, format="%.4f", key=f"L{number}", **options)
 
 
 def driver_speed(scene: Scene, wait: bool = False) -> Scene:
