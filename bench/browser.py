@@ -112,10 +112,14 @@ SCRUB = """([k, charts]) => new Promise((resolve) => {
   range.dispatchEvent(new Event('input'));
 })"""
 # The scrub's floor (issue 83): bare Plotly drawing the same figures, in the same order, at
-# the chart's size, in a blank page of its own (nothing of Streamlit's around it, and a
-# Plotly whose caches of measured labels are as cold as the scrub's were) — from
-# Plotly.react to the frame that paints it, as SCRUB times the first chart. What the scrub
-# adds to that is ours: the control, the frame's figure assembled, the page around the chart.
+# the chart's size — from Plotly.react to the frame that paints it, as SCRUB times the first
+# chart. Drawn twice: in a blank page of its own, and in bare Streamlit's page (the floor
+# app's, a div of its own under its small chart). The second is the scrub's floor, as bare
+# Streamlit's page is the first chart's: in any Streamlit page JavaScript's array copies
+# (slice, concat: Plotly's walk over a trace's attributes is made of them) run about six
+# times slower than in a blank page (docs/performance.md), and no page of the app escapes
+# that. What the scrub adds to it is ours: the control, the frame's figure assembled, the
+# page around the chart.
 SCRUBBED_FIGURES = """() => JSON.stringify(window.__scrubbed.map(([gd, figure]) => ({
   data: figure.data, layout: {...figure.layout, width: gd.clientWidth, height: gd.clientHeight}})),
   (key, value) => ArrayBuffer.isView(value) ? Array.from(value) : value)"""
@@ -135,19 +139,39 @@ PLOTLY_REDRAW = """(figures) => new Promise(async (resolve) => {
   times.sort((a, b) => a - b);
   resolve(times[Math.floor(times.length / 2)]);
 })"""
+# a div for PLOTLY_REDRAW in bare Streamlit's page, under its chart, and the page's bundle
+# loaded as a plain script (a Plotly of its own: its label caches as cold as the scrub's)
+IN_STREAMLIT = """(bundle) => new Promise((resolve) => {
+  const gd = document.createElement('div');
+  gd.id = 'gd';
+  document.querySelector('[data-testid="stMainBlockContainer"]').appendChild(gd);
+  const script = document.createElement('script');
+  script.src = bundle;
+  script.onload = resolve;
+  document.head.appendChild(script);
+})"""
 
 
-def plotly_redraw(page) -> float:
-    """The scrub's floor: median ms of bare Plotly redrawing the figures ``page``'s scrub drew
-    into its first chart, in a blank page (``PLOTLY_REDRAW``)."""
+def plotly_redraw(page, floor_url: str) -> tuple[float, float]:
+    """The scrub's floors: median ms of bare Plotly redrawing the figures ``page``'s scrub
+    drew into its first chart (``PLOTLY_REDRAW``), in a blank page and in bare Streamlit's
+    page (``floor_url``)."""
     figures = page.evaluate(SCRUBBED_FIGURES)
     bundle = page.evaluate(BUNDLE)
-    blank = page.context.new_page()
-    blank.set_content(f'<script src="{bundle}"></script><div id="gd"></div>')
-    blank.wait_for_function("() => window.Plotly")
-    ms = blank.evaluate(f"(text) => ({PLOTLY_REDRAW})(JSON.parse(text))", figures)
-    blank.close()
-    return ms
+    times = []
+    for url in (None, floor_url):
+        other = page.context.new_page()
+        if url is None:
+            other.set_content(f'<script src="{bundle}"></script><div id="gd"></div>')
+        else:
+            other.goto(url)
+            other.wait_for_selector(".js-plotly-plot", timeout=60_000)
+            other.wait_for_timeout(1000)
+            other.evaluate(IN_STREAMLIT, bundle)
+        other.wait_for_function("() => window.Plotly")
+        times.append(other.evaluate(f"(text) => ({PLOTLY_REDRAW})(JSON.parse(text))", figures))
+        other.close()
+    return times[0], times[1]
 
 
 LOADED = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
@@ -162,11 +186,13 @@ SCRUBBED = [("velocity_plans", None), ("assur_groups?scene=triad-full-turn", Non
             ("trajectories?scene=zbirka-1.3", "In the field")]
 
 
-def scrub(page, url: str, tab: str | None) -> tuple[float, float, float, float, float]:
+def scrub(page, url: str, tab: str | None, floor_url: str
+          ) -> tuple[float, float, tuple[float, float], float, float]:
     """Medians (ms) of a φ₂ (or length, or drive) step redrawn in the browser, to the first
-    chart painted and to all; Plotly's own redraw of the first chart's same figures (the
-    scrub's floor); the ms from the first touch of the control to the frames there (one
-    rerun); and the frames' size in kB."""
+    chart painted and to all; Plotly's own redraw of the first chart's same figures in a
+    blank page and in bare Streamlit's (``plotly_redraw``: the scrub's floor); the ms from
+    the first touch of the control to the frames there (one rerun); and the frames' size in
+    kB."""
     page.goto(url)
     if tab:
         page.get_by_role("tab", name=tab).click(timeout=60_000)
@@ -179,7 +205,7 @@ def scrub(page, url: str, tab: str | None) -> tuple[float, float, float, float, 
     size = page.evaluate(FRAME_BYTES) / 1e3  # as sent: Plotly decodes typed arrays in place
     charts = page.locator(".mehanizmi-crank").count()
     times = [page.evaluate(SCRUB, [k, charts]) for k in range(1, CHANGES + 1)]
-    plotly = plotly_redraw(page)
+    plotly = plotly_redraw(page, floor_url)
     return (statistics.median(t[0] for t in times), statistics.median(t[1] for t in times),
             plotly, first, size)
 
@@ -320,15 +346,17 @@ def table() -> str:
             rows += ["", f"| page | φ₂ (trajectories: a link's length, or the tedder's R_t) "
                      "scrubbed in the browser "
                      f"→ first chart painted, ms (median "
-                     f"of {CHANGES}) | Plotly's own redraw of the same figures, ms | ÷ Plotly "
+                     f"of {CHANGES}) | Plotly's own redraw of the same figures in bare "
+                     "Streamlit's page, ms | ÷ that | the same in a blank page, ms "
                      "| → all its charts, ms | first touch → frames there (one "
-                     "rerun), ms | frames, kB |", "|---|---:|---:|---:|---:|---:|---:|"]
+                     "rerun), ms | frames, kB |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
+            floor_url = f"http://127.0.0.1:{floor_port}/trajectories?lang=en"
             for name, tab in SCRUBBED:
                 url = f"http://127.0.0.1:{port}/{name}{'&' if '?' in name else '?'}lang=en"
-                first, every, plotly, touch, size = scrub(page, url, tab)
+                first, every, (blank, bare), touch, size = scrub(page, url, tab, floor_url)
                 shown = f"{name}, {tab}" if tab else name
-                rows.append(f"| {shown} | {first:.0f} | {plotly:.0f} | {first / plotly:.2f}× "
-                            f"| {every:.0f} | {touch:.0f} | {size:.0f} |")
+                rows.append(f"| {shown} | {first:.0f} | {bare:.0f} | {first / bare:.2f}× "
+                            f"| {blank:.0f} | {every:.0f} | {touch:.0f} | {size:.0f} |")
             context.close()
             browser = p.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
                                         args=["--no-sandbox", "--disable-gpu",
