@@ -16,7 +16,6 @@ from figures.synthesis import found_figure, synthesis_figure, three_positions_fi
 from mechanisms import SceneError, parse_scene, preset_ids
 from mechanisms.link import PARAMETER, encode
 from mechanisms.messages import value_text
-from mechanisms.typed import comma_is_decimal
 from mechanisms.reader import Reader
 from mechanisms.synthesis import SynthesisTask, build_task
 from solvers import Motion, solve
@@ -31,7 +30,7 @@ from ui.cache import preset
 from ui.chapters import SYNTHESIS
 from ui.editor_tables import restart_table, typed_table
 from ui.export import chart
-from ui.i18n import current, message, num, t, title_of
+from ui.i18n import decimal_comma, message, num, t, title_of
 from ui.numbers import link_option, number_field, refused_fields
 from ui.scenes import link_choice
 
@@ -67,7 +66,7 @@ def turning(scene_text: str) -> Motion:
 def counted(n: int) -> str:
     """A count as the page's language groups its digits (a narrow space in Serbian, where
     the comma is the decimal sign)."""
-    return value_text(n, t, comma_is_decimal(current()))
+    return value_text(n, t, decimal_comma())
 
 
 def task_of(points: pd.DataFrame, timing: str, step: float, max_length: float,

@@ -14,6 +14,10 @@ here takes a wait or some script off the way to that chart; none of them saves b
   ``st-key-num_…`` containers, which shows digits, the decimal separator and, on Android,
   a minus. iOS's decimal pad has no minus, so there a field that takes negative values
   (``num_any_``) keeps the full keyboard.
+- A Serbian page's sliders write their values with a decimal comma, as every other number
+  of the page: Streamlit writes them with a point in any language. The page says its mark
+  in each whole run (``ui.i18n.mark_decimal``), so a page with no chart (an unsolvable
+  position) is rewritten as well; the charts' script did this before, only where it drew.
 - The page's frame (``ui/frame.css``: captions dark enough, a phone's order of columns, the
   builder's sticky drawing) is a style sent once a visit, where it was an element of every
   run of every page. It closes the body (``FRAME``), not the head: Streamlit's own styles
@@ -34,14 +38,34 @@ ROOT = Path(__file__).resolve().parents[1]
 # read once: every page's HTML carries it
 LOADER = (ROOT / "ui" / "plotly_loader.js").read_text(encoding="utf-8")
 FRAME = f'<style>\n{(ROOT / "ui" / "frame.css").read_text(encoding="utf-8")}</style>'
-KEYBOARD = """new MutationObserver(() => {
+# One observer of the page for the head's small fixes, each a rewrite of what Streamlit drew:
+# - the phone keyboard of a number field (see above);
+# - a Serbian page's sliders: Streamlit writes their values and ends ("3.58") with a point
+#   whatever the page's language, and the page's decimal mark is said by a style element
+#   each whole run writes (ui.i18n.mark_decimal); rewritten before the browser paints, so no
+#   point flickers, and written back when the page turns English (the slider is the same
+#   element then, and React leaves its unchanged value as it was).
+FIXES = """(() => {
+const POINT = [/^([\u2212\\-+]?\\d*)\\.(\\d+)/, "$1,$2"];  // 3.58 → 3,58
+const COMMA = [/^([\u2212\\-+]?\\d*),(\\d+)/, "$1.$2"];  // and back, on a page turned English
+const SLIDER_TEXT = "[data-testid='stSliderThumbValue'], [data-testid='stSliderTickBar']";
+new MutationObserver(() => {
   const ios = /iPhone|iPad|iPod/.test(navigator.userAgent);
   for (const box of document.querySelectorAll(
       "[class*='st-key-num_'] input:not([inputmode])")) {
     const signed = box.closest("[class*='st-key-num_any_']");
     box.setAttribute("inputmode", signed && ios ? "text" : "decimal");
   }
-}).observe(document.documentElement, {childList: true, subtree: true});"""
+  const mark = document.querySelector("style[data-mehanizmi-decimal]");
+  const [number, mended] = mark && mark.dataset.mehanizmiDecimal === "," ? POINT : COMMA;
+  for (const box of document.querySelectorAll(SLIDER_TEXT)) {
+    const walk = document.createTreeWalker(box, NodeFilter.SHOW_TEXT);
+    for (let node = walk.nextNode(); node; node = walk.nextNode()) {
+      if (number.test(node.nodeValue)) node.nodeValue = node.nodeValue.replace(number, mended);
+    }
+  }
+}).observe(document.documentElement, {childList: true, subtree: true, characterData: true});
+})();"""
 
 
 def basic_bundle(static: Path = ROOT / "static") -> Path | None:
@@ -63,7 +87,7 @@ def head(base_path: str, static: Path = ROOT / "static") -> str:
     """The tags for a page's head; ``base_path`` is Streamlit's ``server.baseUrlPath``."""
     base = json.dumps(base_url(base_path))
     server = (f"window.__streamlit = {{...window.__streamlit, "
-              f"BACKEND_BASE_URL: new URL({base}, location.href).href}};\n{KEYBOARD}")
+              f"BACKEND_BASE_URL: new URL({base}, location.href).href}};\n{FIXES}")
     script = chart_script(static)
     fetched = ("" if script is None
                else f'<link rel="modulepreload" href="app/static/{script.name}">')

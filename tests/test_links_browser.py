@@ -40,3 +40,25 @@ def test_phi2_from_a_refused_link_is_the_task_s_own(app_url, browser):
     thumbs = page.locator("[data-testid='stSliderThumbValue']").all_inner_texts()
     assert f"{own:.2f}" in thumbs, (own, thumbs)
     page.close()
+
+
+THUMBS = "() => [...document.querySelectorAll(\"[data-testid='stSliderThumbValue']\")].map(e => e.textContent)"
+
+
+def test_a_serbian_page_without_a_chart_writes_its_sliders_with_a_comma_and_english_with_a_point(
+        app_url, browser):
+    """The sliders' values follow the page's decimal mark where no chart is drawn (task 2.1's
+    four-bar cannot be assembled at 140.5°): it was the charts' script that rewrote them,
+    so such a page showed "140.50" beside "φ₂ = 140,5°". Turned English, the same sliders
+    are written back with a point (they stayed "140,50")."""
+    page = browser.new_page()
+    page.goto(f"{app_url}/velocity_plans?lang=sr&scene=analitika-2.1&at=140.5&omega=-7.5")
+    page.wait_for_selector("[data-testid='stAlertContentError']", timeout=60_000)
+    page.wait_for_function(f"() => ({THUMBS})().length >= 2", timeout=30_000)  # (the whole run)
+    wait_idle(page)
+    assert page.locator(".js-plotly-plot").count() == 0
+    assert page.evaluate(THUMBS)[:2] == ["140,50", "-7,50"]
+    page.locator("[data-testid='stSidebar'] [data-testid='stSelectbox']").first.click()
+    page.get_by_role("option", name="English").click()
+    page.wait_for_function(f"() => ({THUMBS})().includes('140.50')", timeout=30_000)
+    assert page.evaluate(THUMBS)[:2] == ["140.50", "-7.50"]

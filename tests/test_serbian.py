@@ -9,8 +9,8 @@ display values) and the charts' own texts (titles, legends, labels). A chart's t
 hover numbers are the browser's (Plotly's ``separators``: tests/test_phone.py reads them);
 its toolbar's tooltips are Plotly's, in the locale the chart names (read here: the page's
 language, whose words are checked). The number boxes' texts (ui/numbers.py) are read too.
-A slider's own number is Streamlit's, with a point in every language (docs/i18n.md). The
-practice CSV's header and diagnosis words are read as well.
+A slider's own number is Streamlit's, rewritten in the browser (tests/test_phone.py and
+tests/test_links_browser.py read it; docs/i18n.md). The practice CSV's header and diagnosis words are read as well.
 """
 
 from __future__ import annotations
@@ -305,3 +305,63 @@ def test_the_toolbar_and_the_practice_csv_speak_serbian(language, monkeypatch):
     assert table.iloc[0, 6] == " | ".join(t(f"practice.word_{d}", language)
                                           for d in ("sense", "ok"))
     assert "." in table.iloc[0, 3] or "e" in table.iloc[0, 3]  # numbers keep a decimal point
+
+
+def test_the_decimal_mark_is_one_rule_for_every_surface_that_writes_a_number():
+    """``ui.i18n.decimal_comma`` decides the mark of every number the app writes: the texts
+    (``num``, ``decimals``, ``latex``, ``sci``, a solver's sentence), a table's cells, a
+    chart's ``separators``, and the mark each whole run gives the page's head for its
+    sliders. No module decides it again: every ``startswith("sr")`` left in the app picks
+    words, not a decimal mark, and is named here."""
+    import ast
+
+    from mechanisms.messages import Text
+    from ui.i18n import decimal_comma, decimals, latex, message, num, sci
+
+    for language, mark in (("sr", ","), ("sr-cyrl", ","), ("en", ".")):
+        assert decimal_comma(language) is (mark == ",")
+        assert num(0.25, language=language) == f"0{mark}25"
+        assert decimals("U_v = 0.5 m/s", language) == f"U_v = 0{mark}5 m/s"
+        assert latex("0.5", language) == ("0{,}5" if mark == "," else "0.5")
+        assert sci(3.6e-16, language=language) == f"3{mark}6e-16"
+        assert f"0{mark}5" in message(Text("num.below", field="x", text="-1", limit=0.5),
+                                      language)
+
+    def page(language):
+        import streamlit as st
+
+        from figures.raw import RawFigure
+        from ui.export import chart, dataframe
+        from ui.i18n import mark_decimal
+        st.session_state["lang"] = language
+        mark_decimal()
+        dataframe([{"x [m]": 0.25}], hide_index=True)
+        fig = RawFigure()
+        fig.add_raw([{"type": "scatter", "x": [0, 1], "y": [0, 1]}])
+        chart(fig, "f", key="f")
+
+    for language, mark in (("sr", ","), ("en", ".")):
+        at = AppTest.from_function(page, args=(language,))
+        at.run()
+        assert not at.exception, [e.message for e in at.exception]
+        assert f'data-mehanizmi-decimal="{mark}"' in at.get("html")[0].proto.body
+        assert at.dataframe[0].value["x [m]"].tolist() == [0.25 if mark == "." else "0,25"]
+        spec = json.loads(at.get("bidi_component")[0].proto.bytes)
+        assert spec["separators"] == (",." if mark == "," else None)
+
+    words = {("ui/i18n.py", "default_language"), ("ui/i18n.py", "counted"),
+             ("ui/i18n.py", "in_language"), ("ui/docs.py", "path_of"),
+             ("mechanisms/typed.py", "comma_is_decimal")}
+    found = set()
+    for path in [ROOT / "app.py", *ROOT.glob("ui/*.py"), *ROOT.glob("pages/*.py"),
+                 ROOT / "mechanisms" / "typed.py"]:
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for function in ast.walk(tree):
+            if not isinstance(function, ast.FunctionDef):
+                continue
+            for node in ast.walk(function):
+                if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                        and node.func.attr == "startswith" and node.args
+                        and "sr" in ast.unparse(node.args[0])):
+                    found.add((path.relative_to(ROOT).as_posix(), function.name))
+    assert found == words

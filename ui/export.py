@@ -11,7 +11,7 @@ import streamlit as st
 
 from figures.raw import RawFigure
 from ui.crank import LIVE, Crank
-from ui.i18n import current, num, t
+from ui.i18n import current, decimal_comma, num, t
 from ui.plot import plot
 
 Rows = list[dict[str, Any]]  # a table as its rows, each {column: value}
@@ -47,7 +47,7 @@ def chart(fig: RawFigure, filename: str, key: str, editable: bool = False,
                       unreachable=t(crank.unreachable))
     return plot(fig, key, filename, labels, editable, crank,
                 None if crank is None else _turned(crank.key),
-                separators=",." if current().startswith("sr") else None, locale=current(),
+                separators=",." if decimal_comma() else None, locale=current(),
                 handle=handle, focus=focus)
 
 
@@ -90,7 +90,7 @@ def dataframe(table: Table, **options) -> None:
     else:
         names = dict.fromkeys(name for row in table for name in row)
         cells = {name: [row.get(name) for row in table] for name in names}
-    serbian = current().startswith("sr")
+    serbian = decimal_comma()
     columns = []
     for name, values in cells.items():
         if serbian and values and all(isinstance(v, float) or v is None for v in values):

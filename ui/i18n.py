@@ -22,6 +22,7 @@ import cyrtranslit
 import streamlit as st
 
 from mechanisms.messages import KEEP, Text, text_of
+from mechanisms.typed import comma_is_decimal
 from ui.url import url_choice
 
 T = TypeVar("T")
@@ -75,6 +76,20 @@ def current() -> str:
     page asks about a hundred times a run, and each session-state read costs about 50 µs
     (a tenth of a rerun, measured with py-spy; docs/performance.md)."""
     return getattr(_RUN, "language", None) or st.session_state.get("lang") or default_language()
+
+
+def decimal_comma(language: str | None = None) -> bool:
+    """Whether the page writes its numbers with a decimal comma (Serbian: 0,25): the one
+    rule of every number shown — texts, tables, charts, and the sliders' values, which the
+    page's head rewrites once ``mark_decimal`` has said which mark the page uses."""
+    return comma_is_decimal(language or current())
+
+
+def mark_decimal() -> None:
+    """Tell the page's head (scripts/page_head.py) the page's decimal mark, for what only the
+    browser writes: the sliders' values. A style element with no rules, which Streamlit
+    shows as nothing; once a whole run, so a page with no chart gets it too."""
+    st.html(f'<style data-mehanizmi-decimal="{"," if decimal_comma() else "."}"></style>')
 
 
 def run_language() -> None:
@@ -148,7 +163,7 @@ def message(said: BaseException | Text | str, language: str | None = None) -> st
     if not isinstance(said, Text):
         return str(said)
     return said.render(lambda key: _strings(language)[key],
-                       comma=language.startswith("sr"))
+                       comma=decimal_comma(language))
 
 
 DECIMAL = re.compile(r"(?<=\d)\.(?=\d)")
@@ -157,13 +172,13 @@ DECIMAL = re.compile(r"(?<=\d)\.(?=\d)")
 def decimals(text: str, language: str | None = None) -> str:
     """Numbers already written in a text (a benchmark's cell) with the language's decimal
     sign. Only for texts that hold no identifiers such as task numbers (2.1)."""
-    return DECIMAL.sub(",", text) if (language or current()).startswith("sr") else text
+    return DECIMAL.sub(",", text) if decimal_comma(language) else text
 
 
 def latex(text: str, language: str | None = None) -> str:
     """A LaTeX equation with the language's decimal sign: Serbian's comma written ``{,}``,
     which LaTeX sets as a decimal sign, not as punctuation followed by a space."""
-    return DECIMAL.sub("{,}", text) if (language or current()).startswith("sr") else text
+    return DECIMAL.sub("{,}", text) if decimal_comma(language) else text
 
 
 def sci(value: float, digits: int = 1, language: str | None = None) -> str:
@@ -177,7 +192,7 @@ def num(value: float, digits: int = 4, language: str | None = None) -> str:
     text = f"{value:.{digits}g}"
     if float(text) == 0:
         text = "0"
-    return text.replace(".", ",") if (language or current()).startswith("sr") else text
+    return text.replace(".", ",") if decimal_comma(language) else text
 
 
 def language_picker() -> str:

@@ -433,33 +433,6 @@ function crankControls(gd, labels) {
   window.addEventListener("mehanizmi-crank", crank.follow);
 }
 
-// Serbian pages write a decimal comma; Streamlit's sliders print their values through
-// sprintf, with a point ("3.58"). Their shown numbers are rewritten in place — each text
-// node's own value, so that React's next update of the same node is rewritten again.
-let DECIMAL = ".";
-let SLIDERS = null;  // the observer, made once a page asks for a comma
-const SLIDER_TEXT = "[data-testid='stSliderThumbValue'], [data-testid='stSliderTickBar']";
-const POINT_NUMBER = /^([−\-+]?\d*)\.(\d+)/;
-
-function commaSliders() {
-  if (DECIMAL !== ",") return;
-  for (const box of document.querySelectorAll(SLIDER_TEXT)) {
-    const walk = document.createTreeWalker(box, NodeFilter.SHOW_TEXT);
-    for (let node = walk.nextNode(); node; node = walk.nextNode()) {
-      if (POINT_NUMBER.test(node.nodeValue)) node.nodeValue = node.nodeValue.replace(POINT_NUMBER, "$1,$2");
-    }
-  }
-}
-
-function sliderDecimals(decimal) {
-  DECIMAL = decimal;
-  if (decimal === "," && !SLIDERS) {  // (before the browser paints: no point flickers)
-    SLIDERS = new MutationObserver(commaSliders);
-    SLIDERS.observe(document.body, { subtree: true, childList: true, characterData: true });
-  }
-  commaSliders();
-}
-
 function updateCrank(gd, spec) {
   if (!spec.crank) {
     dropCrank(gd);
@@ -594,7 +567,6 @@ export default function (component) {
   gd.__send = gd.__send || { current: null };
   gd.__send.current = setTriggerValue;  // the newest mount's, as Streamlit hands it over
   updateCrank(gd, spec);
-  sliderDecimals(spec.separators ? spec.separators[0] : ".");
   plotly(spec.src).then((Plotly) => schedule(gd, () => {
     // one toolbar button per file format instead of Plotly's camera (one format, set in
     // advance); no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a

@@ -24,7 +24,7 @@ from ui import classroom
 from ui.export import chart
 from ui.firstpaint import finish, whole
 from ui.fragments import fragment
-from ui.i18n import current, kept_language, num, t
+from ui.i18n import current, decimal_comma, kept_language, num, t
 from ui.inview import into_view
 from ui.numbers import Refused, number_field, refusal
 from ui.present import look
@@ -92,7 +92,7 @@ def _seated_panel(steps: list[Step], key: str, title: str, drawable: bool) -> No
 def hint(step: Step, verdict: Verdict) -> str:
     """The diagnosis in words (methods.practice.hint_texts: the words every surface says),
     and the book's rule for the step where it helps, in the page's language."""
-    return " ".join(text.render(t, current().startswith("sr"))
+    return " ".join(text.render(t, decimal_comma())
                     for text in hint_texts(step, verdict, plain))
 
 
