@@ -44,6 +44,13 @@ def contact(train: GearTrain, mesh) -> float:
     return ya + ra if ya >= yb else ya - ra
 
 
+def member_name(train: GearTrain, n: int, t: Text) -> str:
+    """Member ``n`` as every surface names it ("4 ring — fixed"): whether it is fixed is said
+    from the train's ``fixed``, never written into a label as well."""
+    name = t("fig.member", number=n, member_label=train.members[n].label).strip()
+    return name + (f" — {t('gears.fixed')}" if n in train.fixed else "")
+
+
 def schematic_figure(train: GearTrain, title: str, t: Text, look: Look = NORMAL) -> RawFigure:
     """Half-section to scale: each member's rims as bars about its axis, carriers as arms."""
     fig = RawFigure()
@@ -63,12 +70,11 @@ def schematic_figure(train: GearTrain, title: str, t: Text, look: Look = NORMAL)
             traces.append(scatter(x=[x[c], x[c], x[n]], y=[0, m.axis, m.axis], mode="lines",
                                   showlegend=False, hoverinfo="skip",
                                   line=dict(color=member_colour(c), width=3 * look.line)))
-        label = (t("fig.member", number=n, member_label=m.label).strip()
-                 + (f" — {t('gears.fixed')}" if n in train.fixed else ""))
         traces.append(scatter(x=[x[n]], y=[m.axis + reach], mode="markers+text", text=[str(n)],
-                              textposition="top center", name=label, marker=dict(color=colour,
-                                                                                size=8 * look.line),
-                              textfont=dict(size=look.font + 2, color=colour)))
+                              textposition="top center", name=member_name(train, n, t),
+                              marker=dict(color=colour, size=8 * look.line),
+                              # the number over the tallest rim stays whole above the plot's edge
+                              cliponaxis=False, textfont=dict(size=look.font + 2, color=colour)))
     for shaft in train.shafts:
         xs = [x[m] for m in shaft]
         axis = train.members[shaft[0]].axis

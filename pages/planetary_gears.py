@@ -5,7 +5,7 @@ from __future__ import annotations
 import pandas as pd
 import streamlit as st
 
-from figures.gears import schematic_figure, velocity_figure
+from figures.gears import member_name, schematic_figure, velocity_figure
 from mechanisms.gears import GearTrain, Input, Mesh
 from mechanisms.loader import as_loaded
 from methods import practice_steps
@@ -144,8 +144,7 @@ def results() -> None:
     changed = train_changes(train, base) if base.book else []  # the book's ω: the task's own
     for m, w in solution.omega.items():
         book = None if changed else train.book.get(f"members.{m}.omega")
-        rows.append({t("gears.col_member"): t("fig.member", number=m,
-                                              member_label=train.members[m].label).strip(),
+        rows.append({t("gears.col_member"): member_name(train, m, t),
                      "ω [s⁻¹]": num(w, 5),
                      t("gears.col_book"): "" if book is None else num(book, 5)})
     show_table(rows, f"{train.id}-omega.csv", "csv")

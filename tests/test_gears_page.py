@@ -100,3 +100,24 @@ def test_the_stages_combine_speed_by_speed_into_the_chosen_total_ratio(lang):
     assert equations[-1].endswith(f"= {float(ratio):.5g}")
     shaft = {"en": "Same shaft", "sr": "Isto vratilo", "sr-cyrl": "Исто вратило"}[lang]
     assert sum(shaft in c.value for c in at.caption) == 3  # 6 = 2, 8 = 7, 13 = 5
+
+
+@pytest.mark.parametrize("pid", preset_ids("gears"))
+@pytest.mark.parametrize("lang, fixed", [("en", "fixed"), ("sr", "nepokretan")])
+def test_a_fixed_member_is_said_fixed_once_in_the_legend_and_in_the_table(pid, lang, fixed):
+    """Whether a member is fixed comes from the train's ``fixed`` alone: a label that said it
+    too read "4 ring (fixed) — fixed" in the legend. The drawing's legend and the ω table
+    name each member alike."""
+    from mechanisms import load_preset
+
+    train = load_preset(pid)
+    at = page("pages/planetary_gears.py", lang=lang, scene=pid)
+    assert not at.exception
+    legend = {trace["name"] for trace in next(iter(charts(at).values()))["figure"]["data"]
+              if trace.get("name") and trace.get("showlegend", True)}
+    table = set(at.dataframe[1].value.iloc[:, 0])  # (the first: the meshes editor)
+    for n in train.members:
+        names = {name for name in legend | table if re.match(rf"{n}\b", name)}
+        assert len(names) == 1, names  # (the legend's and the table's the same)
+        name = names.pop()
+        assert name.count(fixed) == (1 if n in train.fixed else 0), name
