@@ -302,3 +302,22 @@ def test_a_serbian_slider_writes_its_value_with_a_decimal_comma_and_a_link_s_com
     english = phone(f"{app_url}/velocity_plans?lang=en&scene=zbirka-3.1&omega=1.5")
     english.wait_for_function("() => [...document.querySelectorAll(\"[data-testid='stSliderThumbValue']\")]"
                               ".some(e => e.textContent.includes('1.50'))", timeout=30_000)
+
+
+TITLE_UNDER_TOOLBAR = """() => { const gd = document.querySelector('.js-plotly-plot');
+  const bar = gd.querySelector('.modebar').getBoundingClientRect();
+  const title = gd.querySelector('.gtitle').getBoundingClientRect();
+  return [bar.bottom, title.top, title.bottom, gd.querySelector('.nsewdrag').getBoundingClientRect().top]; }"""
+
+
+@pytest.mark.parametrize("path", ["planetary_gears?lang=sr&scene=zbirka-6.1",  # one line
+                                  "trajectories?lang=sr"])  # two, wrapped to the phone's width
+def test_a_phone_chart_s_title_sits_under_its_toolbar_and_over_its_plot(app_url, phone, path):
+    """A touch screen shows Plotly's toolbar at all times, across most of a phone chart's
+    top: the title, drawn there too, lay under its buttons."""
+    page = phone(f"{app_url}/{path}")
+    page.wait_for_function("() => document.querySelector('.js-plotly-plot .modebar')",
+                           timeout=30_000)
+    bar_bottom, title_top, title_bottom, plot_top = page.evaluate(TITLE_UNDER_TOOLBAR)
+    assert bar_bottom <= title_top < title_bottom <= plot_top, (bar_bottom, title_top,
+                                                                 title_bottom, plot_top)

@@ -471,8 +471,13 @@ function dropCrank(gd) {
 // a phone a chart is half as wide. Each figure and frame is drawn with:
 // - its title in as many lines as the chart's width needs (Plotly draws a title on one line,
 //   and a scene's name ran off the chart's right edge), the top margin grown by the lines;
+// - on a phone, its title under the toolbar: a touch screen shows Plotly's toolbar at all
+//   times, across most of a narrow chart's top, and it lay over the title (the builder's
+//   drawing keeps its own compact top, see below);
 // - the room its legend took when drawn (fitLegend).
 const MEASURE = document.createElement("canvas").getContext("2d");
+
+const TOOLBAR = 36;  // px: the height of Plotly's toolbar row, and some air under it
 
 function fitted(gd, layout) {
   const title = layout.title || {};
@@ -481,8 +486,13 @@ function fitted(gd, layout) {
   const margin = { ...layout.margin };
   if (gd.__legendRoom > margin.b) margin.b = gd.__legendRoom;
   if (lines.length > 1) margin.t = (margin.t ?? 100) + (lines.length - 1) * Math.ceil(1.3 * size);
-  if (lines.length < 2 && margin.b === (layout.margin || {}).b) return layout;
-  return { ...layout, margin, title: { ...title, text: lines.join("<br>") } };
+  const under = title.text && gd.clientWidth <= 640 && !gd.__editable;
+  if (!under && lines.length < 2 && margin.b === (layout.margin || {}).b) return layout;
+  // (Plotly lifts a title of n lines by n − 1 of them, as it grows the margin above)
+  const lifted = (lines.join("<br>").split("<br>").length - 1) * Math.ceil(1.3 * size);
+  const placed = under ? { yref: "container", y: 1, yanchor: "top", pad: { t: TOOLBAR + lifted } } : {};
+  if (under) margin.t = (margin.t ?? 100) + TOOLBAR;
+  return { ...layout, margin, title: { ...title, ...placed, text: lines.join("<br>") } };
 }
 
 function titleLines(text, size, family, width) {
@@ -564,6 +574,7 @@ export default function (component) {
   gd.__first = spec.first;
   if (!spec.first) window.__mehanizmiPainted = false;  // a whole run: the next first run reports
   gd.__filename = spec.filename;
+  gd.__editable = Boolean(spec.editable);  // (fitted: the builder's drawing keeps its own top)
   gd.__send = gd.__send || { current: null };
   gd.__send.current = setTriggerValue;  // the newest mount's, as Streamlit hands it over
   updateCrank(gd, spec);
