@@ -6,7 +6,7 @@ from ui.boundary import boundary
 from ui.chapters import navigation_pages
 from ui.classroom import seated_on, sidebar_join
 from ui.firstpaint import begin_run, end_run, rerun_whole
-from ui.i18n import language_picker, mark_decimal
+from ui.i18n import language_picker
 from ui.present import projector_switch
 from ui.url import link_sent
 
@@ -17,7 +17,6 @@ st.set_page_config(page_title="Mehanizmi", page_icon="⚙️", layout="wide",
 with boundary(), link_sent():  # no traceback on any page: one sentence, and the server's
     # log; the link's changes in one message
     language_picker()
-    mark_decimal()  # (for the page's head: the sliders' values in the page's decimal mark)
     page = st.navigation(navigation_pages())
     if not seated_on(page.url_path):  # (a seated student's page: the class's practice alone)
         projector_switch()

@@ -16,7 +16,7 @@ here takes a wait or some script off the way to that chart; none of them saves b
   (``num_any_``) keeps the full keyboard.
 - A Serbian page's sliders write their values with a decimal comma, as every other number
   of the page: Streamlit writes them with a point in any language. The page says its mark
-  in each whole run (``ui.i18n.mark_decimal``), so a page with no chart (an unsolvable
+  by the container of its language box (``ui.i18n.language_picker``), so a page with no chart (an unsolvable
   position) is rewritten as well; the charts' script did this before, only where it drew.
 - The page's frame (``ui/frame.css``: captions dark enough, a phone's order of columns, the
   builder's sticky drawing) is a style sent once a visit, where it was an element of every
@@ -41,8 +41,8 @@ FRAME = f'<style>\n{(ROOT / "ui" / "frame.css").read_text(encoding="utf-8")}</st
 # One observer of the page for the head's small fixes, each a rewrite of what Streamlit drew:
 # - the phone keyboard of a number field (see above);
 # - a Serbian page's sliders: Streamlit writes their values and ends ("3.58") with a point
-#   whatever the page's language, and the page's decimal mark is said by a style element
-#   each whole run writes (ui.i18n.mark_decimal); rewritten before the browser paints, so no
+#   whatever the page's language, and the page's decimal mark is said by the container of
+#   its language box (ui.i18n.language_picker); rewritten before the browser paints, so no
 #   point flickers, and written back when the page turns English (the slider is the same
 #   element then, and React leaves its unchanged value as it was).
 FIXES = """(() => {
@@ -56,8 +56,7 @@ new MutationObserver(() => {
     const signed = box.closest("[class*='st-key-num_any_']");
     box.setAttribute("inputmode", signed && ios ? "text" : "decimal");
   }
-  const mark = document.querySelector("style[data-mehanizmi-decimal]");
-  const [number, mended] = mark && mark.dataset.mehanizmiDecimal === "," ? POINT : COMMA;
+  const [number, mended] = document.querySelector(".st-key-decimal_comma") ? POINT : COMMA;
   for (const box of document.querySelectorAll(SLIDER_TEXT)) {
     const walk = document.createTreeWalker(box, NodeFilter.SHOW_TEXT);
     for (let node = walk.nextNode(); node; node = walk.nextNode()) {

@@ -310,8 +310,8 @@ def test_the_toolbar_and_the_practice_csv_speak_serbian(language, monkeypatch):
 def test_the_decimal_mark_is_one_rule_for_every_surface_that_writes_a_number():
     """``ui.i18n.decimal_comma`` decides the mark of every number the app writes: the texts
     (``num``, ``decimals``, ``latex``, ``sci``, a solver's sentence), a table's cells, a
-    chart's ``separators``, and the mark each whole run gives the page's head for its
-    sliders. No module decides it again: every ``startswith("sr")`` left in the app picks
+    chart's ``separators``, and the mark the language box's container gives the page's
+    head for its sliders. No module decides it again: every ``startswith("sr")`` left in the app picks
     words, not a decimal mark, and is named here."""
     import ast
 
@@ -332,9 +332,9 @@ def test_the_decimal_mark_is_one_rule_for_every_surface_that_writes_a_number():
 
         from figures.raw import RawFigure
         from ui.export import chart, dataframe
-        from ui.i18n import mark_decimal
+        from ui.i18n import language_picker
         st.session_state["lang"] = language
-        mark_decimal()
+        language_picker()
         dataframe([{"x [m]": 0.25}], hide_index=True)
         fig = RawFigure()
         fig.add_raw([{"type": "scatter", "x": [0, 1], "y": [0, 1]}])
@@ -344,7 +344,8 @@ def test_the_decimal_mark_is_one_rule_for_every_surface_that_writes_a_number():
         at = AppTest.from_function(page, args=(language,))
         at.run()
         assert not at.exception, [e.message for e in at.exception]
-        assert f'data-mehanizmi-decimal="{mark}"' in at.get("html")[0].proto.body
+        boxes = {b.proto.id for b in at.sidebar.children.values()}
+        assert any(f"decimal_{'comma' if mark == ',' else 'point'}" in box for box in boxes), boxes
         assert at.dataframe[0].value["x [m]"].tolist() == [0.25 if mark == "." else "0,25"]
         spec = json.loads(at.get("bidi_component")[0].proto.bytes)
         assert spec["separators"] == (",." if mark == "," else None)

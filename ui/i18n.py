@@ -81,15 +81,8 @@ def current() -> str:
 def decimal_comma(language: str | None = None) -> bool:
     """Whether the page writes its numbers with a decimal comma (Serbian: 0,25): the one
     rule of every number shown — texts, tables, charts, and the sliders' values, which the
-    page's head rewrites once ``mark_decimal`` has said which mark the page uses."""
+    page's head rewrites in the mark ``language_picker`` names."""
     return comma_is_decimal(language or current())
-
-
-def mark_decimal() -> None:
-    """Tell the page's head (scripts/page_head.py) the page's decimal mark, for what only the
-    browser writes: the sliders' values. A style element with no rules, which Streamlit
-    shows as nothing; once a whole run, so a page with no chart gets it too."""
-    st.html(f'<style data-mehanizmi-decimal="{"," if decimal_comma() else "."}"></style>')
 
 
 def run_language() -> None:
@@ -200,7 +193,7 @@ def language_picker() -> str:
     from here on (a session's reruns share one script thread, and each run passes here
     before its page)."""
     _RUN.language = None
-    _RUN.language = url_choice(st.sidebar.selectbox, "Language · Jezik · Језик", list(LANGUAGES),
+    _RUN.language = url_choice(_marked_box, "Language · Jezik · Језик", list(LANGUAGES),
                                "lang", default=default_language(), format_func=LANGUAGES.get,
                                label_visibility="collapsed")
     kept = st.session_state.get("_link_refused_lang")
@@ -208,6 +201,16 @@ def language_picker() -> str:
         st.sidebar.warning(t("link.refused", why=t(f"num.{kept[0].reason}", field="lang",
                                                    text=f"`{kept[0].text}`")), icon=":material/link_off:")
     return _RUN.language
+
+
+def _marked_box(label: str, options: list[str], key: str, **kwargs) -> str:
+    """The language box, in a container named by the decimal mark of the language it shows
+    (``decimal_``comma or point): the page's head (scripts/page_head.py) writes the sliders'
+    values in that mark, on every page, with a chart or without. No element of its own: a
+    style element (``st.html``) brought Streamlit's HTML scripts, 12 kB, into every first
+    paint."""
+    mark = "comma" if decimal_comma(st.session_state[key]) else "point"
+    return st.sidebar.container(key=f"decimal_{mark}").selectbox(label, options, key=key, **kwargs)
 
 
 def in_language(english: str, serbian: str, language: str | None = None) -> str:
