@@ -16,8 +16,9 @@ here takes a wait or some script off the way to that chart; none of them saves b
   (``num_any_``) keeps the full keyboard.
 - A Serbian page's sliders write their values with a decimal comma, as every other number
   of the page: Streamlit writes them with a point in any language. The page says its mark
-  by the container of its language box (``ui.i18n.language_picker``), so a page with no chart (an unsolvable
-  position) is rewritten as well; the charts' script did this before, only where it drew.
+  by the container of its language box (``ui.i18n.language_picker``), so a page with no
+  chart (an unsolvable position) is rewritten as well; the charts' script did this before,
+  only where it drew.
 - The page's frame (``ui/frame.css``: captions dark enough, a phone's order of columns, the
   builder's sticky drawing) is a style sent once a visit, where it was an element of every
   run of every page. It closes the body (``FRAME``), not the head: Streamlit's own styles
