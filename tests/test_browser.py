@@ -630,3 +630,14 @@ def test_scrubbing_phi2_moves_the_loads_and_the_force_polygon_in_the_browser(app
     shot = tmp_path / "forces-scrubbed.png"
     page.screenshot(path=str(shot), full_page=True)
     keep(shot)
+
+
+def test_a_desktop_s_narrow_chart_keeps_its_title_where_plotly_puts_it(app_url, browser):
+    """Only a phone's touch screen shows Plotly's toolbar at all times (ui/plot.js moves a
+    phone chart's title under it): on a desktop the plans side by side, narrower than a
+    phone, keep their titles at the top, the plot's room unchanged."""
+    page = open_page(browser, f"{app_url}/velocity_plans?lang=en")
+    narrow = page.evaluate("() => [...document.querySelectorAll('.js-plotly-plot')]"
+                           ".filter(gd => gd.clientWidth <= 640)"
+                           ".map(gd => gd._fullLayout.title.yanchor)")
+    assert narrow and all(anchor != "top" for anchor in narrow), narrow

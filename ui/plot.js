@@ -479,20 +479,28 @@ const MEASURE = document.createElement("canvas").getContext("2d");
 
 const TOOLBAR = 36;  // px: the height of Plotly's toolbar row, and some air under it
 
+// A phone's screen, as ui/frame.css's narrow layout: a touch screen there shows Plotly's
+// toolbar at all times (a desktop's shows it under the mouse only, whatever a chart's width).
+function onPhone() {
+  return window.innerWidth <= 640;
+}
+
 function fitted(gd, layout) {
   const title = layout.title || {};
   const size = (title.font || {}).size || 18;
+  const line = Math.ceil(1.3 * size);
   const lines = titleLines(title.text || "", size, (layout.font || {}).family, gd.clientWidth);
+  const text = lines.join("<br>");
   const margin = { ...layout.margin };
   if (gd.__legendRoom > margin.b) margin.b = gd.__legendRoom;
-  if (lines.length > 1) margin.t = (margin.t ?? 100) + (lines.length - 1) * Math.ceil(1.3 * size);
-  const under = title.text && gd.clientWidth <= 640 && !gd.__editable;
+  if (lines.length > 1) margin.t = (margin.t ?? 100) + (lines.length - 1) * line;
+  const under = title.text && onPhone() && !gd.__editable;
   if (!under && lines.length < 2 && margin.b === (layout.margin || {}).b) return layout;
   // (Plotly lifts a title of n lines by n − 1 of them, as it grows the margin above)
-  const lifted = (lines.join("<br>").split("<br>").length - 1) * Math.ceil(1.3 * size);
+  const lifted = (text.split("<br>").length - 1) * line;
   const placed = under ? { yref: "container", y: 1, yanchor: "top", pad: { t: TOOLBAR + lifted } } : {};
   if (under) margin.t = (margin.t ?? 100) + TOOLBAR;
-  return { ...layout, margin, title: { ...title, ...placed, text: lines.join("<br>") } };
+  return { ...layout, margin, title: { ...title, ...placed, text } };
 }
 
 function titleLines(text, size, family, width) {
@@ -596,7 +604,7 @@ export default function (component) {
     let layout = fitted(gd, spec.figure.layout);
     if (spec.handle) {  // a sheet as tall as the screen's width allows, not the page's 600 px
       layout = { ...layout, height: Math.min(layout.height || 600, Math.max(320, gd.clientWidth + 100)) };
-    } else if (spec.editable && window.innerWidth <= 640) {  // the builder's drawing, held at
+    } else if (spec.editable && onPhone()) {  // the builder's drawing, held at
       // the top of a phone's screen over the tables (ui/layout.py): half of it, given to
       // the drawing (the legend and the title's size are the room a phone lacks)
       const title = layout.title || {};
