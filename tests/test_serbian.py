@@ -354,15 +354,18 @@ def test_the_decimal_mark_is_one_rule_for_every_surface_that_writes_a_number():
              ("ui/i18n.py", "in_language"), ("ui/docs.py", "path_of"),
              ("mechanisms/typed.py", "comma_is_decimal")}
     found = set()
+
+    def visit(node, where: str, path) -> None:  # each call under its innermost function
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            where = node.name
+        if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                and node.func.attr == "startswith" and node.args
+                and "sr" in ast.unparse(node.args[0])):
+            found.add((path.relative_to(ROOT).as_posix(), where))
+        for child in ast.iter_child_nodes(node):
+            visit(child, where, path)
+
     for path in [ROOT / "app.py", *ROOT.glob("ui/*.py"), *ROOT.glob("pages/*.py"),
                  ROOT / "mechanisms" / "typed.py"]:
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-        for function in ast.walk(tree):
-            if not isinstance(function, ast.FunctionDef):
-                continue
-            for node in ast.walk(function):
-                if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
-                        and node.func.attr == "startswith" and node.args
-                        and "sr" in ast.unparse(node.args[0])):
-                    found.add((path.relative_to(ROOT).as_posix(), function.name))
+        visit(ast.parse(path.read_text(encoding="utf-8")), "<module>", path)
     assert found == words
