@@ -542,6 +542,65 @@ def test_a_link_s_length_moves_the_paths_in_the_browser_and_letting_go_sets_its_
     assert float(slider.input_value()) == values[20]
 
 
+# every draw of the page's first chart: whether it was an arrow key's neighbour (ui/plot.js
+# marks the chart before drawing one), its numbers once drawn, and its title
+DRAWS = """() => { window.__draws = []; const react = window.Plotly.react;
+  window.Plotly.react = function (gd, ...rest) {
+    const previewed = Boolean(gd.__previewed);
+    return react.call(this, gd, ...rest).then((out) => {
+      if (gd === document.querySelector('.mehanizmi-plot')) window.__draws.push({ previewed,
+        data: gd._fullData.map((t) => [Array.from(t.x || []), Array.from(t.y || [])]),
+        title: ((gd.layout.title || {}).text) || '' });
+      return out; }); }; }"""
+NEAR_OF = "() => (document.querySelector('.mehanizmi-plot').__crank.spec.near || {}).key || null"
+
+
+def same_numbers(got: list, want: list) -> bool:
+    """Two charts' traces alike to the 5 digits a frame is sent with."""
+    if len(got) != len(want):
+        return False
+    for g_trace, w_trace in zip(got, want):
+        for g, w in zip(g_trace, w_trace):
+            scale = max((abs(v) for v in w if v is not None), default=1.0)
+            if len(g) != len(w) or any((a is None) != (b is None) or (
+                    a is not None and abs(a - b) > 1e-4 * scale) for a, b in zip(g, w)):
+                return False
+    return True
+
+
+@pytest.mark.parametrize("path, label, expander", [
+    ("velocity_plans?lang=en", "Crank angle", None),
+    ("trajectories?lang=en&scene=four-bar-crank-rocker", "(member 3)", "Link lengths")])
+def test_an_arrow_key_on_a_followed_slider_draws_the_next_figure_before_the_rerun(
+        app_url, browser, path, label, expander):
+    """The slider's focus brings the chart's neighbours; an arrow key draws the one it moves
+    to at once (the draw marked as such), and the rerun's own figure, drawn after it, is
+    the same to the 5 digits sent. Leaving the slider tells the server: no more neighbours."""
+    page = open_page(browser, f"{app_url}/{path}")
+    if expander:
+        page.get_by_text(expander, exact=True).click()
+    slider = page.locator(f"[data-testid='stSlider'] input[type='range'][aria-label*='{label}']")
+    slider.first.focus()
+    page.wait_for_function(f"() => ({NEAR_OF})() !== null", timeout=30_000)
+    wait_idle(page)
+    before = page.evaluate("() => document.querySelector('.mehanizmi-plot')._fullData"
+                           ".map((t) => [Array.from(t.x || []), Array.from(t.y || [])])")
+    page.evaluate(DRAWS)
+    for key in ("ArrowRight", "ArrowLeft"):
+        page.evaluate("() => { window.__draws = []; }")
+        page.keyboard.press(key)
+        page.wait_for_function("() => window.__draws.some((d) => !d.previewed)", timeout=30_000)
+        wait_idle(page)
+        draws = page.evaluate("() => window.__draws")
+        assert draws[0]["previewed"]  # the neighbour first, with no rerun in between
+        assert same_numbers(draws[0]["data"], draws[-1]["data"]) and not draws[-1]["previewed"]
+        assert draws[0]["title"] == draws[-1]["title"]
+        assert same_numbers(draws[0]["data"], before) == (key == "ArrowLeft")  # back again
+    page.locator("[data-testid='stSidebar'] [data-testid='stSelectbox']").first.click()
+    page.keyboard.press("Escape")
+    page.wait_for_function(f"() => ({NEAR_OF})() === null", timeout=30_000)
+
+
 # every frame the chart's control shows, in order, recorded from the page's own frames
 SHOWN = """() => { const c = document.querySelector('.mehanizmi-plot').__crank; window.__shown = [];
   const poll = () => { const s = window.__shown;

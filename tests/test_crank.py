@@ -1,5 +1,7 @@
 """The crank frames the browser scrubs (ui/crank.py): each patch rebuilds its frame, and on
-every page with them the frame at the page's angle is the figure the page draws there."""
+every page with them the frame at the page's angle is the figure the page draws there; the
+neighbours a page's slider sends while the keyboard is on it are the figures the page draws
+one step either side."""
 
 import json
 import math
@@ -10,7 +12,8 @@ from streamlit.testing.v1 import AppTest
 from figures.raw import RawFigure
 from mechanisms import load_preset
 from tests.test_pages import ROOT, charts, decode, page
-from ui.crank import LIVE, Crank, along, crank_frames, nearest, task_turn, turn
+from ui.crank import (LIVE, NEAR, PHI_STEP, Crank, Ranged, along, crank_frames, nearest, sides,
+                      task_turn, turn)
 
 
 def drawing(_: int, angle: float) -> dict[str, RawFigure] | None:
@@ -148,6 +151,65 @@ def test_a_length_s_frames_run_along_its_slider_with_the_shown_length_among_them
     assert along(0.025, 0.2, 0.005, 0.1) == tuple(round(0.025 + 0.005 * k, 6) for k in range(36))
     off = along(0.025, 0.2, 0.005, 0.101)  # set between two frames with the page's slider
     assert len(off) == 37 and 0.101 in off and list(off) == sorted(off)
+
+
+# --- the page's own slider with the keyboard on it: its neighbours come with the chart
+
+def test_an_arrow_key_s_neighbours_stay_within_the_slider_s_range():
+    phi = Ranged("φ₂", "φ₂", 0.0, 360.0, PHI_STEP, "°", 40.0)
+    assert sides(phi) == (39.5, 40.5)
+    assert sides(phi._replace(value=0.0)) == (0.5,) and sides(phi._replace(value=360.0)) == (359.5,)
+    length = Ranged("AB", "AB", 0.0875, 0.7, 0.0035, " m", 0.35)
+    assert sides(length) == (0.3465, 0.3535)  # on the slider's grid, not 0.34650000000000003
+
+
+def near_rebuilt(spec: dict, k: int) -> dict | None:
+    """What ui/plot.js draws for the slider's neighbour k: its patch over the chart's figure."""
+    return rebuilt({"base": spec["figure"], "frames": spec["crank"]["near"]["frames"]}, k)
+
+
+def neighbours_drawn(at: AppTest, key: str, keys: tuple[str, ...], value: float) -> None:
+    """With the keyboard on slider ``key`` at ``value``, each chart of ``keys`` is sent its
+    figures one step either side, and each is what the page draws when the slider gets there
+    (which is then sent its own neighbours)."""
+    at.session_state[key] = value
+    at.session_state[NEAR] = key  # what the slider's focus in the browser says (ui.crank.follow)
+    at.run()
+    sent = charts(at)
+    for chart_key in keys:
+        assert key in sent[chart_key]["crank"]["follows"]
+        assert sent[chart_key]["crank"]["near"]["key"] == key
+    values = sent[keys[0]]["crank"]["near"]["values"]
+    assert len(values) == 2 and values[0] < value < values[1]
+    for k, moved_to in enumerate(values):
+        at.session_state[key] = moved_to
+        at.run()
+        moved = charts(at)
+        for chart_key in keys:
+            same_drawing(near_rebuilt(sent[chart_key], k), moved[chart_key]["figure"])
+            assert moved[chart_key]["figure"] != sent[chart_key]["figure"]
+            assert moved[chart_key]["crank"]["near"]["values"][int(not k)] == pytest.approx(value)
+    del at.session_state[NEAR]  # the keyboard left the page's sliders: no run sends them
+    at.run()
+    assert all(charts(at)[chart_key]["crank"]["near"] is None for chart_key in keys)
+
+
+@pytest.mark.parametrize("path, state, keys", PAGES)
+def test_phi2_s_neighbours_are_the_page_s_figures_a_step_either_side(path, state, keys):
+    at = page(path, lang="en", at=40.0, **state)
+    assert all(charts(at)[key]["crank"]["near"] is None for key in keys)  # not asked: none
+    neighbours_drawn(at, "at", keys, 40.0)
+
+
+@pytest.mark.parametrize("scene, state, chart_key, keys", [
+    ("four-bar-crank-rocker", {}, "paths", ("L2", "L3", "L4")),
+    ("zbirka-1.3", {"tab": "In the field"}, "field", ("Rt", "Ra", "Rb"))])
+def test_every_slider_a_trajectories_chart_follows_sends_its_neighbours(scene, state, chart_key,
+                                                                         keys):
+    at = page("pages/trajectories.py", lang="en", scene=scene, **state)
+    assert tuple(charts(at)[chart_key]["crank"]["follows"]) == keys
+    for key in keys:
+        neighbours_drawn(at, key, (chart_key,), at.session_state[key])
 
 
 # --- the trajectories page: the chart's own control of a link's length

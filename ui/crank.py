@@ -8,6 +8,12 @@ the browser, which alone is about 150 ms.
 Each frame carries only what differs from the first one: the traces that moved and the
 layout keys that changed (a title with the angle, the letters). A position the mechanism
 cannot reach is sent as null and shown as such.
+
+The page's own sliders that a chart can follow (issue 83): while one of them has the
+keyboard's focus (``NEAR``, told by the browser), each run sends with the chart its figures
+one step either side of the slider's value (``Crank.near``), so that an arrow key redraws
+the chart at once from them, and the run's own figure replaces that drawing when it comes.
+A rerun alone is 1.6–2.2 times the floor's slider in the browser (docs/performance.md).
 """
 
 from __future__ import annotations
@@ -30,6 +36,8 @@ from ui.url import linked, said_of_link, url_drop, url_set
 STEP_DEG = 5.0  # 72 frames a turn: smooth to scrub, small enough to send
 FRAMES = 36  # about this many frames along a slider's range (a link's length: every 5th step)
 LIVE = "crank_live"  # session key: the student asked for the frames (see live())
+NEAR = "crank_near"  # session key: the page's slider (its key) the keyboard is on (see near())
+PHI_STEP = 0.5  # degrees: a step of the page's φ₂ slider (ui.scenes.driver_position)
 
 
 @dataclass(frozen=True)
@@ -56,13 +64,16 @@ class Crank:
     choices: tuple[tuple[str, str], ...] = ()
     wraps: bool = True  # a step past the last value comes round to the first (not a length)
     unreachable: str = "fig.unreachable"
+    follows: tuple[str, ...] = ()  # the page's sliders (keys) whose neighbours it can send
+    near: str | None = None  # {"key", "values", "frames"}: see near()
 
     def json(self) -> str:
         return (f'{{"values": {json.dumps(list(self.values))}, "index": {self.index}, '
                 f'"group": {json.dumps(self.group)}, "label": {json.dumps(self.label)}, '
                 f'"key": {json.dumps(self.key)}, "unit": {json.dumps(self.unit)}, '
                 f'"step": {json.dumps(self.step)}, "choices": {json.dumps(self.choices)}, '
-                f'"wraps": {json.dumps(self.wraps)}, '
+                f'"wraps": {json.dumps(self.wraps)}, "follows": {json.dumps(self.follows)}, '
+                f'"near": {self.near or "null"}, '
                 f'"turn": {self.frames or "null"}}}')
 
 
@@ -140,11 +151,15 @@ def slider_control(sliders: dict[str, Ranged], remembered: str, group: str, aske
     shown = sliders[key]
     stride = max(1, round((shown.hi - shown.lo) / shown.step / FRAMES)) * shown.step
     values = along(shown.lo, shown.hi, stride, shown.value)
+    on = keyboard_on(tuple(sliders))
+    close = None if on is None else near_frames(
+        on, sliders[on], frames(on, (sliders[on].value, *sides(sliders[on]))))
     return Crank(values, min(range(len(values)), key=lambda k: abs(values[k] - shown.value)),
                  group, frames(key, values) if asked else None, label=shown.label, key=key,
                  unit=shown.unit, step=f"{round(stride, 6):g}{shown.unit}", wraps=False,
                  unreachable=unreachable,
-                 choices=tuple((k, slider.name) for k, slider in sliders.items()))
+                 choices=tuple((k, slider.name) for k, slider in sliders.items()),
+                 follows=tuple(sliders), near=close)
 
 
 def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
@@ -169,16 +184,62 @@ def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
 
 
 def cranks(scene: Scene, names: tuple[str, ...], group: str, values: tuple[float, ...],
-           frames: Callable[[], dict[str, str]], asked: bool) -> dict[str, Crank]:
+           frames: Callable[[tuple[float, ...]], dict[str, str]], asked: bool
+           ) -> dict[str, Crank]:
     """The named charts' own φ₂ controls at the frame angles ``values`` (task_turn), moving
-    together as ``group``, on the angle the page shows; with their frames (``frames()``, a
-    page's cached crank_frames over the same angles) when the student asked. None for a
-    linear driver, whose stroke is no turn."""
+    together as ``group``, on the angle the page shows; with their frames (``frames(values)``,
+    a page's cached crank_frames over those angles, in degrees) when the student asked, and
+    the figures one step of the page's φ₂ slider either side while the keyboard is on it.
+    None for a linear driver, whose stroke is no turn."""
     if scene.driver.kind != "rotating":
         return {}
-    sent = frames() if asked else {}
-    shown = nearest(values, st.session_state["at"])
-    return {name: Crank(values, shown, group, sent.get(name)) for name in names}
+    sent = frames(values) if asked else {}
+    at = st.session_state["at"]
+    close = {}
+    if keyboard_on(("at",)):
+        phi = Ranged("φ₂", "φ₂", 0.0, 360.0, PHI_STEP, "°", at)
+        around = frames((at, *sides(phi)))
+        close = {name: near_frames("at", phi, around.get(name)) for name in names}
+    shown = nearest(values, at)
+    return {name: Crank(values, shown, group, sent.get(name), follows=("at",),
+                        near=close.get(name)) for name in names}
+
+
+def sides(shown: Ranged) -> tuple[float, ...]:
+    """What one arrow key sets from the slider's value: a step down and a step up, each
+    within the slider's range."""
+    steps = (round(shown.value - shown.step, 9), round(shown.value + shown.step, 9))
+    return tuple(v for v in steps if shown.lo - 1e-9 <= v <= shown.hi + 1e-9)
+
+
+def near_frames(key: str, shown: Ranged, sent: str | None) -> str | None:
+    """A chart's figures one step of the slider ``key`` either side of its value, from
+    ``sent`` (crank_frames at the value, then at ``sides(shown)``): each a patch on the
+    figure at the value itself, the one the run draws, which the browser holds. None where
+    that figure cannot be drawn."""
+    if sent is None:
+        return None
+    turn = json.loads(sent)
+    if turn["frames"][0] is None:
+        return None
+    return json.dumps({"key": key, "values": list(sides(shown)), "frames": turn["frames"][1:]},
+                      separators=(",", ":"))
+
+
+def keyboard_on(keys: tuple[str, ...]) -> str | None:
+    """Which of the sliders ``keys`` the keyboard is on, as the browser last said (a chart's
+    trigger "near", see follow), or None."""
+    key = st.session_state.get(NEAR)
+    return key if key in keys else None
+
+
+def follow(key: str | None) -> None:
+    """The browser says that the keyboard is on the page's slider ``key`` (a chart's
+    ``follows``), or on none of them (None): the runs that follow send its neighbours."""
+    if key:
+        st.session_state[NEAR] = key
+    else:
+        st.session_state.pop(NEAR, None)
 
 
 def _rounded(value):

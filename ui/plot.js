@@ -294,10 +294,15 @@ function frameFigure(gd, k) {
   const turn = gd.__crank.spec.turn;
   const patch = turn && turn.frames[k];
   if (!patch) return null;  // no frames yet, or the mechanism cannot be drawn there
+  return patched(gd, turn.base, patch);
+}
+
+// a frame (ui/crank.py's patch) laid over the figure ``base`` and the layout the chart showed
+function patched(gd, base, patch) {
   const moved = patch.data || {};
-  const data = patch.all  // every trace: a number is the first frame's trace of that index
-    ? patch.all.map((tr) => (typeof tr === "number" ? turn.base.data[tr] : tr))
-    : turn.base.data.map((tr, i) => (moved[i] ? { ...tr, ...moved[i] } : tr));
+  const data = patch.all  // every trace: a number is the base's trace of that index
+    ? patch.all.map((tr) => (typeof tr === "number" ? base.data[tr] : tr))
+    : base.data.map((tr, i) => (moved[i] ? { ...tr, ...moved[i] } : tr));
   return { data, layout: fitted(gd, patch.layout ? { ...gd.__layout, ...patch.layout } : gd.__layout) };
 }
 
@@ -467,6 +472,64 @@ function dropCrank(gd) {
   gd.__crank = null;
 }
 
+// A page's own slider that a chart follows (spec.crank.follows: the slider's key, which
+// Streamlit writes as the class "st-key-<key>" on its box). While the keyboard is on it, each
+// run sends the chart's figures one step of the slider either side of its value
+// (spec.crank.near: patches on the figure shown); an arrow key draws the one it moves to at
+// once, and the rerun's own figure replaces that drawing when it comes (issue 83: the rerun
+// alone painted the first figure 1.6–2.2 times later than the floor's slider). The browser
+// tells the server when the keyboard comes onto such a slider and when it leaves them all
+// (the trigger "near"), so that no other run pays for the neighbours.
+let keyboardOn = null;  // the followed slider the server was last told of
+
+function sliderKey(el) {
+  const slider = el && el.closest ? el.closest("[data-testid='stSlider']") : null;
+  const box = slider && slider.closest("[class*='st-key-']");
+  const name = box && [...box.classList].find((c) => c.startsWith("st-key-"));
+  return name ? name.slice("st-key-".length) : null;
+}
+
+function followers(key) {
+  return [...document.querySelectorAll(".mehanizmi-plot")]
+    .filter((gd) => gd.__crank && gd.__crank.spec.follows.includes(key));
+}
+
+function tellKeyboard(key) {
+  const chart = followers(key || keyboardOn)[0];
+  if (!chart || keyboardOn === key) return;
+  keyboardOn = key;
+  chart.__send.current("near", key);
+}
+
+window.addEventListener("focusin", (e) => {
+  const key = sliderKey(e.target);
+  if (key !== null && followers(key).length) tellKeyboard(key);
+});
+window.addEventListener("focusout", (e) => {
+  const next = sliderKey(e.relatedTarget);
+  // a window left (another tab) keeps the slider: its focus comes back with the window
+  if (keyboardOn !== null && document.hasFocus() && !(next && followers(next).length)) tellKeyboard(null);
+});
+window.addEventListener("keydown", (e) => {
+  const by = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1 }[e.key];
+  const key = sliderKey(e.target);
+  if (!by || key === null || e.target.type !== "range" || e.shiftKey || e.altKey || e.ctrlKey
+      || e.metaKey) return;  // (shift moves a page of steps)
+  const step = Number(e.target.step);
+  const value = Number(e.target.value) + by * step;  // the slider reads its old value still
+  for (const gd of followers(key)) {
+    const near = gd.__crank.spec.near;
+    const k = near && near.key === key && gd.__figure
+      ? near.values.findIndex((v) => Math.abs(v - value) < step / 1000) : -1;
+    const patch = k < 0 ? null : near.frames[k];
+    if (!patch) continue;  // (the server's figure comes as without a preview)
+    gd.__previewed = true;
+    const fig = patched(gd, gd.__figure, patch);
+    schedule(gd, () => gd.__Plotly.react(gd, { ...fig, config: gd.__config })
+      .then(() => keepLabelsInside(gd)));
+  }
+}, true);  // before the slider's own handler, which stops the key's propagation
+
 // A figure's margins are fixed (figures/style.margins), sized for the page's main column; on
 // a phone a chart is half as wide. Each figure and frame is drawn with:
 // - its title in as many lines as the chart's width needs (Plotly draws a title on one line,
@@ -575,10 +638,16 @@ export default function (component) {
   const generation = (gd.__generation = (gd.__generation || 0) + 1);
   const failed = (error) => {
     if (gd.__generation !== generation) return;
-    gd.__drawn = null;  // the same figure sent again draws again
+    gd.__drawn = gd.__figureText = null;  // the same figure sent again draws again
     gd.textContent = String(error);
   };
   const spec = JSON.parse(text);
+  // the same figure with only the chart's own control changed (its frames or neighbours
+  // came) is not drawn again, unless a neighbour was drawn over it (a preview, above)
+  const figureText = JSON.stringify({ ...spec, crank: null });
+  const same = gd.__figureText === figureText && !gd.__previewed;
+  gd.__figureText = figureText;
+  gd.__previewed = false;
   gd.__first = spec.first;
   if (!spec.first) window.__mehanizmiPainted = false;  // a whole run: the next first run reports
   gd.__filename = spec.filename;
@@ -586,6 +655,24 @@ export default function (component) {
   gd.__send = gd.__send || { current: null };
   gd.__send.current = setTriggerValue;  // the newest mount's, as Streamlit hands it over
   updateCrank(gd, spec);
+  if (!same) draw(gd, spec, failed);
+  // called when the chart leaves the page: free Plotly's listeners. Streamlit also calls it
+  // for a chart that stays (a fragment's tick on a page whose join panel sits above the
+  // live part): purged then, mid-draw, the chart showed "TypeError: e.emit is not a
+  // function" and stayed blank until new data came. So only a chart whose div really left
+  // the document is purged.
+  return () => setTimeout(() => {
+    if (gd.isConnected) return;
+    gd.__generation += 1;  // a draw still under way is no longer this chart's
+    gd.__drawn = gd.__figureText = null;  // mounted again with the same figure, it is drawn again
+    waiting.delete(gd);
+    dropCrank(gd);
+    if (gd.__unhandle) gd.__unhandle();
+    if (gd.__Plotly) gd.__Plotly.purge(gd);
+  });
+}
+
+function draw(gd, spec, failed) {
   plotly(spec.src).then((Plotly) => schedule(gd, () => {
     // one toolbar button per file format instead of Plotly's camera (one format, set in
     // advance); no "Share chart" to Plotly's cloud (plotly.js 4 shows it by default): a
@@ -599,6 +686,7 @@ export default function (component) {
     // the page's decimal mark on ticks and hover labels (Serbian: 0,25), frames included
     if (spec.separators) spec.figure.layout = { ...spec.figure.layout, separators: spec.separators };
     gd.__layout = spec.figure.layout;  // and over the same layout
+    gd.__figure = spec.figure;  // (a slider's neighbours are patches on it)
     if (gd.__Plotly && gd.__Plotly !== Plotly) gd.__Plotly.purge(gd);  // drawn by another bundle
     gd.__Plotly = Plotly;
     let layout = fitted(gd, spec.figure.layout);
@@ -624,18 +712,4 @@ export default function (component) {
       })
       .catch(failed);
   })).catch(failed);
-  // called when the chart leaves the page: free Plotly's listeners. Streamlit also calls it
-  // for a chart that stays (a fragment's tick on a page whose join panel sits above the
-  // live part): purged then, mid-draw, the chart showed "TypeError: e.emit is not a
-  // function" and stayed blank until new data came. So only a chart whose div really left
-  // the document is purged.
-  return () => setTimeout(() => {
-    if (gd.isConnected) return;
-    gd.__generation += 1;  // a draw still under way is no longer this chart's
-    gd.__drawn = null;  // mounted again with the same figure, it is drawn again
-    waiting.delete(gd);
-    dropCrank(gd);
-    if (gd.__unhandle) gd.__unhandle();
-    if (gd.__Plotly) gd.__Plotly.purge(gd);
-  });
 }

@@ -30,7 +30,7 @@ import plotly
 import streamlit as st
 
 from figures.raw import RawFigure
-from ui.crank import Crank
+from ui.crank import Crank, follow
 from ui.firstpaint import chart_sent, painted
 from ui.i18n import LANGUAGES, t
 
@@ -145,7 +145,9 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     ``crank``: the chart's own φ₂ (or length) control (ui/crank.py). ``on_crank(value, asked)``
     is called before the rerun the control starts: with the value (degrees, metres) when the
     student lets go of it, with None when they first touch it or pick another of its choices,
-    to ask for the frames (``asked``: True, or the key of the choice picked).
+    to ask for the frames (``asked``: True, or the key of the choice picked). The browser
+    also says when the keyboard comes onto one of the page's sliders the chart follows, or
+    leaves them (trigger "near": ui.crank.follow).
 
     ``separators``: Plotly's decimal and thousands marks for the page's language (",." on
     a Serbian page), put into the figure's layout in the browser so that a cached figure
@@ -179,6 +181,8 @@ def plot(fig: RawFigure, key: str, filename: str, labels: dict[str, str],
     if on_crank is not None:
         events["on_at_change"] = lambda: on_crank(float(st.session_state[key]["at"]), True)
         events["on_frames_change"] = lambda: on_crank(None, st.session_state[key]["frames"])
+    if crank is not None and crank.follows:
+        events["on_near_change"] = lambda: follow(st.session_state[key]["near"])
     return _render(key=key, data=body.encode("utf-8"), **events)
 
 
