@@ -70,8 +70,9 @@ def base() -> dict:
     if "build_doc" not in st.session_state:
         start(template(START))
     now = st.session_state.get("build_now")
+    tables = f"build_{version()}_"  # the tables' keys (once: asked per key, 0.5 ms a rerun)
     if now is not None and now != st.session_state["build_doc"] and not any(
-            key.startswith(f"build_{version()}_") for key in st.session_state):
+            key.startswith(tables) for key in st.session_state):
         replace(now)  # back on the page: the tables left as they were
     return st.session_state["build_doc"]
 
