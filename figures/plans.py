@@ -130,7 +130,8 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         group = [(d.tail, d.head, KIND_COLOURS[d.arrow.kind]) for d in visible if d.current == current]
         arrows += arrow_traces(group, (3.0 if current else 1.8) * look.line,
                                opacity=0.45 if faded and not current else 1.0)
-    name_by_colour(arrows, {colour: t(KIND_KEYS[kind]) for kind, colour in KIND_COLOURS.items()})
+    kinds = {kind: t(key) for kind, key in KIND_KEYS.items()}  # once, not once an arrow
+    name_by_colour(arrows, {colour: kinds[kind] for kind, colour in KIND_COLOURS.items()})
     fig.add_raw(arrows)
     hover_x, hover_y, hover_text = [], [], []
     for d in visible:
@@ -140,7 +141,7 @@ def plan_figure(drawing: PlanDrawing, title: str, t: Text, look: Look = NORMAL) 
         hover_y.append(mid.imag)
         hover_text.append(t("plans.hover", name=html(d.arrow.symbol), cm=round(float(length), 2),
                             value=float(length * drawing.scale), unit=drawing.unit,
-                            kind=t(KIND_KEYS[d.arrow.kind])))
+                            kind=kinds[d.arrow.kind]))
     traces = [scatter(x=hover_x, y=hover_y, mode="markers", hoverinfo="text",
                       hovertext=hover_text, showlegend=False,
                       marker=dict(size=10 * look.line, color="rgba(0,0,0,0)"))]
