@@ -219,7 +219,7 @@ def at_the_instant(base: Scene, tol: float, upto: int) -> None:
     surveyed = scene.with_(at=base.driver.at)  # per geometry: φ₂ does not survey again
     survey = cycle(surveyed, tol)
     values = task_turn(base)
-    frames = cranks(scene, ("structure",), "structure", values, lambda angles: turn_frames(
+    frames = cranks(scene, ("structure",), "structure", values, lambda _, angles: turn_frames(
         surveyed, angles, tol, upto, current_language(), look()), asked)
     chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
           f"{scene.id}-structure", key="structure", crank=frames.get("structure"))

@@ -275,9 +275,10 @@ def polygons_tab(k: Kinetostatics, now: int, scene: Scene, values: tuple[float, 
     actions = free_body(k, groups[choice], now)
     uf = asked_uf or polygon_scale(a.force for a in actions)
     figures = polygon_figures(k, now, groups[choice], actions, uf)
-    frames = cranks(scene, ("free_body", "polygon"), "forces", values, lambda angles: turn_frames(
-        scene.with_(at=0.0), angles, st.session_state["inertia"], groups[choice], asked_uf,
-        current(), look()), asked)
+    frames = cranks(scene, ("free_body", "polygon"), "forces", values,
+                    lambda shown, angles: turn_frames(
+                        shown.with_(at=0.0), angles, st.session_state["inertia"], groups[choice],
+                        asked_uf, current(), look()), asked)
     chart(figures["free_body"], f"{scene.id}-free-body-{choice}", key="fig_free_body",
           crank=frames.get("free_body"))
     chart(figures["polygon"], f"{scene.id}-polygon-{choice}", key="fig_polygon",
@@ -381,9 +382,10 @@ def at_the_instant(loaded: Scene, steps: int) -> None:
     at_label = f"{num(st.session_state['at'], 4)}{'°' if rotating else ' m'}"
     if tabs[0].open:
         with tabs[0]:
-            frames = cranks(scene, ("loads",), "forces", values, lambda angles: turn_frames(
-                scene.with_(at=0.0), angles, st.session_state["inertia"], None, 0.0, current(),
-                look()), asked)
+            frames = cranks(scene, ("loads",), "forces", values,
+                            lambda shown, angles: turn_frames(
+                                shown.with_(at=0.0), angles, st.session_state["inertia"], None,
+                                0.0, current(), look()), asked)
             chart(loads_figure(k, now, at_label), f"{scene.id}-loads", key="fig_loads",
                   crank=frames.get("loads"))
         if not waiting():  # on a fresh visit, after the chart is painted (ui/firstpaint.py)

@@ -147,8 +147,9 @@ def plans_tab(scene: Scene, base: Scene, plans: Plans, scales: dict[str, float],
             method_doc("triad-plans")
     figures = plan_figures(scene, plans, scales, index)
     values = task_turn(base)
-    frames = cranks(scene, ("v", "a", "mech"), "plans", values, lambda angles: turn_frames(
-        scene.with_(at=0.0), angles, scales, index, current(), look()), asked)
+    frames = cranks(scene, ("v", "a", "mech"), "plans", values,
+                    lambda shown, angles: turn_frames(shown.with_(at=0.0), angles, scales, index,
+                                                      current(), look()), asked)
     left, right = st.columns(2)
     for column, plan, key in ((left, plans.velocity, "v"), (right, plans.acceleration, "a")):
         with column:

@@ -570,6 +570,7 @@ def same_numbers(got: list, want: list) -> bool:
 
 @pytest.mark.parametrize("path, label, expander", [
     ("velocity_plans?lang=en", "Crank angle", None),
+    ("velocity_plans?lang=en", "ω₂", None),
     ("trajectories?lang=en&scene=four-bar-crank-rocker", "(member 3)", "Link lengths")])
 def test_an_arrow_key_on_a_followed_slider_draws_the_next_figure_before_the_rerun(
         app_url, browser, path, label, expander):

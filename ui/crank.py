@@ -38,6 +38,7 @@ FRAMES = 36  # about this many frames along a slider's range (a link's length: e
 LIVE = "crank_live"  # session key: the student asked for the frames (see live())
 NEAR = "crank_near"  # session key: the page's slider (its key) the keyboard is on (see near())
 PHI_STEP = 0.5  # degrees: a step of the page's φ₂ slider (ui.scenes.driver_position)
+OMEGA = (-50.0, 50.0, 0.5)  # rad/s: the ends and step of its ω₂ slider (ui.scenes.driver_speed)
 
 
 @dataclass(frozen=True)
@@ -184,24 +185,30 @@ def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
 
 
 def cranks(scene: Scene, names: tuple[str, ...], group: str, values: tuple[float, ...],
-           frames: Callable[[tuple[float, ...]], dict[str, str]], asked: bool
+           frames: Callable[[Scene, tuple[float, ...]], dict[str, str]], asked: bool
            ) -> dict[str, Crank]:
     """The named charts' own φ₂ controls at the frame angles ``values`` (task_turn), moving
-    together as ``group``, on the angle the page shows; with their frames (``frames(values)``,
-    a page's cached crank_frames over those angles, in degrees) when the student asked, and
-    the figures one step of the page's φ₂ slider either side while the keyboard is on it.
-    None for a linear driver, whose stroke is no turn."""
+    together as ``group``, on the angle the page shows; with their frames when the student
+    asked (``frames(scene, values)``: a page's cached crank_frames of ``scene`` at those
+    angles, in degrees), and the figures one step of the page's φ₂ or ω₂ slider either side
+    while the keyboard is on it. None for a linear driver, whose stroke is no turn."""
     if scene.driver.kind != "rotating":
         return {}
-    sent = frames(values) if asked else {}
+    sent = frames(scene, values) if asked else {}
     at = st.session_state["at"]
-    close = {}
-    if keyboard_on(("at",)):
+    on = keyboard_on(("at", "omega"))
+    close: dict[str, str | None] = {}
+    if on == "at":
         phi = Ranged("φ₂", "φ₂", 0.0, 360.0, PHI_STEP, "°", at)
-        around = frames((at, *sides(phi)))
+        around = frames(scene, (at, *sides(phi)))
         close = {name: near_frames("at", phi, around.get(name)) for name in names}
+    elif on == "omega":
+        omega = Ranged("ω₂", "ω₂", *OMEGA, " s⁻¹", scene.driver.speed)
+        drawn = [frames(scene.with_(speed=w), (at,)) for w in (omega.value, *sides(omega))]
+        close = {name: near_figures("omega", omega, [d.get(name) for d in drawn])
+                 for name in names}
     shown = nearest(values, at)
-    return {name: Crank(values, shown, group, sent.get(name), follows=("at",),
+    return {name: Crank(values, shown, group, sent.get(name), follows=("at", "omega"),
                         near=close.get(name)) for name in names}
 
 
@@ -223,6 +230,22 @@ def near_frames(key: str, shown: Ranged, sent: str | None) -> str | None:
     if turn["frames"][0] is None:
         return None
     return json.dumps({"key": key, "values": list(sides(shown)), "frames": turn["frames"][1:]},
+                      separators=(",", ":"))
+
+
+def near_figures(key: str, shown: Ranged, sent: list[str | None]) -> str | None:
+    """As near_frames, from a chart's figure drawn apart at the value and at each of
+    ``sides(shown)`` (each crank_frames of one frame: a quantity that is no frame of a
+    page's turn, as ω₂)."""
+    figures = [None if s is None else json.loads(s) for s in sent]
+    figures = [None if f is None or f["frames"][0] is None else f["base"] for f in figures]
+    base = figures[0]
+    if base is None:
+        return None
+    varying = {k for f in figures[1:] if f for k, v in f["layout"].items()
+               if base["layout"].get(k) != v}
+    patches = [None if f is None else _patch(base, f, varying) for f in figures[1:]]
+    return json.dumps({"key": key, "values": list(sides(shown)), "frames": patches},
                       separators=(",", ":"))
 
 

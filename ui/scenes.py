@@ -18,7 +18,7 @@ from mechanisms.rotor import Rotor
 from mechanisms.writer import to_text
 from ui.cache import preset
 from ui.chapters import page_for
-from ui.crank import PHI_STEP
+from ui.crank import OMEGA, PHI_STEP
 from ui.i18n import current, message, note_of, source_of, t, title_of
 from ui.numbers import bound_link, bound_slider, link_option, slider
 
@@ -227,7 +227,8 @@ def driver_speed(scene: Scene, wait: bool = False) -> Scene:
     """The driver's speed slider (``omega`` in the URL): ω₂, or v for a slider; ``wait`` as
     for ``ui.numbers.bound_slider``."""
     if scene.driver.kind == "rotating":
-        speed = bound_slider(t("plans.omega"), -50.0, 50.0, step=0.5, key="omega", wait=wait)
+        low, high, step = OMEGA
+        speed = bound_slider(t("plans.omega"), low, high, step=step, key="omega", wait=wait)
     else:
         speed = bound_slider(t("plans.v"), -10.0, 10.0, step=0.1, key="omega", wait=wait)
     return scene.with_(speed=speed)
