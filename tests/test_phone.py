@@ -262,6 +262,22 @@ def test_the_crank_control_plays_and_steps_by_touch(app_url, phone):
     assert crank.locator("input[type='range']").get_attribute("aria-label") == "φ₂ [°]"
 
 
+NEAR_OF = "() => (document.querySelector('.mehanizmi-plot').__crank.spec.near || {}).key || null"
+
+
+def test_a_finger_on_a_slider_asks_for_no_neighbours_until_an_arrow_key_does(app_url, phone):
+    """A touch screen has no keyboard to follow a slider's focus (ui/plot.js): tapping φ₂'s
+    slider sends no neighbours; a keyboard's first arrow key there asks for them."""
+    page = phone(f"{app_url}/velocity_plans?lang=en")
+    slider = page.locator("[data-testid='stSlider'] input[type='range'][aria-label*='Crank angle']")
+    slider.first.focus()
+    page.wait_for_timeout(1500)  # (a focus's rerun takes well under this)
+    wait_idle(page)
+    assert page.evaluate(NEAR_OF) is None
+    page.keyboard.press("ArrowRight")
+    page.wait_for_function(f"() => ({NEAR_OF})() === 'at'", timeout=30_000)
+
+
 def test_a_tap_on_a_table_cell_edits_it(app_url, phone):
     page = phone(f"{app_url}/builder?lang=sr")
     grid = page.locator("[data-testid='stDataFrame']").first

@@ -479,8 +479,10 @@ function dropCrank(gd) {
 // once, and the rerun's own figure replaces that drawing when it comes (issue 83: the rerun
 // alone painted the first figure 1.6–2.2 times later than the floor's slider). The browser
 // tells the server when the keyboard comes onto such a slider and when it leaves them all
-// (the trigger "near"), so that no other run pays for the neighbours.
+// (the trigger "near"), so that no other run pays for the neighbours. A touch screen's
+// finger focuses a slider with no keyboard to follow: there the first arrow key tells it.
 let keyboardOn = null;  // the followed slider the server was last told of
+const TOUCH = window.matchMedia("(pointer: coarse)").matches;
 
 function sliderKey(el) {
   const slider = el && el.closest ? el.closest("[data-testid='stSlider']") : null;
@@ -503,7 +505,7 @@ function tellKeyboard(key) {
 
 window.addEventListener("focusin", (e) => {
   const key = sliderKey(e.target);
-  if (key !== null && followers(key).length) tellKeyboard(key);
+  if (!TOUCH && key !== null && followers(key).length) tellKeyboard(key);
 });
 window.addEventListener("focusout", (e) => {
   const next = sliderKey(e.relatedTarget);
@@ -517,6 +519,7 @@ window.addEventListener("keydown", (e) => {
       || e.metaKey) return;  // (shift moves a page of steps)
   const step = Number(e.target.step);
   const value = Number(e.target.value) + by * step;  // the slider reads its old value still
+  if (followers(key).length) tellKeyboard(key);  // (told already, but on a touch screen)
   for (const gd of followers(key)) {
     const near = gd.__crank.spec.near;
     const k = near && near.key === key && gd.__figure
