@@ -271,7 +271,7 @@ def test_a_finger_on_a_slider_asks_for_no_neighbours_until_an_arrow_key_does(app
     page = phone(f"{app_url}/velocity_plans?lang=en")
     slider = page.locator("[data-testid='stSlider'] input[type='range'][aria-label*='Crank angle']")
     slider.first.focus()
-    page.wait_for_timeout(1500)  # (a focus's rerun takes well under this)
+    page.wait_for_timeout(1000)  # (a focus's rerun and its answer take 0.1–0.3 s)
     wait_idle(page)
     assert page.evaluate(NEAR_OF) is None
     page.keyboard.press("ArrowRight")
