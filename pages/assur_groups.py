@@ -220,7 +220,8 @@ def at_the_instant(base: Scene, tol: float, upto: int) -> None:
     survey = cycle(surveyed, tol)
     values = task_turn(base)
     frames = cranks(scene, ("structure",), "structure", values, lambda _, angles: turn_frames(
-        surveyed, angles, tol, upto, current_language(), look()), asked)
+        surveyed, angles, tol, upto, current_language(), look()), asked,
+        follows=("at",))  # (the structure has no speed, and the page no ω₂)
     chart(structure_figure(current, 0, upto, t("assur.fig_title"), t, look(), survey),
           f"{scene.id}-structure", key="structure", crank=frames.get("structure"))
     for issue in survey.issues:

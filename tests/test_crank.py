@@ -198,6 +198,8 @@ def neighbours_drawn(at: AppTest, key: str, keys: tuple[str, ...], value: float)
 def test_phi2_s_neighbours_are_the_page_s_figures_a_step_either_side(path, state, keys):
     at = page(path, lang="en", at=40.0, **state)
     assert all(charts(at)[key]["crank"]["near"] is None for key in keys)  # not asked: none
+    speed = "assur" not in path  # (the Assur page has no ω₂ slider, its structure no speed)
+    assert all(("omega" in charts(at)[key]["crank"]["follows"]) == speed for key in keys)
     neighbours_drawn(at, "at", keys, 40.0)
 
 

@@ -185,18 +185,19 @@ def crank_frames(draw: Callable[[int, float], dict[str, RawFigure] | None],
 
 
 def cranks(scene: Scene, names: tuple[str, ...], group: str, values: tuple[float, ...],
-           frames: Callable[[Scene, tuple[float, ...]], dict[str, str]], asked: bool
-           ) -> dict[str, Crank]:
+           frames: Callable[[Scene, tuple[float, ...]], dict[str, str]], asked: bool,
+           follows: tuple[str, ...] = ("at", "omega")) -> dict[str, Crank]:
     """The named charts' own φ₂ controls at the frame angles ``values`` (task_turn), moving
     together as ``group``, on the angle the page shows; with their frames when the student
     asked (``frames(scene, values)``: a page's cached crank_frames of ``scene`` at those
-    angles, in degrees), and the figures one step of the page's φ₂ or ω₂ slider either side
-    while the keyboard is on it. None for a linear driver, whose stroke is no turn."""
+    angles, in degrees), and the figures one step of the page's φ₂ or ω₂ slider (of those
+    the charts ``follows``) either side while the keyboard is on it. None for a linear
+    driver, whose stroke is no turn."""
     if scene.driver.kind != "rotating":
         return {}
     sent = frames(scene, values) if asked else {}
     at = st.session_state["at"]
-    on = keyboard_on(("at", "omega"))
+    on = keyboard_on(follows)
     close: dict[str, str | None] = {}
     if on == "at":
         phi = Ranged("φ₂", "φ₂", 0.0, 360.0, PHI_STEP, "°", at)
@@ -208,7 +209,7 @@ def cranks(scene: Scene, names: tuple[str, ...], group: str, values: tuple[float
         close = {name: near_figures("omega", omega, [d.get(name) for d in drawn])
                  for name in names}
     shown = nearest(values, at)
-    return {name: Crank(values, shown, group, sent.get(name), follows=("at", "omega"),
+    return {name: Crank(values, shown, group, sent.get(name), follows=follows,
                         near=close.get(name)) for name in names}
 
 
