@@ -12,7 +12,7 @@ from streamlit.testing.v1 import AppTest
 from figures.raw import RawFigure
 from mechanisms import load_preset
 from tests.test_pages import ROOT, charts, decode, page
-from ui.crank import (LIVE, NEAR, PHI_STEP, Crank, Ranged, along, crank_frames, nearest, sides,
+from ui.crank import (LIVE, NEAR, PHI, Crank, Ranged, along, crank_frames, nearest, sides,
                       task_turn, turn)
 
 
@@ -156,7 +156,7 @@ def test_a_length_s_frames_run_along_its_slider_with_the_shown_length_among_them
 # --- the page's own slider with the keyboard on it: its neighbours come with the chart
 
 def test_an_arrow_key_s_neighbours_stay_within_the_slider_s_range():
-    phi = Ranged("φ₂", "φ₂", 0.0, 360.0, PHI_STEP, "°", 40.0)
+    phi = Ranged("φ₂", "φ₂", *PHI, "°", 40.0)
     assert sides(phi) == (39.5, 40.5)
     assert sides(phi._replace(value=0.0)) == (0.5,) and sides(phi._replace(value=360.0)) == (359.5,)
     length = Ranged("AB", "AB", 0.0875, 0.7, 0.0035, " m", 0.35)

@@ -15,7 +15,7 @@ import brotli
 import pytest
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
-from .test_browser import CHROMIUM, FLAGS, ROOT, keep, wait_idle
+from .test_browser import CHROMIUM, FLAGS, NEAR_OF, ROOT, keep, wait_idle
 from .test_builder_browser import SHAPES, screen_of, shapes
 
 pytestmark = pytest.mark.browser
@@ -260,9 +260,6 @@ def test_the_crank_control_plays_and_steps_by_touch(app_url, phone):
     page.wait_for_function("([e, s]) => e.innerText !== s", arg=[label.element_handle(), seen],
                            timeout=30_000)  # and φ₂ moves on its own
     assert crank.locator("input[type='range']").get_attribute("aria-label") == "φ₂ [°]"
-
-
-NEAR_OF = "() => (document.querySelector('.mehanizmi-plot').__crank.spec.near || {}).key || null"
 
 
 def test_a_finger_on_a_slider_asks_for_no_neighbours_until_an_arrow_key_does(app_url, phone):

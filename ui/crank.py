@@ -36,8 +36,8 @@ from ui.url import linked, said_of_link, url_drop, url_set
 STEP_DEG = 5.0  # 72 frames a turn: smooth to scrub, small enough to send
 FRAMES = 36  # about this many frames along a slider's range (a link's length: every 5th step)
 LIVE = "crank_live"  # session key: the student asked for the frames (see live())
-NEAR = "crank_near"  # session key: the page's slider (its key) the keyboard is on (see near())
-PHI_STEP = 0.5  # degrees: a step of the page's φ₂ slider (ui.scenes.driver_position)
+NEAR = "crank_near"  # session key: the page's slider (its key) the keyboard is on (see follow())
+PHI = (0.0, 360.0, 0.5)  # degrees: the ends and step of a page's φ₂ slider (ui.scenes)
 OMEGA = (-50.0, 50.0, 0.5)  # rad/s: the ends and step of its ω₂ slider (ui.scenes.driver_speed)
 
 
@@ -66,7 +66,7 @@ class Crank:
     wraps: bool = True  # a step past the last value comes round to the first (not a length)
     unreachable: str = "fig.unreachable"
     follows: tuple[str, ...] = ()  # the page's sliders (keys) whose neighbours it can send
-    near: str | None = None  # {"key", "values", "frames"}: see near()
+    near: str | None = None  # {"key", "values", "frames"}: see near_frames()
 
     def json(self) -> str:
         return (f'{{"values": {json.dumps(list(self.values))}, "index": {self.index}, '
@@ -200,7 +200,7 @@ def cranks(scene: Scene, names: tuple[str, ...], group: str, values: tuple[float
     on = keyboard_on(follows)
     close: dict[str, str | None] = {}
     if on == "at":
-        phi = Ranged("φ₂", "φ₂", 0.0, 360.0, PHI_STEP, "°", at)
+        phi = Ranged("φ₂", "φ₂", *PHI, "°", at)
         around = frames(scene, (at, *sides(phi)))
         close = {name: near_frames("at", phi, around.get(name)) for name in names}
     elif on == "omega":
@@ -230,8 +230,7 @@ def near_frames(key: str, shown: Ranged, sent: str | None) -> str | None:
     turn = json.loads(sent)
     if turn["frames"][0] is None:
         return None
-    return json.dumps({"key": key, "values": list(sides(shown)), "frames": turn["frames"][1:]},
-                      separators=(",", ":"))
+    return _near(key, shown, turn["frames"][1:])
 
 
 def near_figures(key: str, shown: Ranged, sent: list[str | None]) -> str | None:
@@ -245,7 +244,13 @@ def near_figures(key: str, shown: Ranged, sent: list[str | None]) -> str | None:
         return None
     varying = {k for f in figures[1:] if f for k, v in f["layout"].items()
                if base["layout"].get(k) != v}
-    patches = [None if f is None else _patch(base, f, varying) for f in figures[1:]]
+    return _near(key, shown, [None if f is None else _patch(base, f, varying)
+                              for f in figures[1:]])
+
+
+def _near(key: str, shown: Ranged, patches: list[dict | None]) -> str:
+    """What the browser is sent of a slider's neighbours (ui/plot.js): the slider, the
+    values one arrow key sets (``sides``), and the chart's patch at each."""
     return json.dumps({"key": key, "values": list(sides(shown)), "frames": patches},
                       separators=(",", ":"))
 

@@ -510,17 +510,20 @@ window.addEventListener("focusin", (e) => {
 window.addEventListener("focusout", (e) => {
   const next = sliderKey(e.relatedTarget);
   // a window left (another tab) keeps the slider: its focus comes back with the window
-  if (keyboardOn !== null && document.hasFocus() && !(next && followers(next).length)) tellKeyboard(null);
+  const onAnother = next !== null && followers(next).length > 0;
+  if (keyboardOn !== null && document.hasFocus() && !onAnother) tellKeyboard(null);
 });
 window.addEventListener("keydown", (e) => {
   const by = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1 }[e.key];
   const key = sliderKey(e.target);
   if (!by || key === null || e.target.type !== "range" || e.shiftKey || e.altKey || e.ctrlKey
       || e.metaKey) return;  // (shift moves a page of steps)
+  const charts = followers(key);
+  if (!charts.length) return;
+  tellKeyboard(key);  // (told already by its focus, but on a touch screen)
   const step = Number(e.target.step);
   const value = Number(e.target.value) + by * step;  // the slider reads its old value still
-  if (followers(key).length) tellKeyboard(key);  // (told already, but on a touch screen)
-  for (const gd of followers(key)) {
+  for (const gd of charts) {
     const near = gd.__crank.spec.near;
     const k = near && near.key === key && gd.__figure
       ? near.values.findIndex((v) => Math.abs(v - value) < step / 1000) : -1;

@@ -18,7 +18,7 @@ from mechanisms.rotor import Rotor
 from mechanisms.writer import to_text
 from ui.cache import preset
 from ui.chapters import page_for
-from ui.crank import OMEGA, PHI_STEP
+from ui.crank import OMEGA, PHI
 from ui.i18n import current, message, note_of, source_of, t, title_of
 from ui.numbers import bound_link, bound_slider, link_option, slider
 
@@ -198,7 +198,8 @@ def driver_position(base: Scene) -> Scene:
     """The driver's position slider (φ₂ in degrees, or s in m for a slider), kept in the URL
     as ``at``; the scene at that position."""
     if base.driver.kind == "rotating":
-        at = bound_slider(t("plans.phi"), 0.0, 360.0, step=PHI_STEP, key="at")
+        low, high, step = PHI
+        at = bound_slider(t("plans.phi"), low, high, step=step, key="at")
         if at == driver_start(base):
             return base  # the file's φ₂ exactly: radians(degrees(φ)) may differ in the last bit
         return base.with_(at=math.radians(at))
