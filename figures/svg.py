@@ -12,13 +12,13 @@ headless browser, Kaleido, for what these few line drawings need.)
 
 from __future__ import annotations
 
-import base64
 import html
 import math
 import re
 
 import numpy as np
 
+from .linkage import unpacked
 from .raw import RawFigure
 
 PX = 2.54 / 96  # cm a CSS pixel
@@ -29,10 +29,7 @@ _TAG = re.compile(r"<(/?)(sub|sup|b|i|br)\s*/?>|<[^>]*>", re.IGNORECASE)
 
 def _values(array) -> list[float | None]:
     """A trace's coordinates: a list, a numpy array, or Plotly's typed array (base64)."""
-    if isinstance(array, dict) and "bdata" in array:
-        array = np.frombuffer(base64.b64decode(array["bdata"]), dtype=array["dtype"])
-    return [None if v is None or (isinstance(v, float) and math.isnan(v)) else float(v)
-            for v in (array.tolist() if isinstance(array, np.ndarray) else list(array))]
+    return [None if math.isnan(v) else v for v in unpacked(array).tolist()]
 
 
 def _each(value, n: int) -> list:

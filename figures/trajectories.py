@@ -7,7 +7,7 @@ import numpy as np
 from mechanisms.schema import FRAME, Scene
 from solvers.kinematics import Motion
 
-from .linkage import Text, mechanism_traces, pose, scatter
+from .linkage import Text, gapped, mechanism_traces, packed, pose, scatter, unpacked
 from .raw import RawFigure
 from .style import FRAME_COLOUR, NORMAL, Look, margins, path_colour, plane_layout
 
@@ -81,7 +81,7 @@ def _joined(traces: list[dict]) -> dict:
     """Traces of one kind as one trace, a gap between each."""
     trace = dict(traces[0])
     for axis in ("x", "y"):
-        trace[axis] = [v for tr in traces for v in [*tr[axis], None]]
+        trace[axis] = packed(gapped(tr[axis] for tr in traces))
     return trace
 
 
@@ -89,7 +89,7 @@ def compass_circles(scene: Scene, t: Text, look: Look) -> list[dict]:
     """The circles a student draws with the compass: every point of a member pinned to the
     frame moves on a circle about that pivot (the crank circle, the rocker's arc)."""
     ring = np.exp(1j * np.linspace(0, 2 * np.pi, 121))
-    xs, ys = [], []
+    circles = []
     for pair in scene.pairs:
         if pair.kind != "revolute" or FRAME not in pair.members:
             continue
@@ -98,10 +98,9 @@ def compass_circles(scene: Scene, t: Text, look: Look) -> list[dict]:
         pivot = member.points[pair.point]
         for name, local in member.points.items():
             if name != pair.point:
-                circle = centre + abs(local - pivot) * ring
-                xs += list(circle.real) + [None]
-                ys += list(circle.imag) + [None]
-    return [scatter(x=xs, y=ys, mode="lines", name=t("fig.compass"), hoverinfo="skip",
+                circles.append(centre + abs(local - pivot) * ring)
+    return [scatter(x=gapped(c.real for c in circles), y=gapped(c.imag for c in circles),
+                    mode="lines", name=t("fig.compass"), hoverinfo="skip",
                     line=dict(color="#999999", width=1 * look.line, dash="dash"))]
 
 
@@ -209,8 +208,8 @@ def compass_figure(scene: Scene, steps: list, texts: list[str], title: str, t: T
     indices = fig.add_raw(whole)
     fig.add_frames([dict(data=drawn(s), traces=indices, name=str(s),
                          layout=dict(title=dict(text=texts[s]))) for s in range(len(steps))])
-    x = np.array([v for trace in whole for v in trace["x"] if v is not None] + [z.real for z in pivots])
-    y = np.array([v for trace in whole for v in trace["y"] if v is not None] + [z.imag for z in pivots])
+    x = np.concatenate([unpacked(trace["x"]) for trace in whole] + [[z.real for z in pivots]])
+    y = np.concatenate([unpacked(trace["y"]) for trace in whole] + [[z.imag for z in pivots]])
     _fixed_range(fig, x, y)  # every arc and point stays in the frame
     jump = dict(frame=dict(duration=0, redraw=True), mode="immediate")
     fig.merge_layout(dict(
@@ -267,8 +266,4 @@ def _arc(centre: complex, radius: float, near: complex | None, full: bool = Fals
 
 
 def _gapped(curves: list[np.ndarray]) -> dict:
-    xs, ys = [], []
-    for c in curves:
-        xs += list(c.real) + [None]
-        ys += list(c.imag) + [None]
-    return dict(x=xs, y=ys)
+    return dict(x=gapped(c.real for c in curves), y=gapped(c.imag for c in curves))

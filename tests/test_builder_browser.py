@@ -200,8 +200,9 @@ def test_the_exam_four_bar_is_built_by_dragging_and_typing_and_read_on_the_plans
 
 def test_dragging_a_pivot_redraws_the_paths(app_url, browser, tmp_path):
     page = builder(browser, app_url, "sr")
-    paths = "() => Array.from(document.querySelector('.mehanizmi-plot').data[0].x).join()"
+    paths = "() => Array.from(document.querySelector('.mehanizmi-plot')._fullData[0].x).join()"
     before = page.evaluate(paths)
+    assert before.count(",") > 100  # (Plotly's decoded arrays: the figure sends them packed)
     drag_point(page, "O", -0.05 + 0.02j)
     assert shapes(page)["O"] == pytest.approx(-0.05 + 0.02j, abs=1e-12)
     assert page.evaluate(paths) != before

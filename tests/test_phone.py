@@ -148,7 +148,7 @@ def test_a_finger_drags_a_joint_of_the_builder_and_the_drawing_follows(app_url, 
     wait_idle(page)
     after = shapes(page)
     assert abs(after["D"] - target) < 0.01  # snapped to round millimetres near the finger
-    paths = "() => Array.from(document.querySelector('.mehanizmi-plot').data[0].x).join()"
+    paths = "() => Array.from(document.querySelector('.mehanizmi-plot')._fullData[0].x).join()"
     assert page.evaluate(paths)  # the paths were redrawn for the new pivot
     assert page.locator("[data-testid='stException']").count() == 0
 

@@ -138,8 +138,7 @@ def test_the_construction_numbers_the_crank_pin_and_draws_the_compass_circles():
     spec = chart(at, "paths")
     assert traces(spec, "positions of B") and traces(spec, "positions of K")
     (circles,) = traces(spec, "compass circles")
-    x = np.array([np.nan if v is None else v for v in circles["x"]], float)
-    y = np.array([np.nan if v is None else v for v in circles["y"]], float)
+    x, y = np.asarray(decode(circles["x"]), float), np.asarray(decode(circles["y"]), float)
     first, second = np.split(x + 1j * y, np.flatnonzero(np.isnan(x))[:2])[:2]
     radii = sorted([np.nanmean(np.abs(first - 0)), np.nanmean(np.abs(second[1:] - 0.2))])
     assert radii == pytest.approx([0.06, 0.16], abs=1e-3)  # crank AB about A, rocker DC about D
@@ -156,7 +155,7 @@ def test_the_construction_shows_the_mechanism_in_pencil_in_each_position_it_reac
     scene = load_preset("analitika-2.1")
     motion = solve(scene, cycle_values(scene, 12))
     per_copy = sum(len(m.points) + (len(m.points) > 2) + 1 for m in scene.members.values())
-    assert len(pencil["x"]) == per_copy * int(motion.feasible.sum())
+    assert len(decode(pencil["x"])) == per_copy * int(motion.feasible.sum())
     assert motion.feasible.sum() < 12  # this four-bar cannot pass a range: fewer copies
     (frame,) = traces(figure, "1 frame")
     assert frame["opacity"] == 1.0
