@@ -2,6 +2,14 @@
 static files gzipped once for a browser that accepts it, and the sessions' page scripts run
 one at a time (scripts/turns.py).
 
+The flush pause: Streamlit's loop sends a session's queued messages, then sleeps 5 ms
+(``MESSAGE_FLUSH_INTERVAL_SECS``) before it looks again. A page whose run takes longer than
+that had its later messages wait for the next look: the plans page's φ₂ rerun ran its
+script in 7 ms and its last message left at 14 ms (a timeline of the server's sends), a
+one-slider page's run fits in the first look. At 1 ms (``FLUSH``) the pages' reruns went
+13–14 → 9–10 ms (bench/pages.py) and 30 sessions at once from p50 18 / p95 49 to 12 / 34 ms
+(deploy/loadtest.py); the pause still gathers a run's messages under a class's load.
+
 Nagle: Streamlit (1.67) creates its listening socket without naming TCP as the protocol, and
 asyncio sets TCP_NODELAY only on sockets that name it. With Nagle's algorithm on, every
 message a rerun sends after the first waits for the browser's delayed ACK, 40 ms on Linux: a
@@ -41,6 +49,7 @@ from pathlib import Path
 
 import brotli
 from streamlit import config, delta_generator, file_util
+from streamlit.runtime import runtime
 from streamlit.web import cli
 from streamlit.web.server.starlette import starlette_app
 
@@ -55,6 +64,7 @@ PREFIXES = ("/static/", "/app/static/")
 YEAR = b"public, immutable, max-age=31536000"
 NAMED = ("/app/static/plotly-", "/app/static/plot-")  # Plotly's bundles, ui/plot.py's script
 STORE = ROOT / ".cache" / "compressed"  # best encodings by content: <sha256>.<coding>
+FLUSH = 0.001  # s: Streamlit's pause between sending a session's queued messages (5 ms)
 
 
 def _coding(scope) -> bytes | None:
@@ -275,6 +285,7 @@ PACKAGES = ("ui", "figures", "methods", "solvers", "mechanisms", "classes", "exa
 def main() -> None:
     warm()
     asyncio.base_events._set_nodelay = _set_nodelay  # called for every accepted connection
+    runtime.MESSAGE_FLUSH_INTERVAL_SECS = FLUSH  # read by the runtime's loop at each pause
     starlette_app.create_streamlit_middleware = _with_precompressed
     turns.install()  # one page script at a time (scripts/turns.py)
     sys.argv = ["streamlit", "run", *sys.argv[1:]]

@@ -1,7 +1,8 @@
 """scripts/serve.py: the server's connections send at once (TCP_NODELAY), also on a
 listening socket made the way Streamlit makes it (no protocol named, proto 0); a static
 file's best encodings are kept on disk and the next server serves them from there; page
-scripts take turns (scripts/turns.py)."""
+scripts take turns (scripts/turns.py); a session's messages wait 1 ms between flushes, not
+Streamlit's 5."""
 
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from pathlib import Path
 
 import brotli
 from streamlit import delta_generator
+from streamlit.runtime import runtime, runtime_util
 from streamlit.runtime.scriptrunner.script_runner import ScriptRunner
 
 from scripts import serve
@@ -64,6 +66,7 @@ def launch(monkeypatch, tmp_path, frozen: list | None = None) -> list:
     monkeypatch.setattr(serve.starlette_app, "create_streamlit_middleware",
                         serve.starlette_app.create_streamlit_middleware)
     monkeypatch.setattr(ScriptRunner, "_run_script", ScriptRunner._run_script)
+    monkeypatch.setattr(runtime, "MESSAGE_FLUSH_INTERVAL_SECS", runtime.MESSAGE_FLUSH_INTERVAL_SECS)
     started = []
     monkeypatch.setattr(serve.cli, "main", lambda: started.append(serve.sys.argv))
     monkeypatch.setattr(serve.sys, "argv", ["serve.py", "app.py", "--server.port", "8999"])
@@ -109,6 +112,19 @@ def test_a_store_not_reached_yet_does_not_stop_the_server(monkeypatch, capsys):
     monkeypatch.setattr(serve.gc, "freeze", lambda: None)
     serve.warm()
     assert "the class store is not reached yet: ConnectionRefusedError" in capsys.readouterr().err
+
+
+def test_the_launcher_shortens_streamlit_s_pause_between_sending_a_session_s_messages(
+        monkeypatch, tmp_path):
+    """Streamlit's loop sleeps 5 ms after each flush of a session's messages (if this first
+    assertion fails, Streamlit changed it upstream); the runtime's loop reads the pause from
+    its module's globals, where the launcher sets it."""
+    assert runtime_util.MESSAGE_FLUSH_INTERVAL_SECS == 0.005
+    loop = runtime.Runtime._loop_coroutine
+    assert "MESSAGE_FLUSH_INTERVAL_SECS" in loop.__code__.co_names
+    assert loop.__globals__ is vars(runtime)
+    launch(monkeypatch, tmp_path)
+    assert runtime.MESSAGE_FLUSH_INTERVAL_SECS == serve.FLUSH < 0.005
 
 
 def test_the_launcher_makes_every_script_run_take_turns(monkeypatch, tmp_path):
