@@ -4,6 +4,7 @@ Skipped on a developer machine without /usr/bin/chromium; in CI (CI=true) a miss
 browser is a failure, never a silent skip.
 """
 
+import itertools
 import json
 import math
 import os
@@ -32,8 +33,21 @@ IDLE = """() => document.querySelector("[data-testid='stApp'][data-test-script-s
   && ![...document.querySelectorAll('.mehanizmi-plot')].some((g) => g.__first)"""
 
 
+# idle for 100 ms on end: a run that reruns itself (``st.rerun``: a first run that drew no
+# chart, ui/firstpaint.py) is "not running" for a moment between its two runs, which a
+# browser sees since the server sends a session's messages 1 ms apart (scripts/serve.py)
+# (each wait its own clock: ``since`` names it)
+STILL = f"""(since) => {{
+  const clocks = window.__idleSince = window.__idleSince || {{}};
+  if (!({IDLE})()) {{ clocks[since] = null; return false; }}
+  clocks[since] = clocks[since] ?? performance.now();
+  return performance.now() - clocks[since] >= 100;
+}}"""
+_WAITS = itertools.count()
+
+
 def wait_idle(page) -> None:
-    page.wait_for_function(IDLE, timeout=30_000)
+    page.wait_for_function(STILL, arg=next(_WAITS), timeout=30_000)
 
 
 def plot_x(page, which: int = 0) -> list:
