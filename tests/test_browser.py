@@ -33,7 +33,7 @@ IDLE = """() => document.querySelector("[data-testid='stApp'][data-test-script-s
   && ![...document.querySelectorAll('.mehanizmi-plot')].some((g) => g.__first)"""
 
 
-# idle for 100 ms on end: a run that reruns itself (``st.rerun``: a first run that drew no
+# idle for 50 ms on end: a run that reruns itself (``st.rerun``: a first run that drew no
 # chart, ui/firstpaint.py) is "not running" for a moment between its two runs, which a
 # browser sees since the server sends a session's messages 1 ms apart (scripts/serve.py)
 # (each wait its own clock: ``since`` names it)
@@ -41,7 +41,7 @@ STILL = f"""(since) => {{
   const clocks = window.__idleSince = window.__idleSince || {{}};
   if (!({IDLE})()) {{ clocks[since] = null; return false; }}
   clocks[since] = clocks[since] ?? performance.now();
-  return performance.now() - clocks[since] >= 100;
+  return performance.now() - clocks[since] >= 50;
 }}"""
 _WAITS = itertools.count()
 
