@@ -8,7 +8,7 @@ import numpy as np
 
 from mechanisms.schema import Scene
 
-from .linkage import Text, gapped, mechanism_traces, scatter
+from .linkage import Text, gapped_xy, mechanism_traces, scatter
 from .raw import RawFigure
 from .style import FRAME_COLOUR, NORMAL, Look, plane_layout
 
@@ -33,9 +33,8 @@ def builder_figure(scene: Scene, positions: dict[str, complex], rotations: dict[
     to keep the user's own shape edits (``editrevision``)."""
     fig = RawFigure()
     if paths:
-        fig.add_raw([scatter(x=gapped(z.real for z in paths.values()),
-                             y=gapped(z.imag for z in paths.values()),
-                             mode="lines", name=t("build.paths"), hoverinfo="skip",
+        fig.add_raw([scatter(**gapped_xy(paths.values()), mode="lines", name=t("build.paths"),
+                             hoverinfo="skip",
                              line=dict(color=PATH_COLOUR, width=1 * look.line, dash="dot"))])
     fig.add_raw(mechanism_traces(scene, positions, rotations, t, look))
     r = HANDLE * extent(positions)

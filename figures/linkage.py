@@ -56,6 +56,12 @@ def gapped(pieces: Iterable) -> np.ndarray:
                           or [np.empty(0)])
 
 
+def gapped_xy(curves: Iterable[np.ndarray]) -> dict[str, np.ndarray]:
+    """Curves in the complex plane as one trace's ``x`` and ``y``, ``gapped``."""
+    curves = list(curves)
+    return dict(x=gapped(c.real for c in curves), y=gapped(c.imag for c in curves))
+
+
 def _xy(points: list[complex]) -> tuple[list[float], list[float]]:
     return [p.real for p in points], [p.imag for p in points]
 

@@ -7,7 +7,8 @@ import numpy as np
 from mechanisms.schema import FRAME, Scene
 from solvers.kinematics import Motion
 
-from .linkage import Text, gapped, mechanism_traces, packed, pose, scatter, unpacked
+from .linkage import (Text, gapped, gapped_xy, mechanism_traces, packed, pose, scatter,
+                      unpacked)
 from .raw import RawFigure
 from .style import FRAME_COLOUR, NORMAL, Look, margins, path_colour, plane_layout
 
@@ -99,8 +100,7 @@ def compass_circles(scene: Scene, t: Text, look: Look) -> list[dict]:
         for name, local in member.points.items():
             if name != pair.point:
                 circles.append(centre + abs(local - pivot) * ring)
-    return [scatter(x=gapped(c.real for c in circles), y=gapped(c.imag for c in circles),
-                    mode="lines", name=t("fig.compass"), hoverinfo="skip",
+    return [scatter(**gapped_xy(circles), mode="lines", name=t("fig.compass"), hoverinfo="skip",
                     line=dict(color="#999999", width=1 * look.line, dash="dash"))]
 
 
@@ -192,11 +192,11 @@ def compass_figure(scene: Scene, steps: list, texts: list[str], title: str, t: T
             if step.what == "path":
                 paths.append(_closed(np.array(list(step.found.values()))))
         pencil = dict(color="#999999", width=1 * look.line)
-        return [scatter(**_gapped(old), mode="lines", hoverinfo="skip", name=t("fig.compass"),
+        return [scatter(**gapped_xy(old), mode="lines", hoverinfo="skip", name=t("fig.compass"),
                         line=pencil),
-                scatter(**_gapped(new), mode="lines", hoverinfo="skip", showlegend=False,
+                scatter(**gapped_xy(new), mode="lines", hoverinfo="skip", showlegend=False,
                         line=dict(color=path_colour(1), width=2.5 * look.line)),
-                scatter(**_gapped(paths), mode="lines", hoverinfo="skip", showlegend=False,
+                scatter(**gapped_xy(paths), mode="lines", hoverinfo="skip", showlegend=False,
                         line=dict(color=path_colour(0), width=2 * look.line, shape="spline")),
                 scatter(x=[z.real for z in found.values()], y=[z.imag for z in found.values()],
                         mode="markers+text", text=list(found), textposition="top center",
@@ -263,7 +263,3 @@ def _arc(centre: complex, radius: float, near: complex | None, full: bool = Fals
         return centre + radius * np.exp(1j * np.linspace(0, 2 * np.pi, 121))
     mid = np.angle(near - centre)
     return centre + radius * np.exp(1j * (mid + np.linspace(-0.35, 0.35, 25)))
-
-
-def _gapped(curves: list[np.ndarray]) -> dict:
-    return dict(x=gapped(c.real for c in curves), y=gapped(c.imag for c in curves))
