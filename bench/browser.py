@@ -98,7 +98,7 @@ def measure(page, url: str, label: str, expander: str | None) -> tuple[float, fl
 
 # φ₂ scrubbed in the browser (ui/crank.py): from the slider's input event to the frame that
 # paints the first chart redrawn (the one on screen), and to the one after the last chart.
-# The first chart's figure is kept (window.__scrubbed) for PLOTLY_REDRAW.
+# The first chart's figure is kept (window.__scrubbed) for its floor (FLOOR_DRAW).
 SCRUB = """([k, charts]) => new Promise((resolve) => {
   const react = window.Plotly.react;
   const start = performance.now();
@@ -120,35 +120,31 @@ SCRUB = """([k, charts]) => new Promise((resolve) => {
   range.value = String(k % (Number(range.max) + 1));
   range.dispatchEvent(new Event('input'));
 })"""
-# The scrub's floor (issue 83): bare Plotly drawing the same figures, in the same order, at
-# the chart's size — from Plotly.react to the frame that paints it, as SCRUB times the first
-# chart. Drawn twice: in a blank page of its own, and in bare Streamlit's page (the floor
-# app's, a div of its own under its small chart). The second is the scrub's floor, as bare
-# Streamlit's page is the first chart's: in any Streamlit page JavaScript's array copies
-# (slice, concat: Plotly's walk over a trace's attributes is made of them) run about six
-# times slower than in a blank page (docs/performance.md), and no page of the app escapes
-# that. What the scrub adds to it is ours: the control, the frame's figure assembled, the
-# page around the chart.
-SCRUBBED_FIGURES = """() => JSON.stringify(window.__scrubbed.map(([gd, figure]) => ({
-  data: figure.data, layout: {...figure.layout, width: gd.clientWidth, height: gd.clientHeight}})),
-  (key, value) => ArrayBuffer.isView(value) ? Array.from(value) : value)"""
+# The scrub's floor (issue 83): bare Plotly drawing the same figure at the chart's size —
+# from Plotly.react to the frame that paints it, as SCRUB times the first chart — right
+# after each step, so the machine's speed (it moves by a third within a run, and by more
+# in a slow hour) moves a step and its floor alike. Drawn twice: in a blank page of its
+# own, and in bare Streamlit's page (the floor app's, a div of its own under its small
+# chart). The second is the scrub's floor, as bare Streamlit's page is the first chart's:
+# in any Streamlit page JavaScript's array copies (slice, concat: Plotly's walk over a
+# trace's attributes is made of them) run about six times slower than in a blank page
+# (docs/performance.md), and no page of the app escapes that. What the scrub adds to it is
+# ours: the control, the frame's figure assembled, the page around the chart.
+SCRUBBED_FIGURE = """() => { const [gd, figure] = window.__scrubbed.pop();
+  return JSON.stringify({data: figure.data,
+                         layout: {...figure.layout, width: gd.clientWidth, height: gd.clientHeight}},
+    (key, value) => ArrayBuffer.isView(value) ? Array.from(value) : value); }"""
 BUNDLE = ("() => new URL(Object.keys(window.__mehanizmiPlotly)[0], document.baseURI).href"
           )  # the bundle the page's charts were drawn with
-PLOTLY_REDRAW = """(figures) => new Promise(async (resolve) => {
+FLOOR_DRAW = """(text) => new Promise((resolve) => {
   const gd = document.getElementById('gd');
-  await Plotly.newPlot(gd, figures[figures.length - 1]);
-  const times = [];
-  for (const figure of figures) {
-    await new Promise((next) => setTimeout(next, 50));  // as apart as the scrub's steps
-    const start = performance.now();
-    Plotly.react(gd, figure);
-    await new Promise((painted) => requestAnimationFrame(painted));
-    times.push(performance.now() - start);
-  }
-  times.sort((a, b) => a - b);
-  resolve(times[Math.floor(times.length / 2)]);
+  const figure = JSON.parse(text);
+  if (!gd.data) return Plotly.newPlot(gd, figure).then(() => resolve(null));
+  const start = performance.now();
+  Plotly.react(gd, figure);
+  requestAnimationFrame(() => resolve(performance.now() - start));
 })"""
-# a div for PLOTLY_REDRAW in bare Streamlit's page, under its chart, and the page's bundle
+# a div for FLOOR_DRAW in bare Streamlit's page, under its chart, and the page's bundle
 # loaded as a plain script (a Plotly of its own: its label caches as cold as the scrub's)
 IN_STREAMLIT = """(bundle) => new Promise((resolve) => {
   const gd = document.createElement('div');
@@ -161,26 +157,19 @@ IN_STREAMLIT = """(bundle) => new Promise((resolve) => {
 })"""
 
 
-def plotly_redraw(page, floor_url: str) -> tuple[float, float]:
-    """The scrub's floors: median ms of bare Plotly redrawing the figures ``page``'s scrub
-    drew into its first chart (``PLOTLY_REDRAW``), in a blank page and in bare Streamlit's
-    page (``floor_url``)."""
-    figures = page.evaluate(SCRUBBED_FIGURES)
+def floor_pages(page, floor_url: str) -> list:
+    """The scrub's two floors, ready to draw (``FLOOR_DRAW``): a blank page with the bundle
+    ``page``'s charts were drawn with, and bare Streamlit's page (``floor_url``)."""
     bundle = page.evaluate(BUNDLE)
-    times = []
-    for url in (None, floor_url):
-        other = page.context.new_page()
-        if url is None:
-            other.set_content(f'<script src="{bundle}"></script><div id="gd"></div>')
-        else:
-            other.goto(url)
-            other.wait_for_selector(".js-plotly-plot", timeout=60_000)
-            other.wait_for_timeout(1000)
-            other.evaluate(IN_STREAMLIT, bundle)
+    blank, bare = page.context.new_page(), page.context.new_page()
+    blank.set_content(f'<script src="{bundle}"></script><div id="gd"></div>')
+    bare.goto(floor_url)
+    bare.wait_for_selector(".js-plotly-plot", timeout=60_000)
+    bare.wait_for_timeout(1000)
+    bare.evaluate(IN_STREAMLIT, bundle)
+    for other in (blank, bare):
         other.wait_for_function("() => window.Plotly")
-        times.append(other.evaluate(f"(text) => ({PLOTLY_REDRAW})(JSON.parse(text))", figures))
-        other.close()
-    return times[0], times[1]
+    return [blank, bare]
 
 
 LOADED = ("() => [...document.querySelectorAll('.mehanizmi-plot')]"
@@ -198,10 +187,10 @@ SCRUBBED = [("velocity_plans", None), ("assur_groups?scene=triad-full-turn", Non
 def scrub(page, url: str, tab: str | None, floor_url: str
           ) -> tuple[float, float, tuple[float, float], float, float]:
     """Medians (ms) of a φ₂ (or length, or drive) step redrawn in the browser, to the first
-    chart painted and to all; Plotly's own redraw of the first chart's same figures in a
-    blank page and in bare Streamlit's (``plotly_redraw``: the scrub's floor); the ms from
-    the first touch of the control to the frames there (one rerun); and the frames' size in
-    kB."""
+    chart painted and to all; of Plotly's own redraw of the first chart's same figure after
+    each step, in a blank page and in bare Streamlit's (``floor_pages``: the scrub's
+    floor); the ms from the first touch of the control to the frames there (one rerun); and
+    the frames' size in kB."""
     page.goto(url)
     if tab:
         page.get_by_role("tab", name=tab).click(timeout=60_000)
@@ -213,8 +202,16 @@ def scrub(page, url: str, tab: str | None, floor_url: str
     first = page.evaluate("() => performance.now()") - start
     size = page.evaluate(FRAME_BYTES) / 1e3  # as sent: Plotly decodes typed arrays in place
     charts = page.locator(".mehanizmi-crank").count()
-    times = [page.evaluate(SCRUB, [k, charts]) for k in range(1, CHANGES + 1)]
-    plotly = plotly_redraw(page, floor_url)
+    floors = floor_pages(page, floor_url)
+    times, floor_times = [], []
+    for k in range(CHANGES + 1):  # step 0 draws each floor's first figure (Plotly.newPlot)
+        times.append(page.evaluate(SCRUB, [k, charts]))
+        figure = page.evaluate(SCRUBBED_FIGURE)
+        floor_times.append([other.evaluate(FLOOR_DRAW, figure) for other in floors])
+    for other in floors:
+        other.close()
+    times, floor_times = times[1:], floor_times[1:]
+    plotly = tuple(statistics.median(t[i] for t in floor_times) for i in range(2))
     return (statistics.median(t[0] for t in times), statistics.median(t[1] for t in times),
             plotly, first, size)
 

@@ -81,28 +81,31 @@ def task_values(base: Scene) -> dict[str, object]:
 
 
 def load_inputs(base: Scene, scene: Scene) -> Scene:
-    """Masses, radii of gyration, forces and moments (all kept in the URL)."""
+    """Masses, radii of gyration, forces and moments, all kept in the link. Their fields sit
+    in a shut expander: a fresh visit sends them after the chart's paint (fourteen text
+    boxes of the default scene: ui.firstpaint), unless the link set them."""
+    def field(label: str, key: str, **options) -> float:
+        return number_field(label, key, url=True, wait=True, **options)
+
     inertia = link_switch(t("forces.inertia"), "inertia")
     gravity = link_switch(t("forces.gravity"), "gravity")
     with st.expander(t("forces.loads"), expanded=False):
         forces, angles = [], []
         for i, f in enumerate(base.forces):
             left, right = st.columns([3, 2])
-            forces.append(number_field(t("forces.force_input", name=f.label or f"F_{f.member}",
-                                         point=f.point), f"F{i}", url=True, where=left))
-            degrees = number_field(
+            forces.append(field(t("forces.force_input", name=f.label or f"F_{f.member}",
+                                  point=f.point), f"F{i}", where=left))
+            degrees = field(
                 t("forces.force_angle_follows" if f.follows_member else "forces.force_angle"),
-                f"Fa{i}", url=True, where=right)  # the file's angle exactly, unless changed
+                f"Fa{i}", where=right)  # the file's angle exactly, unless changed
             angles.append(f.angle if degrees == math.degrees(f.angle) else math.radians(degrees))
-        moments = [number_field(t("forces.moment_input", member=mo.member), f"M{i}", url=True)
+        moments = [field(t("forces.moment_input", member=mo.member), f"M{i}")
                    for i, mo in enumerate(base.moments)]
         masses, rhos = {}, {}
         for n in base.members:
             left, right = st.columns(2)
-            masses[n] = number_field(t("forces.mass", member=n), f"m{n}", minimum=0.0, url=True,
-                                     where=left)
-            rhos[n] = number_field(t("forces.rho", member=n), f"rho{n}", minimum=0.0, url=True,
-                                   where=right)
+            masses[n] = field(t("forces.mass", member=n), f"m{n}", minimum=0.0, where=left)
+            rhos[n] = field(t("forces.rho", member=n), f"rho{n}", minimum=0.0, where=right)
     return scene.with_loads(masses=masses, gyrations=rhos, forces=forces, angles=angles,
                             moments=moments, inertia=inertia,
                             gravity=(base.gravity or 9.81) if gravity else 0.0)

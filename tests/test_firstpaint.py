@@ -1,6 +1,8 @@
 """A page's first run in a session sends the chart and leaves out what can wait; the rerun
 its paint starts sends the whole page (ui/firstpaint.py). The browser side: test_browser.py."""
 
+import re
+
 import pytest
 from streamlit.testing.v1 import AppTest
 
@@ -199,3 +201,25 @@ def test_a_held_slider_reads_as_its_widget_and_a_run_without_a_chart_runs_again_
     # the first run held both (no widget) and, drawing no chart, ran again whole at once
     assert at.session_state["used"] == [used, used]
     assert at.slider(key="omega").value == used[0] and at.select_slider(key="res").value == used[1]
+
+
+LOADS = re.compile(r"^(m|rho|F|Fa|M)\d+$")  # the kinetostatics page's load fields
+
+
+@pytest.mark.parametrize("link", [{}, {"m3": "5,5"}])
+def test_the_load_fields_wait_for_the_paint_unless_the_link_sets_one(link):
+    """The page's loads are fourteen text boxes in a shut expander (issue 83): a fresh visit
+    sends them with the whole run, and the chart drawn before them uses the values they then
+    show. A field the link sets is read, and drawn, at once."""
+    at = first_run("pages/kinetostatics.py", **link)
+    assert not at.exception and charts(at)
+    fields = lambda: {w.key: w.value for w in at.text_input if LOADS.match(w.key or "")}  # noqa: E731
+    assert set(fields()) == set(link)
+    first = {key: c["figure"] for key, c in charts(at).items()}
+    rerun(at)
+    assert not at.exception
+    shown = fields()
+    assert len(shown) >= 10  # every member's mass and radius of gyration, the forces
+    if link:
+        assert shown["m3"] == "5.5"  # the link's, said in the page's language (English)
+    assert {key: c["figure"] for key, c in charts(at).items() if key in first} == first

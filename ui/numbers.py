@@ -90,7 +90,7 @@ def number_field(label: str, key: str, value: float | None = None, *,
                  minimum: float | None = None, maximum: float | None = None,
                  integer: bool = False, optional: bool = False, url: bool = False,
                  where=None, help: str | None = None,
-                 label_visibility: str = "visible") -> float | None:
+                 label_visibility: str = "visible", wait: bool = False) -> float | None:
     """A text box for one number, read by :func:`parse` in the page's language.
 
     ``value`` is the field's first value (a page that seeds its widgets through
@@ -99,6 +99,8 @@ def number_field(label: str, key: str, value: float | None = None, *,
     ``optional``: an answer box, where an empty box is ``None`` (not given yet), and so is
     a refused text. Otherwise a text that is refused shows its message under the field and
     the field's last good value is returned, so the rest of the page stays as it was.
+    ``wait``: a secondary field, left out of a page's first run while it holds the page's
+    seeded value (``ui.firstpaint.hold``).
     """
     where = where if where is not None else st
     if url:
@@ -107,6 +109,8 @@ def number_field(label: str, key: str, value: float | None = None, *,
     state = st.session_state
     memo = state.get(_memo(key))  # (language, text shown, value) of the last good reading
     given = state.get(key)
+    if wait and isinstance(given, (int, float)) and not isinstance(given, bool) and hold():
+        return float(given)  # (seeded by the page, not from the link: the widget's value)
     if isinstance(given, (int, float)) and not isinstance(given, bool):
         value, given = float(given), None  # seeded by the page (ui.url.seed)
     elif given is None and url and key in st.query_params:
