@@ -157,11 +157,14 @@ IN_STREAMLIT = """(bundle) => new Promise((resolve) => {
 })"""
 
 
-def floor_pages(page, floor_url: str) -> list:
+def floor_pages(page, floor_url: str, browser) -> list:
     """The scrub's two floors, ready to draw (``FLOOR_DRAW``): a blank page with the bundle
-    ``page``'s charts were drawn with, and bare Streamlit's page (``floor_url``)."""
+    ``page``'s charts were drawn with, and bare Streamlit's page (``floor_url``), both in
+    ``browser``, not the scrubbed page's: opened beside it in its own browser, they held
+    its later charts back by about a second a step (ui/plot.js draws one chart a frame;
+    "→ all its charts" 1,029–3,065 ms against 71–195 in the same hour)."""
     bundle = page.evaluate(BUNDLE)
-    blank, bare = page.context.new_page(), page.context.new_page()
+    blank, bare = browser.new_page(), browser.new_page()
     blank.set_content(f'<script src="{bundle}"></script><div id="gd"></div>')
     bare.goto(floor_url)
     bare.wait_for_selector(".js-plotly-plot", timeout=60_000)
@@ -184,7 +187,7 @@ SCRUBBED = [("velocity_plans", None), ("assur_groups?scene=triad-full-turn", Non
             ("trajectories?scene=zbirka-1.3", "In the field")]
 
 
-def scrub(page, url: str, tab: str | None, floor_url: str
+def scrub(page, url: str, tab: str | None, floor_url: str, browser
           ) -> tuple[float, float, tuple[float, float], float, float]:
     """Medians (ms) of a φ₂ (or length, or drive) step redrawn in the browser, to the first
     chart painted and to all; of Plotly's own redraw of the first chart's same figure after
@@ -202,7 +205,7 @@ def scrub(page, url: str, tab: str | None, floor_url: str
     first = page.evaluate("() => performance.now()") - start
     size = page.evaluate(FRAME_BYTES) / 1e3  # as sent: Plotly decodes typed arrays in place
     charts = page.locator(".mehanizmi-crank").count()
-    floors = floor_pages(page, floor_url)
+    floors = floor_pages(page, floor_url, browser)
     times, floor_times = [], []
     for k in range(CHANGES + 1):  # step 0 draws each floor's first figure (Plotly.newPlot)
         times.append(page.evaluate(SCRUB, [k, charts]))
@@ -288,9 +291,14 @@ def phone_paint(browser, device: dict, url: str) -> tuple[float, float, float]:
     return statistics.median(times), statistics.median(sizes), statistics.median(tops)
 
 
+def launch(p):
+    """Debian's chromium, headless, as the browser tests launch it."""
+    return p.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
+                             args=["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"])
+
+
 def phone_rows(p, port: int, floor_port: int) -> list[str]:
-    browser = p.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
-                                args=["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"])
+    browser = launch(p)
     device = {k: v for k, v in p.devices["iPhone 13"].items() if k != "default_browser_type"}
     rows = ["", f"| page, on a phone (iPhone 13, 10 Mbit/s, 40 ms; Serbian) | navigation → first "
             f"chart painted, ms (median of {VISITS}) | on the wire by then, kB | the chart starts "
@@ -359,16 +367,16 @@ def table() -> str:
                      "| → all its charts, ms | first touch → frames there (one "
                      "rerun), ms | frames, kB |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
             floor_url = f"http://127.0.0.1:{floor_port}/trajectories?lang=en"
+            floors = launch(p)
             for name, tab in SCRUBBED:
                 url = f"http://127.0.0.1:{port}/{name}{'&' if '?' in name else '?'}lang=en"
-                first, every, (blank, bare), touch, size = scrub(page, url, tab, floor_url)
+                first, every, (blank, bare), touch, size = scrub(page, url, tab, floor_url, floors)
                 shown = f"{name}, {tab}" if tab else name
                 rows.append(f"| {shown} | {first:.0f} | {bare:.0f} | {first / bare:.2f}× "
                             f"| {blank:.0f} | {every:.0f} | {touch:.0f} | {size:.0f} |")
+            floors.close()
             context.close()
-            browser = p.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
-                                        args=["--no-sandbox", "--disable-gpu",
-                                              "--disable-dev-shm-usage"])
+            browser = launch(p)
             rows += ["", f"| page | navigation → first chart painted, fresh browser, ms (median "
                      f"of {VISITS}, the pages and the floor in turn) | ÷ the floor | transferred "
                      "by then, kB |", "|---|---:|---:|---:|"]
