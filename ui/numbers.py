@@ -109,10 +109,10 @@ def number_field(label: str, key: str, value: float | None = None, *,
     state = st.session_state
     memo = state.get(_memo(key))  # (language, text shown, value) of the last good reading
     given = state.get(key)
-    if wait and isinstance(given, (int, float)) and not isinstance(given, bool) and hold():
-        return float(given)  # (seeded by the page, not from the link: the widget's value)
-    if isinstance(given, (int, float)) and not isinstance(given, bool):
-        value, given = float(given), None  # seeded by the page (ui.url.seed)
+    if isinstance(given, (int, float)) and not isinstance(given, bool):  # seeded by the page
+        if wait and hold():  # (ui.url.seed, not from the link: the value the widget shows)
+            return float(given)
+        value, given = float(given), None
     elif given is None and url and key in st.query_params:
         try:  # read as a typed value is, range and all (either decimal sign)
             value = check(link_value(key) or "", "sr", minimum=minimum, maximum=maximum,
