@@ -82,7 +82,7 @@ def task_values(base: Scene) -> dict[str, object]:
 
 def load_inputs(base: Scene, scene: Scene) -> Scene:
     """Masses, radii of gyration, forces and moments, all kept in the link. Their fields sit
-    in a shut expander: a fresh visit sends them after the chart's paint (fourteen text
+    in a shut expander: a fresh visit sends them after the chart's paint (thirteen text
     boxes of the default scene: ui.firstpaint), unless the link set them."""
     def field(label: str, key: str, **options) -> float:
         return number_field(label, key, url=True, wait=True, **options)

@@ -208,9 +208,9 @@ LOADS = re.compile(r"^(m|rho|F|Fa|M)\d+$")  # the kinetostatics page's load fiel
 
 @pytest.mark.parametrize("link", [{}, {"m3": "5,5"}])
 def test_the_load_fields_wait_for_the_paint_unless_the_link_sets_one(link):
-    """The page's loads are fourteen text boxes in a shut expander (issue 83): a fresh visit
-    sends them with the whole run, and the chart drawn before them uses the values they then
-    show. A field the link sets is read, and drawn, at once."""
+    """The default scene's loads are thirteen text boxes in a shut expander (issue 83): a
+    fresh visit sends them with the whole run, and the chart drawn before them uses the
+    values they then show. A field the link sets is read, and drawn, at once."""
     at = first_run("pages/kinetostatics.py", **link)
     assert not at.exception and charts(at)
     fields = lambda: {w.key: w.value for w in at.text_input if LOADS.match(w.key or "")}  # noqa: E731
