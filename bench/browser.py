@@ -239,25 +239,34 @@ OPENED = ["trajectories", "velocity_plans", "assur_groups", "kinetostatics", "pl
           "rotor_balancing", "builder"]  # the pages that open with a chart
 
 
-def first_paints(browser, urls: dict[str, str]) -> dict[str, tuple[float, float]]:
-    """Per page: medians over VISITS rounds of ms from navigation to the first chart painted,
-    and kB transferred by then. Each round opens every url once, in turn, in a fresh context:
+def in_turn(urls: dict[str, str], visit) -> dict[str, tuple[float, ...]]:
+    """Per page, the medians over VISITS rounds of what ``visit(url)`` measures (a tuple of
+    numbers, from a fresh context each time). Each round opens every url once, in turn:
     the machine's speed moves by a third within a run, and in turn it moves the pages and
     the floor alike (measured one page after another, the floor last, the ratios swung by
     0.1–0.2 from run to run)."""
-    times: dict[str, list[float]] = {name: [] for name in urls}
-    sizes: dict[str, list[float]] = {name: [] for name in urls}
+    seen: dict[str, list[tuple[float, ...]]] = {name: [] for name in urls}
     for _ in range(VISITS):
         for name, url in urls.items():
-            context = browser.new_context(viewport={"width": 1400, "height": 900})
-            context.add_init_script(FIRST_PAINT)
-            page = context.new_page()
-            page.goto(url, wait_until="commit")
-            page.wait_for_function("() => window.__firstChart", timeout=60_000)
-            times[name].append(page.evaluate("() => window.__firstChart"))
-            sizes[name].append(page.evaluate(BYTES) / 1e3)
-            context.close()
-    return {name: (statistics.median(times[name]), statistics.median(sizes[name])) for name in urls}
+            seen[name].append(visit(url))
+    return {name: tuple(statistics.median(column) for column in zip(*visits))
+            for name, visits in seen.items()}
+
+
+def first_paints(browser, urls: dict[str, str]) -> dict[str, tuple[float, ...]]:
+    """Per page (``in_turn``): ms from navigation to the first chart painted, and kB
+    transferred by then."""
+    def visit(url: str) -> tuple[float, float]:
+        context = browser.new_context(viewport={"width": 1400, "height": 900})
+        context.add_init_script(FIRST_PAINT)
+        page = context.new_page()
+        page.goto(url, wait_until="commit")
+        page.wait_for_function("() => window.__firstChart", timeout=60_000)
+        painted = (page.evaluate("() => window.__firstChart"), page.evaluate(BYTES) / 1e3)
+        context.close()
+        return painted
+
+    return in_turn(urls, visit)
 
 
 # A phone: iPhone 13 (390 × 664 CSS px, touch) over Chrome's emulated 10 Mbit/s, 40 ms link
@@ -268,30 +277,27 @@ CHART_TOP = """() => { const chart = document.querySelector('.main-svg');
   return chart.getBoundingClientRect().top + (main ? main.scrollTop : 0); }"""
 
 
-def phone_paints(browser, device: dict, urls: dict[str, str]) -> dict[str, tuple[float, float, float]]:
-    """Per page, medians over VISITS fresh phone contexts on the slow link, each round
-    opening every url in turn (as ``first_paints`` does: measured one page after another,
-    the floor last, a slow hour moved the ratios by 0.1): ms to the first chart painted, kB
-    on the wire by then (encoded: what a gzip saves counts), and where the chart starts
-    (CSS px from the page's top; the screen is 664 high)."""
-    seen: dict[str, list[tuple[float, float, float]]] = {name: [] for name in urls}
-    for _ in range(VISITS):
-        for name, url in urls.items():
-            context = browser.new_context(**device)
-            context.add_init_script(FIRST_PAINT)
-            page = context.new_page()
-            cdp = context.new_cdp_session(page)
-            cdp.send("Network.enable")
-            cdp.send("Network.emulateNetworkConditions", PHONE_LINK)
-            wire = []
-            cdp.on("Network.loadingFinished", lambda e: wire.append(e["encodedDataLength"]))
-            page.goto(url, wait_until="commit")
-            page.wait_for_function("() => window.__firstChart", timeout=120_000)
-            seen[name].append((page.evaluate("() => window.__firstChart"), sum(wire) / 1e3,
-                               page.evaluate(CHART_TOP)))
-            context.close()
-    return {name: tuple(statistics.median(v[i] for v in visits) for i in range(3))
-            for name, visits in seen.items()}
+def phone_paints(browser, device: dict, urls: dict[str, str]) -> dict[str, tuple[float, ...]]:
+    """Per page (``in_turn``), a fresh phone context on the slow link: ms to the first chart
+    painted, kB on the wire by then (encoded: what a gzip saves counts), and where the chart
+    starts (CSS px from the page's top; the screen is 664 high)."""
+    def visit(url: str) -> tuple[float, float, float]:
+        context = browser.new_context(**device)
+        context.add_init_script(FIRST_PAINT)
+        page = context.new_page()
+        cdp = context.new_cdp_session(page)
+        cdp.send("Network.enable")
+        cdp.send("Network.emulateNetworkConditions", PHONE_LINK)
+        wire = []
+        cdp.on("Network.loadingFinished", lambda e: wire.append(e["encodedDataLength"]))
+        page.goto(url, wait_until="commit")
+        page.wait_for_function("() => window.__firstChart", timeout=120_000)
+        painted = (page.evaluate("() => window.__firstChart"), sum(wire) / 1e3,
+                   page.evaluate(CHART_TOP))
+        context.close()
+        return painted
+
+    return in_turn(urls, visit)
 
 
 def launch(p):
