@@ -98,7 +98,7 @@ def measure(page, url: str, label: str, expander: str | None) -> tuple[float, fl
 
 # φ₂ scrubbed in the browser (ui/crank.py): from the slider's input event to the frame that
 # paints the first chart redrawn (the one on screen), and to the one after the last chart.
-# The first chart's figure is kept (window.__scrubbed) for its floor (FLOOR_DRAW).
+# The first chart's last figure is kept (window.__scrubbed) for its floor (FLOOR_DRAW).
 SCRUB = """([k, charts]) => new Promise((resolve) => {
   const react = window.Plotly.react;
   const start = performance.now();
@@ -107,7 +107,7 @@ SCRUB = """([k, charts]) => new Promise((resolve) => {
     const out = react.apply(this, args);
     drawn += 1;
     if (drawn === 1) {
-      (window.__scrubbed = window.__scrubbed || []).push(args);
+      window.__scrubbed = args;
       requestAnimationFrame(() => { first = performance.now() - start; });
     }
     if (drawn === charts) requestAnimationFrame(() => requestAnimationFrame(() => {
@@ -130,7 +130,7 @@ SCRUB = """([k, charts]) => new Promise((resolve) => {
 # trace's attributes is made of them) run about six times slower than in a blank page
 # (docs/performance.md), and no page of the app escapes that. What the scrub adds to it is
 # ours: the control, the frame's figure assembled, the page around the chart.
-SCRUBBED_FIGURE = """() => { const [gd, figure] = window.__scrubbed.pop();
+SCRUBBED_FIGURE = """() => { const [gd, figure] = window.__scrubbed;
   return JSON.stringify({data: figure.data,
                          layout: {...figure.layout, width: gd.clientWidth, height: gd.clientHeight}},
     (key, value) => ArrayBuffer.isView(value) ? Array.from(value) : value); }"""
